@@ -1,0 +1,11 @@
+//! grainscope: an explorer of dust microphysics after S. Krijt, *From grains
+//! to planetesimals* (Leiden 2015).
+//!
+//! The crate is split so that the models never know about the window:
+//! [`physics`] and [`solver`] hold the models, [`scene`] turns parameters into
+//! results and figures through pure `compute` functions, [`figure`] describes
+//! and writes figures, and [`app`] is the eframe front end. The command line
+//! ([`cli`]) and the tests call the same `compute` functions as the window.
+
+pub mod physics;
+pub mod solver;

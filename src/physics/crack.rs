@@ -1,0 +1,103 @@
+//! Greenwood's (2004) law for a viscoelastic crack at the contact edge
+//! (thesis Eqs. 2.15–2.17).
+//!
+//! The crack speed is written ȧ = C g(β) with C = E*γ/(σ₀² T_vis) and
+//! β = G_eff/γ. `g` is positive for β < 1 (a growing contact), negative for
+//! β > 1 (a shrinking one), and diverges at β → k and β → 1/k, so the physical
+//! domain is k < β < 1/k.
+
+/// Crack-speed law of a three-element viscoelastic solid.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct CrackLaw {
+    /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k < 0.5).
+    pub k: f64,
+    /// Use Greenwood's low-speed fits (2.17) for 0.29 < β < 3.7 (made for k = 0.02).
+    pub low_speed_fit: bool,
+}
+
+impl CrackLaw {
+    /// Lower end of the domain of `g`: β = k.
+    pub fn beta_min(&self) -> f64 {
+        self.k
+    }
+
+    /// Upper end of the domain of `g`: β = 1/k.
+    pub fn beta_max(&self) -> f64 {
+        1.0 / self.k
+    }
+
+    /// The dimensionless crack speed g(β) = σ₀²T_vis ȧ/(E*γ) and its derivative
+    /// dg/dβ; `None` outside k < β < 1/k.
+    pub fn speed(&self, beta: f64) -> Option<(f64, f64)> {
+        let k = self.k;
+        if !(beta > k && beta < 1.0 / k) {
+            return None;
+        }
+        if beta == 1.0 {
+            return Some((0.0, self.speed(1.0 - 1e-9).map_or(0.0, |s| s.1)));
+        }
+        if self.low_speed_fit && beta > 0.29 && beta < 1.0 {
+            let x = 1.0 / beta - 1.0;
+            let g = (0.1035 * x + 0.3421) * x.powf(1.116);
+            let dgdx = 0.1035 * x.powf(1.116) + (0.1035 * x + 0.3421) * 1.116 * x.powf(0.116);
+            return Some((g, -dgdx / (beta * beta)));
+        }
+        if self.low_speed_fit && beta > 1.0 && beta < 3.7 {
+            let x = beta - 1.0;
+            let g = -(0.2112 * x + 0.3939) * x.powf(1.1403);
+            let dgdx = -(0.2112 * x.powf(1.1403) + (0.2112 * x + 0.3939) * 1.1403 * x.powf(0.1403));
+            return Some((g, dgdx));
+        }
+        if beta < 1.0 {
+            let l = ((1.0 - k) / (1.0 - beta)).ln();
+            let g = 0.15 / (beta * l);
+            let dg = -0.15 * (l + beta / (1.0 - beta)) / (beta * l).powi(2);
+            Some((g, dg))
+        } else {
+            let m = ((1.0 - k) / (1.0 - 1.0 / beta)).ln();
+            let g = -0.24 * beta / m;
+            let dg = -0.24 * (m + 1.0 / (beta - 1.0)) / (m * m);
+            Some((g, dg))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const LAW: CrackLaw = CrackLaw { k: 0.02, low_speed_fit: true };
+
+    #[test]
+    fn sign_and_divergence() {
+        assert!(LAW.speed(0.5).expect("in domain").0 > 0.0);
+        assert!(LAW.speed(2.0).expect("in domain").0 < 0.0);
+        assert!(LAW.speed(0.02 * 1.0001).expect("in domain").0 > 1e4);
+        assert!(LAW.speed(49.99).expect("in domain").0 < -1e4);
+        assert!(LAW.speed(0.02).is_none() && LAW.speed(50.0).is_none() && LAW.speed(f64::NAN).is_none());
+    }
+
+    #[test]
+    fn derivative_matches_finite_differences() {
+        for law in [LAW, CrackLaw { k: 0.02, low_speed_fit: false }, CrackLaw { k: 0.1, low_speed_fit: false }] {
+            for &b in &[0.03, 0.1, 0.5, 0.9, 1.1, 2.0, 5.0, 9.0] {
+                if b >= law.beta_max() || b <= law.beta_min() {
+                    continue;
+                }
+                let h = 1e-7 * b;
+                let num = (law.speed(b + h).expect("in").0 - law.speed(b - h).expect("in").0) / (2.0 * h);
+                let ana = law.speed(b).expect("in").1;
+                assert!((num - ana).abs() <= 1e-5 * ana.abs().max(1e-3), "{law:?} β={b}: {num} vs {ana}");
+            }
+        }
+    }
+
+    #[test]
+    fn low_speed_fits_join_the_general_law() {
+        // At the ends of the fit ranges the two forms agree to about 1 %.
+        let fit = |b: f64| LAW.speed(b).expect("in").0;
+        let general = |b: f64| CrackLaw { k: 0.02, low_speed_fit: false }.speed(b).expect("in").0;
+        assert!((fit(0.2901) / general(0.2901) - 1.0).abs() < 0.02);
+        assert!((fit(3.699) / general(3.699) - 1.0).abs() < 0.02);
+    }
+}

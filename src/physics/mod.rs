@@ -1,0 +1,35 @@
+//! The physical models. Nothing here knows about the window: every function
+//! takes and returns plain numbers in SI units.
+
+pub mod collision;
+pub mod contact;
+pub mod crack;
+pub mod material;
+pub mod plasticity;
+
+/// Error for physically meaningless input to a model function.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum PhysicsError {
+    /// A parameter is non-finite or outside its valid range.
+    #[error("{name} = {value:e} is invalid: {reason}")]
+    InvalidParameter {
+        /// Parameter name.
+        name: &'static str,
+        /// Offending value.
+        value: f64,
+        /// What is wrong with it.
+        reason: &'static str,
+    },
+    /// The integrator failed.
+    #[error("integration failed: {0}")]
+    Solver(#[from] crate::solver::SolverError),
+}
+
+/// Returns `Ok(value)` if `value` is finite and strictly positive.
+pub fn positive(name: &'static str, value: f64) -> Result<f64, PhysicsError> {
+    if value.is_finite() && value > 0.0 {
+        Ok(value)
+    } else {
+        Err(PhysicsError::InvalidParameter { name, value, reason: "must be finite and > 0" })
+    }
+}

@@ -7,5 +7,11 @@
 //! and writes figures, and [`app`] is the eframe front end. The command line
 //! ([`cli`]) and the tests call the same `compute` functions as the window.
 
+pub mod app;
+pub mod cli;
+pub mod figure;
 pub mod physics;
+pub mod preset;
+pub mod reproduce;
+pub mod scene;
 pub mod solver;

@@ -44,15 +44,23 @@ pub struct Setup {
 
 impl Setup {
     /// The reference set of the thesis (Figs. 2.2–2.4): two water-ice spheres
-    /// of radius 2 µm, γ = 0.74 J m⁻², z₀ = 0.3 nm, k = 0.02, T_vis = 10⁻¹¹ s.
+    /// of radius 2 µm, γ = 0.74 J/m², z₀ = 0.3 nm, k = 0.02, T_vis = 10⁻¹¹ s.
     pub fn reference_ice() -> Setup {
         let m = 1000.0 * 4.0 / 3.0 * PI * (2e-6f64).powi(3);
         Setup {
-            pair: Pair { modulus: 7e9 / (2.0 * (1.0 - 0.25 * 0.25)), radius: 1e-6, mass: m / 2.0, surface_energy: 0.74 },
+            pair: Pair {
+                modulus: 7e9 / (2.0 * (1.0 - 0.25 * 0.25)),
+                radius: 1e-6,
+                mass: m / 2.0,
+                surface_energy: 0.74,
+            },
             t_vis: 1e-11,
             poisson_ratio: 0.25,
             z0: 3e-10,
-            crack: CrackLaw { k: 0.02, low_speed_fit: true },
+            crack: CrackLaw {
+                k: 0.02,
+                low_speed_fit: true,
+            },
             yield_strength: None,
         }
     }
@@ -62,7 +70,7 @@ impl Setup {
         self.t_vis / self.poisson_ratio.powi(2)
     }
 
-    /// Prefactor C of the crack speed ȧ = C g(β): C = E*γ/(σ₀²T_vis) = E*z₀²/(γT_vis), m s⁻¹.
+    /// Prefactor C of the crack speed ȧ = C g(β): C = E*γ/(σ₀²T_vis) = E*z₀²/(γT_vis), m/s.
     pub fn crack_speed_scale(&self) -> f64 {
         self.pair.modulus * self.z0 * self.z0 / (self.pair.surface_energy * self.t_vis)
     }
@@ -73,9 +81,10 @@ impl Setup {
         (2.0 * PI * p.radius.powi(2) * 1.01 * self.crack.k * p.surface_energy / p.modulus).cbrt()
     }
 
-    /// Yield velocity v_y (2.28), m s⁻¹ (infinite without plasticity).
+    /// Yield velocity v_y (2.28), m/s (infinite without plasticity).
     pub fn yield_velocity(&self) -> f64 {
-        self.yield_strength.map_or(f64::INFINITY, |y| plasticity::yield_velocity(&self.pair, y))
+        self.yield_strength
+            .map_or(f64::INFINITY, |y| plasticity::yield_velocity(&self.pair, y))
     }
 
     /// Checks that every quantity is finite and in its physical domain.
@@ -88,7 +97,11 @@ impl Setup {
         super::positive("nu", self.poisson_ratio)?;
         super::positive("z0", self.z0)?;
         if !(self.crack.k > 0.0 && self.crack.k < 0.5) {
-            return Err(PhysicsError::InvalidParameter { name: "k", value: self.crack.k, reason: "must lie in (0, 0.5)" });
+            return Err(PhysicsError::InvalidParameter {
+                name: "k",
+                value: self.crack.k,
+                reason: "must lie in (0, 0.5)",
+            });
         }
         if let Some(y) = self.yield_strength {
             super::positive("Y", y)?;
@@ -114,7 +127,12 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options { rtol: 1e-6, record: false, follow_after_stick: 0.0, max_time: 2000.0 }
+        Options {
+            rtol: 1e-6,
+            record: false,
+            follow_after_stick: 0.0,
+            max_time: 2000.0,
+        }
     }
 }
 
@@ -134,7 +152,7 @@ pub struct Sample {
     pub t: f64,
     /// Mutual approach δ, m.
     pub delta: f64,
-    /// Approach rate δ̇, m s⁻¹ (positive while approaching).
+    /// Approach rate δ̇, m/s (positive while approaching).
     pub velocity: f64,
     /// Contact radius a, m.
     pub radius: f64,
@@ -168,7 +186,7 @@ pub struct Collision {
     pub outcome: Outcome,
     /// Whether sticking was proven (false if the time limit ended the run).
     pub resolved: bool,
-    /// Impact speed, m s⁻¹.
+    /// Impact speed, m/s.
     pub velocity: f64,
     /// Adhesive–viscoelastic restitution e_A (2.23); 0 for sticking.
     pub e_adhesive: f64,
@@ -271,14 +289,15 @@ impl StiffSystem<5> for ContactOde {
         j[(2, 0)] = dsdot_dx;
         j[(2, 2)] = dsdot_ds;
         j[(3, 0)] = self.cs * s * (-db_dx * sdot + (1.0 - beta) * dsdot_dx);
-        j[(3, 2)] = self.cs * ((1.0 - beta) * sdot - s * db_ds * sdot + s * (1.0 - beta) * dsdot_ds);
+        j[(3, 2)] =
+            self.cs * ((1.0 - beta) * sdot - s * db_ds * sdot + s * (1.0 - beta) * dsdot_ds);
         j[(4, 1)] = 2.0 * self.c3 * s * w;
         j[(4, 2)] = self.c3 * w * w;
         Some(j)
     }
 }
 
-/// Simulates one head-on collision at impact speed `velocity` (m s⁻¹).
+/// Simulates one head-on collision at impact speed `velocity` (m/s).
 pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision, PhysicsError> {
     setup.validate()?;
     super::positive("v", velocity)?;
@@ -343,7 +362,11 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
     let mut t = 0.0;
     let mut y = y0;
     let mut energy_error: f64 = 0.0;
-    let mut stuck_at: Option<(f64, bool)> = if ode.mechanical_energy(&y0) < 0.0 { Some((0.0, true)) } else { None };
+    let mut stuck_at: Option<(f64, bool)> = if ode.mechanical_energy(&y0) < 0.0 {
+        Some((0.0, true))
+    } else {
+        None
+    };
     let mut bounce: Option<(f64, State<5>)> = None;
 
     while stuck_at.is_none() || opts.follow_after_stick > 0.0 {
@@ -442,7 +465,7 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
 /// Restitution of one collision with all its parts.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Restitution {
-    /// Impact speed, m s⁻¹.
+    /// Impact speed, m/s.
     pub velocity: f64,
     /// Adhesive–viscoelastic e_A (numerical).
     pub e_adhesive: f64,
@@ -452,27 +475,53 @@ pub struct Restitution {
     pub e: f64,
 }
 
-/// Coefficient of restitution at impact speed `velocity` (m s⁻¹), combining
+/// Coefficient of restitution at impact speed `velocity` (m/s), combining
 /// the numerical e_A with Thornton–Ning plasticity (2.30).
-pub fn restitution(setup: &Setup, velocity: f64, opts: &Options) -> Result<Restitution, PhysicsError> {
-    let c = collide(setup, velocity, &Options { record: false, follow_after_stick: 0.0, ..*opts })?;
+pub fn restitution(
+    setup: &Setup,
+    velocity: f64,
+    opts: &Options,
+) -> Result<Restitution, PhysicsError> {
+    let c = collide(
+        setup,
+        velocity,
+        &Options {
+            record: false,
+            follow_after_stick: 0.0,
+            ..*opts
+        },
+    )?;
     let e_p = plasticity::e_plastic(velocity, setup.yield_velocity());
     Ok(Restitution {
         velocity,
         e_adhesive: c.e_adhesive,
         e_plastic: e_p,
-        e: if c.e_adhesive > 0.0 { plasticity::e_combined(c.e_adhesive, e_p) } else { 0.0 },
+        e: if c.e_adhesive > 0.0 {
+            plasticity::e_combined(c.e_adhesive, e_p)
+        } else {
+            0.0
+        },
     })
 }
 
 /// The sticking velocity v_s: the largest impact speed at which the spheres
 /// stick through adhesion and viscosity (e_A = 0), found by bracketing and
 /// bisection in log v to relative precision `rel`. Plasticity, which only acts
-/// far above v_s, is not part of the criterion. Searches 10⁻⁶–10⁴ m s⁻¹.
+/// far above v_s, is not part of the criterion. Searches 10⁻⁶–10⁴ m/s.
 pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64, PhysicsError> {
     setup.validate()?;
     let sticks = |v: f64| -> Result<bool, PhysicsError> {
-        Ok(collide(setup, v, &Options { record: false, follow_after_stick: 0.0, ..*opts })?.outcome == Outcome::Stick)
+        Ok(collide(
+            setup,
+            v,
+            &Options {
+                record: false,
+                follow_after_stick: 0.0,
+                ..*opts
+            },
+        )?
+        .outcome
+            == Outcome::Stick)
     };
     let (v_min, v_max) = (1e-6, 1e4);
     let mut v = setup.pair.jkr_sticking_velocity().clamp(v_min, v_max);

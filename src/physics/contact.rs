@@ -13,7 +13,7 @@ pub struct Pair {
     pub radius: f64,
     /// Reduced mass m* (1/m* = 1/m₁ + 1/m₂), kg.
     pub mass: f64,
-    /// Combined surface energy γ, J m⁻².
+    /// Combined surface energy γ, J/m².
     pub surface_energy: f64,
 }
 
@@ -66,7 +66,8 @@ impl Pair {
     /// Elastic energy stored in the contact, U_E (2.3), J.
     pub fn elastic_energy(&self, a: f64, delta: f64) -> f64 {
         let (e, r) = (self.modulus, self.radius);
-        e * delta * delta * a - 2.0 * e / (3.0 * r) * delta * a.powi(3) + e * a.powi(5) / (5.0 * r * r)
+        e * delta * delta * a - 2.0 * e / (3.0 * r) * delta * a.powi(3)
+            + e * a.powi(5) / (5.0 * r * r)
     }
 
     /// Surface energy of the contact, U_S = −πa²γ (2.6), J.
@@ -74,7 +75,7 @@ impl Pair {
         -PI * a * a * self.surface_energy
     }
 
-    /// Effective surface energy for given a and δ, G_eff = E*(a² − δR)²/(2πaR²) (2.14), J m⁻².
+    /// Effective surface energy for given a and δ, G_eff = E*(a² − δR)²/(2πaR²) (2.14), J/m².
     pub fn effective_surface_energy(&self, a: f64, delta: f64) -> f64 {
         let u = a * a - delta * self.radius;
         self.modulus * u * u / (2.0 * PI * a * self.radius.powi(2))
@@ -90,10 +91,11 @@ impl Pair {
         (15.0 * self.mass * v * v / (16.0 * self.modulus * self.radius.sqrt())).powf(0.4)
     }
 
-    /// JKR sticking velocity v_c = (14.18/m*)^{1/2} (γ⁵R⁴/E*²)^{1/6} (2.25), m s⁻¹.
+    /// JKR sticking velocity v_c = (14.18/m*)^{1/2} (γ⁵R⁴/E*²)^{1/6} (2.25), m/s.
     pub fn jkr_sticking_velocity(&self) -> f64 {
         (14.18 / self.mass).sqrt()
-            * (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(2)).powf(1.0 / 6.0)
+            * (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(2))
+                .powf(1.0 / 6.0)
     }
 
     /// Elastic JKR coefficient of restitution e_JKR = (1 − (v_c/v)²)^{1/2} (2.24); 0 below v_c.
@@ -112,9 +114,13 @@ impl Pair {
         (self.radius * self.surface_energy.powi(2) / (self.modulus.powi(2) * z0.powi(3))).cbrt()
     }
 
-    /// Energy to break a contact, E_break ~ (γ⁵R⁴/E*³)^{1/3} (1.24), J.
+    /// Energy to break a contact, E_break ~ (γ⁵R⁴/E*²)^{1/3}, J.
+    ///
+    /// The thesis prints E*³ in (1.24), which is not an energy; E*² is the
+    /// dimensionally consistent form, and with it ½m*v_c² of (2.25) equals
+    /// 7.09 E_break, so v_stick ∝ R^{-5/6} as the text says.
     pub fn break_energy(&self) -> f64 {
-        (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(3)).cbrt()
+        (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(2)).cbrt()
     }
 
     /// Energy to roll over 90°, E_roll = 6πγRξ (1.25), J, for rolling displacement ξ in m.
@@ -134,7 +140,12 @@ mod tests {
 
     fn ice() -> Pair {
         let m = 1000.0 * 4.0 / 3.0 * PI * (2e-6f64).powi(3);
-        Pair { modulus: 7e9 / (2.0 * 0.9375), radius: 1e-6, mass: m / 2.0, surface_energy: 0.74 }
+        Pair {
+            modulus: 7e9 / (2.0 * 0.9375),
+            radius: 1e-6,
+            mass: m / 2.0,
+            surface_energy: 0.74,
+        }
     }
 
     #[test]
@@ -149,7 +160,9 @@ mod tests {
         let g = p.effective_surface_energy(a, p.jkr_approach(a));
         assert!((g / p.surface_energy - 1.0).abs() < 1e-12);
         // The JKR force's minimum along the curve is the pull-off force.
-        let fmin = (1..2000).map(|i| p.jkr_force(a_eq * i as f64 / 2000.0)).fold(f64::MAX, f64::min);
+        let fmin = (1..2000)
+            .map(|i| p.jkr_force(a_eq * i as f64 / 2000.0))
+            .fold(f64::MAX, f64::min);
         assert!((fmin / -p.pull_off_force() - 1.0).abs() < 1e-4, "{fmin}");
     }
 

@@ -66,7 +66,10 @@ impl CrackLaw {
 mod tests {
     use super::*;
 
-    const LAW: CrackLaw = CrackLaw { k: 0.02, low_speed_fit: true };
+    const LAW: CrackLaw = CrackLaw {
+        k: 0.02,
+        low_speed_fit: true,
+    };
 
     #[test]
     fn sign_and_divergence() {
@@ -74,20 +77,36 @@ mod tests {
         assert!(LAW.speed(2.0).expect("in domain").0 < 0.0);
         assert!(LAW.speed(0.02 * 1.0001).expect("in domain").0 > 1e4);
         assert!(LAW.speed(49.99).expect("in domain").0 < -1e4);
-        assert!(LAW.speed(0.02).is_none() && LAW.speed(50.0).is_none() && LAW.speed(f64::NAN).is_none());
+        assert!(
+            LAW.speed(0.02).is_none() && LAW.speed(50.0).is_none() && LAW.speed(f64::NAN).is_none()
+        );
     }
 
     #[test]
     fn derivative_matches_finite_differences() {
-        for law in [LAW, CrackLaw { k: 0.02, low_speed_fit: false }, CrackLaw { k: 0.1, low_speed_fit: false }] {
+        for law in [
+            LAW,
+            CrackLaw {
+                k: 0.02,
+                low_speed_fit: false,
+            },
+            CrackLaw {
+                k: 0.1,
+                low_speed_fit: false,
+            },
+        ] {
             for &b in &[0.03, 0.1, 0.5, 0.9, 1.1, 2.0, 5.0, 9.0] {
                 if b >= law.beta_max() || b <= law.beta_min() {
                     continue;
                 }
                 let h = 1e-7 * b;
-                let num = (law.speed(b + h).expect("in").0 - law.speed(b - h).expect("in").0) / (2.0 * h);
+                let num =
+                    (law.speed(b + h).expect("in").0 - law.speed(b - h).expect("in").0) / (2.0 * h);
                 let ana = law.speed(b).expect("in").1;
-                assert!((num - ana).abs() <= 1e-5 * ana.abs().max(1e-3), "{law:?} β={b}: {num} vs {ana}");
+                assert!(
+                    (num - ana).abs() <= 1e-5 * ana.abs().max(1e-3),
+                    "{law:?} β={b}: {num} vs {ana}"
+                );
             }
         }
     }
@@ -96,7 +115,15 @@ mod tests {
     fn low_speed_fits_join_the_general_law() {
         // At the ends of the fit ranges the two forms agree to about 1 %.
         let fit = |b: f64| LAW.speed(b).expect("in").0;
-        let general = |b: f64| CrackLaw { k: 0.02, low_speed_fit: false }.speed(b).expect("in").0;
+        let general = |b: f64| {
+            CrackLaw {
+                k: 0.02,
+                low_speed_fit: false,
+            }
+            .speed(b)
+            .expect("in")
+            .0
+        };
         assert!((fit(0.2901) / general(0.2901) - 1.0).abs() < 0.02);
         assert!((fit(3.699) / general(3.699) - 1.0).abs() < 0.02);
     }

@@ -18,22 +18,24 @@ pub struct Material {
     pub poisson_ratio: f64,
     /// Density ρ, kg m⁻³.
     pub density: f64,
-    /// Surface free energy γ_L of one surface, J m⁻².
+    /// Surface free energy γ_L of one surface, J/m².
     pub surface_energy: f64,
 }
 
 impl Material {
-    /// Bulk sound speed (E/ρ)^{1/2}, m s⁻¹ (the c_s column of Table 2.2).
+    /// Bulk sound speed (E/ρ)^{1/2}, m/s (the c_s column of Table 2.2).
     pub fn sound_speed(&self) -> f64 {
         (self.youngs_modulus / self.density).sqrt()
     }
 
     /// Looks a material up by name (case-insensitive).
     pub fn named(name: &str) -> Option<&'static Material> {
-        materials().iter().find(|m| m.name.eq_ignore_ascii_case(name))
+        materials()
+            .iter()
+            .find(|m| m.name.eq_ignore_ascii_case(name))
     }
 
-    /// Water ice of Table 2.2: E = 7 GPa, ν = 0.25, ρ = 1000 kg m⁻³, γ_L = 0.37 J m⁻².
+    /// Water ice of Table 2.2: E = 7 GPa, ν = 0.25, ρ = 1000 kg m⁻³, γ_L = 0.37 J/m².
     pub fn water_ice() -> Material {
         Material {
             name: "water ice".into(),
@@ -52,7 +54,7 @@ pub fn combined_modulus(a: &Material, b: &Material) -> f64 {
         + (1.0 - b.poisson_ratio.powi(2)) / b.youngs_modulus)
 }
 
-/// Combined surface energy of a contact, γ = 2 (γ₁γ₂)^{1/2}, J m⁻² (twice γ_L for like materials).
+/// Combined surface energy of a contact, γ = 2 (γ₁γ₂)^{1/2}, J/m² (twice γ_L for like materials).
 pub fn combined_surface_energy(a: &Material, b: &Material) -> f64 {
     2.0 * (a.surface_energy * b.surface_energy).sqrt()
 }
@@ -75,8 +77,8 @@ mod tests {
 
     #[test]
     fn table_parses_completely() {
-        let table: Vec<Material> =
-            ron::from_str(include_str!("../../assets/materials.ron")).expect("materials.ron parses");
+        let table: Vec<Material> = ron::from_str(include_str!("../../assets/materials.ron"))
+            .expect("materials.ron parses");
         assert_eq!(table.len(), 16);
         assert_eq!(materials().len(), 16);
     }
@@ -84,10 +86,19 @@ mod tests {
     #[test]
     fn sound_speeds_match_table() {
         // c_s column of Table 2.2.
-        let cases = [("water ice", 2645.0), ("PSL", 1820.0), ("silicon", 8789.0), ("copper", 3813.0)];
+        let cases = [
+            ("water ice", 2645.0),
+            ("PSL", 1820.0),
+            ("silicon", 8789.0),
+            ("copper", 3813.0),
+        ];
         for (name, cs) in cases {
             let m = Material::named(name).expect(name);
-            assert!((m.sound_speed() / cs - 1.0).abs() < 0.005, "{name}: {}", m.sound_speed());
+            assert!(
+                (m.sound_speed() / cs - 1.0).abs() < 0.005,
+                "{name}: {}",
+                m.sound_speed()
+            );
         }
     }
 

@@ -2,7 +2,7 @@
 
 use super::contact::Pair;
 
-/// Yield velocity v_y = (10.2 R³ p_y⁵ / (m* E*⁴))^{1/2} with p_y = 1.6 Y (2.28), m s⁻¹.
+/// Yield velocity v_y = (10.2 R³ p_y⁵ / (m* E*⁴))^{1/2} with p_y = 1.6 Y (2.28), m/s.
 /// `yield_strength` Y is in Pa.
 pub fn yield_velocity(pair: &Pair, yield_strength: f64) -> f64 {
     let py = 1.6 * yield_strength;
@@ -21,7 +21,9 @@ pub fn e_plastic(v: f64, v_yield: f64) -> f64 {
 
 /// Combined restitution e = (e_A² + e_P² − 1)^{1/2} (2.30); 0 when the radicand is negative.
 pub fn e_combined(e_adhesive: f64, e_plastic: f64) -> f64 {
-    (e_adhesive * e_adhesive + e_plastic * e_plastic - 1.0).max(0.0).sqrt()
+    (e_adhesive * e_adhesive + e_plastic * e_plastic - 1.0)
+        .max(0.0)
+        .sqrt()
 }
 
 #[cfg(test)]

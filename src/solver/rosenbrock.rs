@@ -179,7 +179,12 @@ impl<const N: usize> Rosenbrock4<N> {
     /// One attempted step of size `h` from `y`. Returns the new state and the
     /// scaled error norm (≤ 1 means acceptable), or `None` if the system
     /// refused a stage state.
-    fn try_step<S: StiffSystem<N>>(&mut self, sys: &S, y: &State<N>, h: f64) -> Option<(State<N>, f64)> {
+    fn try_step<S: StiffSystem<N>>(
+        &mut self,
+        sys: &S,
+        y: &State<N>,
+        h: f64,
+    ) -> Option<(State<N>, f64)> {
         self.stats.jacobian_evals += 1;
         let jac = sys.jacobian(y)?;
         let f0 = sys.rhs(y)?;
@@ -230,13 +235,20 @@ impl<const N: usize> Rosenbrock4<N> {
         let mut rejected = false;
         loop {
             if h < self.h_min {
-                return Err(SolverError::StepSizeUnderflow { steps: self.stats.accepted, h });
+                return Err(SolverError::StepSizeUnderflow {
+                    steps: self.stats.accepted,
+                    h,
+                });
             }
             match self.try_step(sys, y, h) {
                 Some((y_new, err)) if err <= 1.0 => {
                     self.stats.accepted += 1;
                     let growth = if rejected { 1.0 } else { 5.0 };
-                    let factor = if err == 0.0 { growth } else { (0.9 * err.powf(-0.25)).clamp(0.2, growth) };
+                    let factor = if err == 0.0 {
+                        growth
+                    } else {
+                        (0.9 * err.powf(-0.25)).clamp(0.2, growth)
+                    };
                     self.h = h * factor;
                     return Ok((y_new, h));
                 }
@@ -291,7 +303,9 @@ mod tests {
     }
 
     fn system(stiff: f64) -> Linear {
-        Linear(Matrix::<3>::new(-1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, -stiff))
+        Linear(Matrix::<3>::new(
+            -1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, -stiff,
+        ))
     }
 
     fn exact_first(t: f64) -> f64 {
@@ -357,7 +371,9 @@ mod tests {
         // integrator take steps set by the slow mode.
         let sys = system(1e9);
         let mut s = Rosenbrock4::<3>::new(1e-8, State::<3>::from_element(1e-3), 1e-6);
-        let y = s.integrate(&sys, State::<3>::new(1.0, 1.0, 1.0), 5.0).expect("integrates");
+        let y = s
+            .integrate(&sys, State::<3>::new(1.0, 1.0, 1.0), 5.0)
+            .expect("integrates");
         assert!((y[0] - exact_first(5.0)).abs() < 1e-7, "{}", y[0]);
         assert!(s.stats.accepted < 2_000, "{:?}", s.stats);
     }
@@ -374,7 +390,9 @@ mod tests {
             }
         }
         let mut s = Rosenbrock4::<1>::new(1e-9, State::<1>::new(1.0), 10.0);
-        let y = s.integrate(&Walled, State::<1>::new(0.0), 3.0).expect("integrates");
+        let y = s
+            .integrate(&Walled, State::<1>::new(0.0), 3.0)
+            .expect("integrates");
         assert!((y[0] - (1.0 - (-3.0f64).exp())).abs() < 1e-7);
     }
 }

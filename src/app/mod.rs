@@ -1,0 +1,842 @@
+//! The explorer window. It draws scene outputs and edits parameters; all
+//! physics happens in [`crate::scene`], inline for cheap scenes and on a
+//! worker thread for heavy ones.
+
+mod plot;
+mod sketch;
+mod worker;
+
+pub use worker::Worker;
+
+use crate::figure::{self, Figure, Series, Style};
+use crate::preset::{Preset, resolve};
+use crate::scene::{
+    self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams,
+};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+use std::sync::mpsc::{Receiver, Sender, channel};
+use std::sync::{Arc, Mutex};
+
+/// Key of the session in eframe's storage.
+const SESSION_KEY: &str = "grainscope-session";
+
+/// Opens the explorer window, optionally with a preset.
+pub fn run(preset: Option<String>) -> anyhow::Result<()> {
+    let initial = preset.map(|p| resolve(&p)).transpose()?;
+    let options = eframe::NativeOptions {
+        viewport: egui::ViewportBuilder::default()
+            .with_inner_size([1440.0, 920.0])
+            .with_title("grainscope")
+            .with_drag_and_drop(true),
+        ..Default::default()
+    };
+    eframe::run_native(
+        "grainscope",
+        options,
+        Box::new(move |cc| {
+            let mut app = GrainscopeApp::new(cc.egui_ctx.clone(), cc.storage);
+            if let Some(p) = initial {
+                app.apply_preset(p, "command line");
+            }
+            Ok(Box::new(app))
+        }),
+    )
+    .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+}
+
+/// Curves kept for comparison.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub struct Pin {
+    /// Parameters they were computed with.
+    pub params: SceneParams,
+    /// Fixed label (sweeps) or empty to label by the parameters that differ.
+    pub label: String,
+    /// (figure id, series) pairs.
+    pub curves: Vec<(String, Series)>,
+    /// Colour index.
+    pub color: usize,
+}
+
+/// What is restored on the next start.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default)]
+pub struct Session {
+    /// Index of the open scene in [`SCENES`].
+    pub scene: usize,
+    /// Parameters of every scene, in the order of [`SCENES`].
+    pub params: Vec<SceneParams>,
+    /// Pinned curves.
+    pub pins: Vec<Pin>,
+    /// Large fonts and full screen.
+    pub lecture: bool,
+    /// Folder for quick exports.
+    pub export_dir: String,
+    /// Path typed for loading and saving presets.
+    pub preset_path: String,
+}
+
+impl Default for Session {
+    fn default() -> Self {
+        Session {
+            scene: 0,
+            params: SCENES
+                .iter()
+                .filter_map(|s| SceneParams::default_for(s.id))
+                .collect(),
+            pins: Vec::new(),
+            lecture: false,
+            export_dir: "exports".into(),
+            preset_path: "presets/my-preset.ron".into(),
+        }
+    }
+}
+
+impl Session {
+    /// Repairs a restored session: unknown or invalid scenes get defaults.
+    fn repaired(mut self) -> Session {
+        let fresh = Session::default();
+        if self.params.len() != fresh.params.len()
+            || self
+                .params
+                .iter()
+                .zip(&fresh.params)
+                .any(|(a, b)| a.info().id != b.info().id || a.validate().is_err())
+        {
+            self.params = fresh.params;
+            self.pins.clear();
+        }
+        if self.scene >= SCENES.len() {
+            self.scene = 0;
+        }
+        self
+    }
+}
+
+/// Results of the worker.
+enum Job {
+    Scene(usize, SceneOutput),
+    Sweep(Vec<Pin>),
+}
+
+/// What a file dialog returned.
+enum Dialog {
+    Open(Option<PathBuf>),
+    Save(Option<PathBuf>),
+    Export(Option<PathBuf>, Figure),
+}
+
+/// Settings of a parameter sweep.
+struct Sweep {
+    key: String,
+    from: f64,
+    to: f64,
+    steps: usize,
+}
+
+/// The explorer application.
+pub struct GrainscopeApp {
+    /// Persisted state.
+    pub session: Session,
+    outputs: Vec<Option<Arc<SceneOutput>>>,
+    requested: Vec<Option<SceneParams>>,
+    stale: bool,
+    status: String,
+    error: Option<String>,
+    worker: Worker<Job>,
+    caches: Arc<Mutex<Caches>>,
+    dialogs: (Sender<Dialog>, Receiver<Dialog>),
+    sweep: Sweep,
+    lecture_applied: Option<bool>,
+}
+
+impl GrainscopeApp {
+    /// A new application; restores the session from `storage` when present.
+    pub fn new(ctx: egui::Context, storage: Option<&dyn eframe::Storage>) -> Self {
+        let session = storage
+            .and_then(|s| eframe::get_value::<Session>(s, SESSION_KEY))
+            .map(Session::repaired)
+            .unwrap_or_default();
+        let n = SCENES.len();
+        GrainscopeApp {
+            session,
+            outputs: vec![None; n],
+            requested: vec![None; n],
+            stale: false,
+            status: String::new(),
+            error: None,
+            worker: Worker::new(move || ctx.request_repaint()),
+            caches: Arc::new(Mutex::new(Caches::default())),
+            dialogs: channel(),
+            sweep: Sweep {
+                key: "velocity".into(),
+                from: 1.0,
+                to: 10.0,
+                steps: 5,
+            },
+            lecture_applied: None,
+        }
+    }
+
+    /// The current scene's parameters.
+    pub fn params(&self) -> &SceneParams {
+        &self.session.params[self.session.scene]
+    }
+
+    /// The current scene's last good output.
+    pub fn output(&self) -> Option<&SceneOutput> {
+        self.outputs[self.session.scene].as_deref()
+    }
+
+    /// The status line (last message).
+    pub fn status(&self) -> &str {
+        &self.status
+    }
+
+    /// Switches to the preset's scene and parameters.
+    pub fn apply_preset(&mut self, preset: Preset, origin: &str) {
+        let id = preset.scene.info().id;
+        if let Some(i) = SCENES.iter().position(|s| s.id == id) {
+            self.session.scene = i;
+            self.session.params[i] = preset.scene;
+            self.status = format!("loaded preset '{}' from {origin}", preset.title);
+            self.error = None;
+        }
+    }
+
+    fn load_preset_file(&mut self, path: &Path) {
+        match Preset::load(path) {
+            Ok(p) => self.apply_preset(p, &path.display().to_string()),
+            Err(e) => self.error = Some(format!("preset not loaded, nothing changed: {e}")),
+        }
+    }
+
+    fn save_preset_file(&mut self, path: &Path) {
+        let info = self.params().info();
+        let preset = Preset {
+            title: format!("{} (saved)", info.title),
+            description: String::new(),
+            scene: self.params().clone(),
+        };
+        match preset.save(path) {
+            Ok(()) => self.status = format!("saved preset to {}", path.display()),
+            Err(e) => self.error = Some(format!("preset not saved: {e}")),
+        }
+    }
+
+    /// Starts (or runs inline) the computation of the current scene if its
+    /// computed parameters changed.
+    fn request(&mut self) {
+        let i = self.session.scene;
+        let key = self.session.params[i].compute_key();
+        if self.requested[i].as_ref() == Some(&key) {
+            return;
+        }
+        self.requested[i] = Some(key);
+        let params = self.session.params[i].clone();
+        if SCENES[i].heavy {
+            let caches = Arc::clone(&self.caches);
+            self.stale = true;
+            self.worker.submit(move |progress| {
+                let mut c = caches.lock().map_err(|_| SceneError::Cancelled)?;
+                scene::compute_cached(&params, progress, &mut c).map(|o| Job::Scene(i, o))
+            });
+        } else {
+            self.worker.cancel();
+            self.stale = false;
+            let result = match self.caches.lock() {
+                Ok(mut c) => scene::compute_cached(&params, &scene::Progress::default(), &mut c),
+                Err(_) => scene::compute(&params, &scene::Progress::default()),
+            };
+            self.finish(i, result);
+        }
+    }
+
+    fn finish(&mut self, i: usize, result: Result<SceneOutput, SceneError>) {
+        match result {
+            Ok(o) => {
+                self.outputs[i] = Some(Arc::new(o));
+                self.error = None;
+            }
+            Err(e) => {
+                self.error = Some(format!(
+                    "{}: {e} (showing the last good result)",
+                    SCENES[i].title
+                ))
+            }
+        }
+    }
+
+    fn poll(&mut self, ctx: &egui::Context) {
+        if let Some(result) = self.worker.poll() {
+            self.stale = false;
+            match result {
+                Ok(Job::Scene(i, o)) => self.finish(i, Ok(o)),
+                Ok(Job::Sweep(pins)) => {
+                    self.status = format!("swept {} values", pins.len());
+                    self.session.pins.extend(pins);
+                }
+                Err(e) => self.error = Some(e.to_string()),
+            }
+        }
+        while let Ok(d) = self.dialogs.1.try_recv() {
+            match d {
+                Dialog::Open(Some(p)) => self.load_preset_file(&p),
+                Dialog::Save(Some(p)) => self.save_preset_file(&p),
+                Dialog::Export(Some(p), fig) => self.export(&fig, &p),
+                Dialog::Open(None) | Dialog::Save(None) | Dialog::Export(None, _) => {
+                    self.status = "no file chosen (cancelled, or no file dialog on this desktop: type a path instead)".into();
+                }
+            }
+        }
+        let dropped: Vec<PathBuf> = ctx.input(|i| {
+            i.raw
+                .dropped_files
+                .iter()
+                .map(|f| f.path().to_path_buf())
+                .filter(|p| !p.as_os_str().is_empty())
+                .collect()
+        });
+        for p in dropped {
+            self.load_preset_file(&p);
+        }
+        if self.worker.busy() {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+        }
+    }
+
+    fn export(&mut self, fig: &Figure, path: &Path) {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .unwrap_or("")
+            .to_ascii_lowercase();
+        let result = match ext.as_str() {
+            "png" => figure::write_png(fig, path, crate::cli::FIGURE_SIZE),
+            "svg" => figure::write_svg(fig, path, crate::cli::FIGURE_SIZE),
+            "csv" => figure::write_csv(fig, path),
+            _ => {
+                self.error = Some(format!(
+                    "cannot export to {}: use a .png, .svg or .csv file name",
+                    path.display()
+                ));
+                return;
+            }
+        };
+        match result {
+            Ok(()) => self.status = format!("exported {}", path.display()),
+            Err(e) => self.error = Some(format!("export failed, earlier files untouched: {e}")),
+        }
+    }
+
+    fn spawn_dialog(&self, make: impl FnOnce() -> Dialog + Send + 'static) {
+        let tx = self.dialogs.0.clone();
+        std::thread::spawn(move || {
+            let _ = tx.send(make());
+        });
+    }
+
+    fn apply_lecture(&mut self, ctx: &egui::Context) {
+        if self.lecture_applied != Some(self.session.lecture) {
+            self.lecture_applied = Some(self.session.lecture);
+            ctx.set_zoom_factor(if self.session.lecture { 1.5 } else { 1.0 });
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(self.session.lecture));
+        }
+    }
+
+    /// Draws the whole window content into `ui`.
+    pub fn show(&mut self, ui: &mut egui::Ui) {
+        let ctx = ui.ctx().clone();
+        self.poll(&ctx);
+        self.apply_lecture(&ctx);
+        egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
+        egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
+        egui::Panel::left("controls")
+            .resizable(true)
+            .default_size(360.0)
+            .show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
+            });
+        self.request();
+        egui::CentralPanel::default().show(ui, |ui| self.figures(ui));
+    }
+
+    fn top_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal_wrapped(|ui| {
+            ui.heading("grainscope");
+            ui.separator();
+            if ui.button("Open preset…").clicked() {
+                self.spawn_dialog(|| Dialog::Open(rfd::FileDialog::new().add_filter("preset", &["ron"]).pick_file()));
+            }
+            if ui.button("Save preset…").clicked() {
+                self.spawn_dialog(|| {
+                    Dialog::Save(rfd::FileDialog::new().add_filter("preset", &["ron"]).set_file_name("preset.ron").save_file())
+                });
+            }
+            ui.add(egui::TextEdit::singleline(&mut self.session.preset_path).desired_width(220.0).hint_text("preset path"))
+                .on_hover_text("path for Load/Save when no file dialog is available; presets can also be dropped on the window");
+            if ui.button("Load").clicked() {
+                let p = PathBuf::from(&self.session.preset_path);
+                self.load_preset_file(&p);
+            }
+            if ui.button("Save").clicked() {
+                let p = PathBuf::from(&self.session.preset_path);
+                self.save_preset_file(&p);
+            }
+            ui.menu_button("Shipped presets", |ui| {
+                for (file, text) in crate::preset::SHIPPED {
+                    if ui.button(file).clicked() {
+                        match Preset::from_ron(text, file) {
+                            Ok(p) => self.apply_preset(p, file),
+                            Err(e) => self.error = Some(e.to_string()),
+                        }
+                    }
+                }
+            });
+            ui.separator();
+            ui.checkbox(&mut self.session.lecture, "Lecture mode").on_hover_text("large fonts, full screen");
+        });
+    }
+
+    fn status_bar(&mut self, ui: &mut egui::Ui) {
+        ui.horizontal(|ui| {
+            if self.worker.busy() {
+                ui.add(
+                    egui::ProgressBar::new(self.worker.progress() as f32)
+                        .desired_width(160.0)
+                        .show_percentage(),
+                );
+                if ui.button("Cancel").clicked() {
+                    self.worker.cancel();
+                    self.stale = false;
+                    self.requested[self.session.scene] = None;
+                    self.status = "cancelled; showing the last good result".into();
+                }
+            }
+            if let Some(e) = &self.error {
+                ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
+            } else {
+                ui.label(&self.status);
+            }
+        });
+    }
+
+    fn side_panel(&mut self, ui: &mut egui::Ui) {
+        ui.label(egui::RichText::new("Scenes").strong());
+        for (i, s) in SCENES.iter().enumerate() {
+            if ui
+                .selectable_label(self.session.scene == i, s.title)
+                .clicked()
+            {
+                self.session.scene = i;
+            }
+        }
+        ui.separator();
+        let info = self.params().info();
+        egui::CollapsingHeader::new("What this scene shows")
+            .default_open(false)
+            .show(ui, |ui| {
+                ui.label(info.explanation);
+                ui.small(format!("Thesis: {}", info.source));
+            });
+        self.headline(ui);
+        ui.separator();
+        ui.label(egui::RichText::new("Parameters").strong());
+        self.controls(ui);
+        ui.separator();
+        self.scalars(ui);
+        ui.separator();
+        self.compare(ui);
+    }
+
+    fn headline(&self, ui: &mut egui::Ui) {
+        let Some(out) = self.output() else { return };
+        let text = match (out.scalar("e"), out.scalar("sticks"), out.scalar("v_stick")) {
+            (Some(e), Some(s), _) => format!(
+                "e = {e:.4} ({})",
+                if s > 0.5 { "sticks" } else { "bounces" }
+            ),
+            (_, _, Some(v)) => format!("v_stick = {} m/s", figure::tick_label(v)),
+            _ => out.notes.first().cloned().unwrap_or_default(),
+        };
+        ui.label(egui::RichText::new(text).size(20.0).strong());
+    }
+
+    fn controls(&mut self, ui: &mut egui::Ui) {
+        let mut material_changed = false;
+        let scene = self.session.scene;
+        {
+            let params = &mut self.session.params[scene];
+            let mut controls = params.controls();
+            egui::Grid::new("controls")
+                .num_columns(1)
+                .striped(false)
+                .show(ui, |ui| {
+                    for c in controls.iter_mut() {
+                        let (label, unit, doc) = (c.label, c.unit, c.doc);
+                        match &mut c.kind {
+                            ControlKind::Number {
+                                value,
+                                min,
+                                max,
+                                log,
+                                display_scale,
+                            } => {
+                                let mut shown = **value * *display_scale;
+                                let (lo, hi) = (*min * *display_scale, *max * *display_scale);
+                                let mut slider = egui::Slider::new(&mut shown, lo..=hi)
+                                    .logarithmic(*log)
+                                    .text(label);
+                                if !unit.is_empty() {
+                                    slider = slider.suffix(format!(" {unit}"));
+                                }
+                                if *log {
+                                    slider = slider.custom_formatter(|v, _| figure::tick_label(v));
+                                }
+                                if ui.add(slider).on_hover_text(doc).changed() && shown.is_finite()
+                                {
+                                    **value = (shown / *display_scale).clamp(*min, *max);
+                                }
+                            }
+                            ControlKind::Count { value, min, max } => {
+                                ui.add(egui::Slider::new(*value, *min..=*max).text(label))
+                                    .on_hover_text(doc);
+                            }
+                            ControlKind::Toggle(v) => {
+                                ui.checkbox(v, label).on_hover_text(doc);
+                            }
+                            ControlKind::Material(m) => {
+                                egui::ComboBox::from_label(label)
+                                    .selected_text(m.name.clone())
+                                    .show_ui(ui, |ui| {
+                                        for candidate in crate::physics::material::materials() {
+                                            if ui
+                                                .selectable_label(
+                                                    m.name == candidate.name,
+                                                    &candidate.name,
+                                                )
+                                                .clicked()
+                                            {
+                                                **m = candidate.clone();
+                                                material_changed = true;
+                                            }
+                                        }
+                                    });
+                            }
+                        }
+                        ui.end_row();
+                    }
+                });
+        }
+        if material_changed {
+            self.session.params[scene].material_changed();
+        }
+        if ui.button("Reset to defaults").clicked()
+            && let Some(p) = SceneParams::default_for(SCENES[scene].id)
+        {
+            self.session.params[scene] = p;
+        }
+    }
+
+    fn scalars(&self, ui: &mut egui::Ui) {
+        let Some(out) = self.output() else {
+            ui.label("computing…");
+            return;
+        };
+        egui::Grid::new("scalars")
+            .num_columns(2)
+            .striped(true)
+            .show(ui, |ui| {
+                for s in &out.scalars {
+                    ui.label(s.label);
+                    ui.label(format!("{} {}", figure::tick_label(s.value), s.unit));
+                    ui.end_row();
+                }
+            });
+        for n in &out.notes {
+            ui.label(egui::RichText::new(n).italics());
+        }
+    }
+
+    fn compare(&mut self, ui: &mut egui::Ui) {
+        ui.label(egui::RichText::new("Compare").strong());
+        ui.horizontal(|ui| {
+            if ui
+                .button("Pin curves")
+                .on_hover_text("keep the current model curves while you change parameters")
+                .clicked()
+            {
+                self.pin_current();
+            }
+            if ui.button("Clear pins").clicked() {
+                let id = self.params().info().id;
+                self.session.pins.retain(|p| p.params.info().id != id);
+            }
+        });
+        let mut params = self.params().clone();
+        let keys: Vec<(&'static str, &'static str)> = params
+            .controls()
+            .iter()
+            .filter(|c| matches!(c.kind, ControlKind::Number { .. }) && !c.style_only)
+            .map(|c| (c.key, c.label))
+            .collect();
+        ui.horizontal(|ui| {
+            ui.label("Sweep");
+            let current = keys
+                .iter()
+                .find(|k| k.0 == self.sweep.key)
+                .map_or("choose", |k| k.1);
+            egui::ComboBox::from_id_salt("sweep-key")
+                .selected_text(current)
+                .show_ui(ui, |ui| {
+                    for (k, l) in &keys {
+                        ui.selectable_value(&mut self.sweep.key, k.to_string(), *l);
+                    }
+                });
+        });
+        ui.horizontal(|ui| {
+            ui.add(
+                egui::DragValue::new(&mut self.sweep.from)
+                    .speed(0.01)
+                    .prefix("from "),
+            );
+            ui.add(
+                egui::DragValue::new(&mut self.sweep.to)
+                    .speed(0.01)
+                    .prefix("to "),
+            );
+            ui.add(
+                egui::DragValue::new(&mut self.sweep.steps)
+                    .range(2..=12)
+                    .prefix("n "),
+            );
+        });
+        ui.small("sweep values are in SI units, log-spaced when both ends are positive");
+        if ui.button("Draw family").clicked() {
+            self.start_sweep();
+        }
+    }
+
+    fn pin_current(&mut self) {
+        let Some(out) = self.output() else { return };
+        let curves: Vec<(String, Series)> = out
+            .figures
+            .iter()
+            .flat_map(|f| {
+                f.series
+                    .iter()
+                    .filter(|s| s.style == Style::Line)
+                    .map(move |s| (f.id.clone(), s.clone()))
+            })
+            .collect();
+        let color = self.session.pins.len() + 1;
+        let params = self.params().clone();
+        self.session.pins.push(Pin {
+            params,
+            label: String::new(),
+            curves,
+            color,
+        });
+    }
+
+    fn start_sweep(&mut self) {
+        let base = self.params().clone();
+        let (from, to, n) = (
+            self.sweep.from,
+            self.sweep.to,
+            self.sweep.steps.clamp(2, 12),
+        );
+        let values: Vec<f64> = if from > 0.0 && to > 0.0 {
+            scene::logspace(from, to, n)
+        } else {
+            (0..n)
+                .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
+                .collect()
+        };
+        // Check every value before starting, so a bad range is reported at once.
+        for v in &values {
+            let mut trial = base.clone();
+            if let Err(e) = trial.set(&self.sweep.key, &v.to_string()) {
+                self.error = Some(format!("sweep not started: {e}"));
+                return;
+            }
+        }
+        let key = self.sweep.key.clone();
+        let first_color = self.session.pins.len() + 1;
+        self.stale = true;
+        self.worker.submit(move |progress| {
+            let mut pins = Vec::new();
+            for (j, v) in values.iter().enumerate() {
+                progress.check()?;
+                progress.set(j as f64 / values.len() as f64);
+                let mut p = base.clone();
+                p.set(&key, &v.to_string())?;
+                let out = scene::compute(&p, &scene::Progress::default())?;
+                let curves = out
+                    .figures
+                    .iter()
+                    .flat_map(|f| {
+                        f.series
+                            .iter()
+                            .filter(|s| s.style == Style::Line)
+                            .map(move |s| (f.id.clone(), s.clone()))
+                    })
+                    .collect();
+                pins.push(Pin {
+                    params: p,
+                    label: format!("{key} = {}", figure::tick_label(*v)),
+                    curves,
+                    color: first_color + j,
+                });
+            }
+            Ok(Job::Sweep(pins))
+        });
+        // The scene itself must be recomputed when the sweep is done.
+        self.requested[self.session.scene] = None;
+    }
+
+    fn overlay_for(&self, fig: &Figure, cursor: Option<[f64; 2]>) -> plot::Overlay {
+        let current = self.params();
+        let pinned = self
+            .session
+            .pins
+            .iter()
+            .filter(|p| p.params.info().id == current.info().id)
+            .flat_map(|pin| {
+                let label = if pin.label.is_empty() {
+                    let d = pin.params.differences(current);
+                    if d.is_empty() {
+                        "pinned (same parameters)".to_string()
+                    } else {
+                        format!("pinned: {}", d.join(", "))
+                    }
+                } else {
+                    pin.label.clone()
+                };
+                pin.curves
+                    .iter()
+                    .filter(|(id, _)| *id == fig.id)
+                    .map(move |(_, s)| {
+                        Series::new(
+                            format!("{label} — {}", s.name),
+                            s.points.clone(),
+                            Style::Line,
+                            pin.color,
+                        )
+                    })
+            })
+            .collect();
+        plot::Overlay { pinned, cursor }
+    }
+
+    fn figures(&mut self, ui: &mut egui::Ui) {
+        let Some(out) = self.outputs[self.session.scene].clone() else {
+            ui.centered_and_justified(|ui| ui.spinner());
+            return;
+        };
+        let trajectory = match &out.extra {
+            Extra::Collision(t) => Some(Arc::clone(t)),
+            Extra::None => None,
+        };
+        let n_panels = out.figures.len() + usize::from(trajectory.is_some());
+        let cols = if n_panels > 1 { 2 } else { 1 };
+        let rows = n_panels.div_ceil(cols);
+        let avail = ui.available_size();
+        let size = egui::vec2(
+            (avail.x / cols as f32 - 12.0).max(200.0),
+            (avail.y / rows as f32 - 40.0).max(160.0),
+        );
+        let cursor_fraction = match self.params() {
+            SceneParams::Hysteresis(p) => p.cursor,
+            _ => 0.0,
+        };
+        let cursor_sample = trajectory
+            .as_ref()
+            .and_then(|t| sketch::sample_at(t, cursor_fraction));
+        let mut export: Option<(Figure, &'static str)> = None;
+        let mut save_as: Option<Figure> = None;
+        egui::Grid::new("figures").num_columns(cols).show(ui, |ui| {
+            for (k, fig) in out.figures.iter().enumerate() {
+                let cursor = cursor_sample.and_then(|s| match fig.id.as_str() {
+                    "contact-radius" => Some([s[1] * 1e9, s[2] * 1e9]),
+                    "elastic-force" => Some([s[1] * 1e9, s[3] * 1e6]),
+                    "energy-budget" => None,
+                    _ => None,
+                });
+                let overlay = self.overlay_for(fig, cursor);
+                ui.vertical(|ui| {
+                    plot::show(ui, fig, &overlay, size, self.stale);
+                    ui.horizontal(|ui| {
+                        for ext in ["png", "svg", "csv"] {
+                            if ui
+                                .small_button(ext.to_uppercase())
+                                .on_hover_text("save into the export folder")
+                                .clicked()
+                            {
+                                export = Some((fig.clone(), ext));
+                            }
+                        }
+                        if ui.small_button("Save as…").clicked() {
+                            save_as = Some(fig.clone());
+                        }
+                    });
+                });
+                if (k + 1) % cols == 0 {
+                    ui.end_row();
+                }
+            }
+            if let Some(t) = &trajectory {
+                ui.vertical(|ui| {
+                    ui.label(egui::RichText::new("Contact sketch").strong());
+                    sketch::show(ui, t, cursor_fraction, size);
+                    if let SceneParams::Hysteresis(p) = &mut self.session.params[self.session.scene]
+                    {
+                        ui.add(egui::Slider::new(&mut p.cursor, 0.0..=1.0).text("time cursor"));
+                    }
+                    ui.horizontal(|ui| {
+                        ui.label("export folder");
+                        ui.text_edit_singleline(&mut self.session.export_dir);
+                    });
+                });
+            }
+        });
+        if trajectory.is_none() {
+            ui.horizontal(|ui| {
+                ui.label("export folder");
+                ui.text_edit_singleline(&mut self.session.export_dir);
+            });
+        }
+        if let Some((fig, ext)) = export {
+            let dir = PathBuf::from(&self.session.export_dir);
+            if let Err(e) = std::fs::create_dir_all(&dir) {
+                self.error = Some(format!(
+                    "cannot create export folder {}: {e}",
+                    dir.display()
+                ));
+            } else {
+                let name = format!("{}-{}.{ext}", self.params().info().id, fig.id);
+                self.export(&fig, &dir.join(name));
+            }
+        }
+        if let Some(fig) = save_as {
+            let name = format!("{}-{}.png", self.params().info().id, fig.id);
+            self.spawn_dialog(move || {
+                let path = rfd::FileDialog::new()
+                    .add_filter("PNG, SVG or CSV", &["png", "svg", "csv"])
+                    .set_file_name(name)
+                    .save_file();
+                Dialog::Export(path, fig)
+            });
+        }
+    }
+}
+
+impl eframe::App for GrainscopeApp {
+    fn ui(&mut self, ui: &mut egui::Ui, _frame: &mut eframe::Frame) {
+        self.show(ui);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        eframe::set_value(storage, SESSION_KEY, &self.session);
+    }
+}

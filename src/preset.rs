@@ -1,0 +1,179 @@
+//! Presets: RON files holding a scene and its parameters.
+//!
+//! ```ron
+//! (
+//!     title: "Ice spheres bouncing at 8 m/s",
+//!     description: "Reference set of the thesis, Fig. 2.2",
+//!     scene: Hysteresis((collision: (velocity: 8.0, t_vis: 1e-11))),
+//! )
+//! ```
+//!
+//! Every field has a default, so a preset names only what differs and old
+//! presets keep loading when parameters are added. Unknown keys and bad values
+//! are reported with their line and column. All values are SI.
+
+use crate::figure::write_atomically;
+use crate::scene::{ParamError, SceneParams};
+use serde::{Deserialize, Serialize};
+use std::path::{Path, PathBuf};
+
+/// A saved scene with its parameters.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Preset {
+    /// Short title.
+    #[serde(default)]
+    pub title: String,
+    /// What the preset shows.
+    #[serde(default)]
+    pub description: String,
+    /// The scene and its parameters.
+    pub scene: SceneParams,
+}
+
+/// Why a preset could not be read or written.
+#[derive(Debug, thiserror::Error)]
+pub enum PresetError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {source}")]
+    Read {
+        /// File.
+        path: PathBuf,
+        /// Cause.
+        source: std::io::Error,
+    },
+    /// The RON text is malformed or has unknown keys or wrong types.
+    #[error("{origin}:{line}:{column}: {message}")]
+    Syntax {
+        /// File name or "<text>".
+        origin: String,
+        /// Line (1-based).
+        line: usize,
+        /// Column (1-based).
+        column: usize,
+        /// What is wrong.
+        message: String,
+    },
+    /// A value is outside its documented range.
+    #[error("{origin}: {source}")]
+    Invalid {
+        /// File name or "<text>".
+        origin: String,
+        /// The range error.
+        source: ParamError,
+    },
+    /// The file could not be written.
+    #[error(transparent)]
+    Write(#[from] crate::figure::ExportError),
+    /// Serialisation failed.
+    #[error("cannot serialise preset: {0}")]
+    Serialise(String),
+}
+
+impl Preset {
+    /// Parses and validates a preset from RON text; `origin` names it in errors.
+    pub fn from_ron(text: &str, origin: &str) -> Result<Preset, PresetError> {
+        let preset: Preset = ron::from_str(text).map_err(|e| PresetError::Syntax {
+            origin: origin.into(),
+            line: e.span.start.line,
+            column: e.span.start.col,
+            message: e.code.to_string(),
+        })?;
+        preset
+            .scene
+            .validate()
+            .map_err(|source| PresetError::Invalid {
+                origin: origin.into(),
+                source,
+            })?;
+        Ok(preset)
+    }
+
+    /// Reads a preset file.
+    pub fn load(path: &Path) -> Result<Preset, PresetError> {
+        let text = std::fs::read_to_string(path).map_err(|source| PresetError::Read {
+            path: path.into(),
+            source,
+        })?;
+        Preset::from_ron(&text, &path.display().to_string())
+    }
+
+    /// The preset as RON text, preceded by comments documenting every key
+    /// with its unit and range.
+    pub fn to_ron(&self) -> Result<String, PresetError> {
+        let body =
+            ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default().struct_names(false))
+                .map_err(|e| PresetError::Serialise(e.to_string()))?;
+        let mut scene = self.scene.clone();
+        let mut out = format!(
+            "// grainscope preset, scene '{}'. All values in SI units.\n",
+            scene.info().id
+        );
+        for c in scene.controls() {
+            out.push_str("//   ");
+            out.push_str(&c.doc_line());
+            out.push('\n');
+        }
+        out.push_str(&body);
+        out.push('\n');
+        Ok(out)
+    }
+
+    /// Writes the preset atomically (an existing file stays intact on error).
+    pub fn save(&self, path: &Path) -> Result<(), PresetError> {
+        write_atomically(path, self.to_ron()?.as_bytes())?;
+        Ok(())
+    }
+}
+
+/// The presets shipped in `presets/`, compiled into the binary: (file name, text).
+pub const SHIPPED: [(&str, &str); 6] = [
+    (
+        "ice-bounce-8ms.ron",
+        include_str!("../presets/ice-bounce-8ms.ron"),
+    ),
+    (
+        "ice-stick-2ms.ron",
+        include_str!("../presets/ice-stick-2ms.ron"),
+    ),
+    (
+        "ice-quasistatic.ron",
+        include_str!("../presets/ice-quasistatic.ron"),
+    ),
+    (
+        "restitution-ice.ron",
+        include_str!("../presets/restitution-ice.ron"),
+    ),
+    (
+        "sticking-velocity-ice.ron",
+        include_str!("../presets/sticking-velocity-ice.ron"),
+    ),
+    (
+        "adhesion-ice-monomers.ron",
+        include_str!("../presets/adhesion-ice-monomers.ron"),
+    ),
+];
+
+/// Finds a preset by path, or by the name of a shipped preset (with or
+/// without `.ron`).
+pub fn resolve(name: &str) -> Result<Preset, PresetError> {
+    let path = Path::new(name);
+    if path.exists() {
+        return Preset::load(path);
+    }
+    let stem = name.trim_end_matches(".ron");
+    let stem = stem.rsplit('/').next().unwrap_or(stem);
+    match SHIPPED
+        .iter()
+        .find(|(file, _)| file.trim_end_matches(".ron") == stem)
+    {
+        Some((file, text)) => Preset::from_ron(text, file),
+        None => Err(PresetError::Read {
+            path: path.into(),
+            source: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                "no such file and no shipped preset of that name",
+            ),
+        }),
+    }
+}

@@ -1,0 +1,190 @@
+//! The published numbers the project reproduces, each with the thesis value,
+//! our value and the tolerance, and the figures behind them.
+
+use crate::physics::PhysicsError;
+use crate::physics::collision::{Options, Outcome, Setup, collide};
+use crate::physics::contact::e_independent;
+use serde::Serialize;
+
+/// One comparison with the thesis.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Check {
+    /// Figure, equation or section of the thesis.
+    pub figure: &'static str,
+    /// What is compared.
+    pub quantity: &'static str,
+    /// The printed value.
+    pub thesis: f64,
+    /// The value computed here.
+    pub ours: f64,
+    /// Allowed absolute deviation.
+    pub tolerance: f64,
+    /// Remark (e.g. a slip in the printed text).
+    pub note: &'static str,
+    /// The printed value is a known slip of the thesis; a mismatch is expected.
+    pub slip: bool,
+}
+
+impl Check {
+    /// Whether our value lies within the tolerance.
+    pub fn pass(&self) -> bool {
+        (self.ours - self.thesis).abs() <= self.tolerance
+    }
+}
+
+/// The checks of chapter 2 (reference ice set of the thesis).
+pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
+    let s = Setup::reference_ice();
+    let opts = Options::default();
+    let p = s.pair;
+    let c8 = collide(&s, 8.0, &opts)?;
+    let c2 = collide(&s, 2.0, &opts)?;
+    let mut quasi = s;
+    quasi.t_vis = 1e-14;
+    let c4q = collide(&quasi, 4.0, &opts)?;
+    let e_jkr8 = p.e_jkr(8.0);
+    let e_d8 = p.e_viscous(s.dissipation_time(), 8.0);
+    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
+        figure,
+        quantity,
+        thesis,
+        ours,
+        tolerance,
+        note,
+        slip: false,
+    };
+    Ok(vec![
+        check(
+            "Eq. 2.22",
+            "Hertz time t_H at 8 m/s [s]",
+            1.4e-8,
+            c8.hertz_time,
+            0.05 * 1.4e-8,
+            "",
+        ),
+        check(
+            "Fig. 2.2",
+            "contact time t_c at 8 m/s [s]",
+            1.7e-8,
+            c8.contact_time,
+            0.05 * 1.7e-8,
+            "",
+        ),
+        check("Sect. 2.3.3", "e_A at 8 m/s", 0.66, c8.e_adhesive, 0.02, ""),
+        check(
+            "Sect. 2.3.3",
+            "e_JKR² + e_D² − 1 at 8 m/s",
+            0.92,
+            e_jkr8 * e_jkr8 + e_d8 * e_d8 - 1.0,
+            0.02,
+            "the printed e_I = 0.92 equals the radicand of (2.27)",
+        ),
+        Check {
+            slip: true,
+            ..check(
+                "Eq. 2.27",
+                "e_I at 8 m/s from (2.27)",
+                0.92,
+                e_independent(e_jkr8, e_d8),
+                0.02,
+                "slip: (2.27) gives 0.96; the printed 0.92 is its square",
+            )
+        },
+        check(
+            "App. 2.C, Fig. 2.9",
+            "fraction dissipated at the crack",
+            0.37,
+            c8.crack_fraction(),
+            0.02,
+            "",
+        ),
+        check(
+            "App. 2.C, Fig. 2.9",
+            "fraction dissipated in the bulk",
+            0.19,
+            c8.bulk_fraction(),
+            0.02,
+            "",
+        ),
+        check(
+            "Fig. 2.3",
+            "2 m/s sticks (1 = yes)",
+            1.0,
+            f64::from(u8::from(c2.outcome == Outcome::Stick)),
+            0.0,
+            "",
+        ),
+        check(
+            "Eq. 2.25",
+            "JKR sticking velocity v_c [m/s]",
+            1.46,
+            p.jkr_sticking_velocity(),
+            0.02,
+            "",
+        ),
+        check("Eq. 2.24", "e_JKR at 4 m/s", 0.93, p.e_jkr(4.0), 0.02, ""),
+        check(
+            "App. 2.A",
+            "e at 4 m/s, T_vis = 1e-14 s",
+            0.93,
+            c4q.e_adhesive,
+            0.02,
+            "quasi-static hard case",
+        ),
+    ])
+}
+
+/// The checks as a Markdown table.
+pub fn markdown(checks: &[Check]) -> String {
+    let mut s = String::from(
+        "| figure | quantity | thesis | ours | tolerance | result | note |\n|---|---|---|---|---|---|---|\n",
+    );
+    for c in checks {
+        s.push_str(&format!(
+            "| {} | {} | {} | {:.4e} | ±{} | {} | {} |\n",
+            c.figure,
+            c.quantity,
+            c.thesis,
+            c.ours,
+            c.tolerance,
+            if c.pass() {
+                "pass"
+            } else if c.slip {
+                "slip in thesis"
+            } else {
+                "FAIL"
+            },
+            c.note
+        ));
+    }
+    let passed = checks.iter().filter(|c| c.pass()).count();
+    let slips = checks.iter().filter(|c| !c.pass() && c.slip).count();
+    s.push_str(&format!("\n{passed} of {} within tolerance; {slips} differ through a known slip of the printed text.\n", checks.len()));
+    s
+}
+
+/// The checks as CSV.
+pub fn csv(checks: &[Check]) -> Result<Vec<u8>, csv::Error> {
+    let mut w = csv::Writer::from_writer(Vec::new());
+    w.write_record([
+        "figure",
+        "quantity",
+        "thesis",
+        "ours",
+        "tolerance",
+        "pass",
+        "note",
+    ])?;
+    for c in checks {
+        w.write_record([
+            c.figure,
+            c.quantity,
+            &c.thesis.to_string(),
+            &format!("{:e}", c.ours),
+            &c.tolerance.to_string(),
+            if c.pass() { "true" } else { "false" },
+            c.note,
+        ])?;
+    }
+    w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
+}

@@ -1,0 +1,300 @@
+//! Scenes: pure `compute(&Params) -> Result<Output, Error>` functions that the
+//! window, the command line and the tests share.
+//!
+//! Adding a scene means adding one module with its `Params` (serde, with
+//! `#[serde(default)]` so old presets keep loading), its `controls()` (the
+//! documented, validated parameter list) and its `compute`, then registering
+//! it in [`SceneParams`] and [`SCENES`].
+
+pub mod adhesion;
+pub mod collision_params;
+pub mod controls;
+pub mod hysteresis;
+pub mod restitution;
+
+pub use controls::{Control, ControlKind, ParamError};
+
+use crate::figure::Figure;
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+
+/// Static description of a scene.
+#[derive(Debug, Clone, Copy)]
+pub struct SceneInfo {
+    /// Identifier used on the command line and in presets.
+    pub id: &'static str,
+    /// Title shown in the scene list.
+    pub title: &'static str,
+    /// Thesis sections and figures it covers.
+    pub source: &'static str,
+    /// Explanation with the key equations, for teaching.
+    pub explanation: &'static str,
+    /// Whether a recompute is slow enough to need the worker thread.
+    pub heavy: bool,
+}
+
+/// All scenes, in the order of the scene list.
+pub const SCENES: [SceneInfo; 3] = [hysteresis::INFO, restitution::INFO, adhesion::INFO];
+
+/// The parameters of one scene, tagged by scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+pub enum SceneParams {
+    /// Contact hysteresis of one collision.
+    Hysteresis(hysteresis::Params),
+    /// Restitution and sticking velocity.
+    Restitution(restitution::Params),
+    /// Adhesive contact basics.
+    Adhesion(adhesion::Params),
+}
+
+impl SceneParams {
+    /// Default parameters of the scene with identifier `id`.
+    pub fn default_for(id: &str) -> Option<SceneParams> {
+        match id {
+            "hysteresis" => Some(SceneParams::Hysteresis(Default::default())),
+            "restitution" => Some(SceneParams::Restitution(Default::default())),
+            "adhesion" => Some(SceneParams::Adhesion(Default::default())),
+            _ => None,
+        }
+    }
+
+    /// The scene's static description.
+    pub fn info(&self) -> &'static SceneInfo {
+        match self {
+            SceneParams::Hysteresis(_) => &SCENES[0],
+            SceneParams::Restitution(_) => &SCENES[1],
+            SceneParams::Adhesion(_) => &SCENES[2],
+        }
+    }
+
+    /// The documented parameters, with mutable access for the UI and `--set`.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        match self {
+            SceneParams::Hysteresis(p) => p.controls(),
+            SceneParams::Restitution(p) => p.controls(),
+            SceneParams::Adhesion(p) => p.controls(),
+        }
+    }
+
+    /// Checks every parameter against its documented range.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let mut copy = self.clone();
+        for c in copy.controls() {
+            c.check()?;
+        }
+        Ok(())
+    }
+
+    /// Sets the parameter `key` from its textual value (as on the command
+    /// line), checking its range. On error nothing changes.
+    pub fn set(&mut self, key: &str, value: &str) -> Result<(), ParamError> {
+        let mut trial = self.clone();
+        {
+            let mut controls = trial.controls();
+            let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
+            let c = controls.iter_mut().find(|c| c.key == key).ok_or_else(|| {
+                ParamError::UnknownKey {
+                    key: key.into(),
+                    known: known.join(", "),
+                }
+            })?;
+            c.set_text(value)?;
+        }
+        trial.validate()?;
+        *self = trial;
+        Ok(())
+    }
+
+    /// The parameters with every styling-only value reset: two parameter sets
+    /// with equal keys give the same computed output.
+    pub fn compute_key(&self) -> SceneParams {
+        let mut key = self.clone();
+        for c in key.controls() {
+            if c.style_only
+                && let ControlKind::Number { value, .. } = c.kind
+            {
+                *value = 0.0;
+            }
+        }
+        key
+    }
+
+    /// After a material changed: sets the combined surface energy to
+    /// 2(γ₁γ₂)^{1/2} of the chosen materials.
+    pub fn material_changed(&mut self) {
+        use crate::physics::material::combined_surface_energy;
+        match self {
+            SceneParams::Hysteresis(p) => {
+                p.collision.surface_energy =
+                    combined_surface_energy(&p.collision.projectile, &p.collision.target)
+            }
+            SceneParams::Restitution(p) => {
+                p.collision.surface_energy =
+                    combined_surface_energy(&p.collision.projectile, &p.collision.target)
+            }
+            SceneParams::Adhesion(p) => {
+                p.surface_energy = combined_surface_energy(&p.material, &p.material)
+            }
+        }
+    }
+
+    /// Keys whose values differ between `self` and `other` (same scene), with
+    /// the values of `self` as text: used to label pinned curves.
+    pub fn differences(&self, other: &SceneParams) -> Vec<String> {
+        let mut a = self.clone();
+        let mut b = other.clone();
+        let ca = a.controls();
+        let cb = b.controls();
+        if ca.len() != cb.len() {
+            return Vec::new();
+        }
+        ca.iter()
+            .zip(cb.iter())
+            .filter(|(x, y)| {
+                x.key == y.key && x.display_value() != y.display_value() && !x.style_only
+            })
+            .map(|(x, _)| format!("{} = {}", x.label, x.display_value()))
+            .collect()
+    }
+}
+
+/// A scalar result, e.g. the coefficient of restitution.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Scalar {
+    /// Key in JSON output, e.g. "e".
+    pub key: &'static str,
+    /// Label as shown, e.g. "restitution e".
+    pub label: &'static str,
+    /// Value in SI units (or dimensionless).
+    pub value: f64,
+    /// Unit of `value`, empty for dimensionless quantities.
+    pub unit: &'static str,
+}
+
+/// Extra, scene-specific data the window needs beyond figures.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Extra {
+    /// Nothing beyond figures.
+    #[default]
+    None,
+    /// A recorded collision, for the sketch of the two spheres.
+    Collision(Arc<hysteresis::Trajectory>),
+}
+
+/// What a scene computes.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SceneOutput {
+    /// Scalar results.
+    pub scalars: Vec<Scalar>,
+    /// Figures, in display order.
+    pub figures: Vec<Figure>,
+    /// Remarks for the user (regime, discrepancies with the printed thesis).
+    pub notes: Vec<String>,
+    /// Scene-specific data for the window.
+    pub extra: Extra,
+}
+
+impl SceneOutput {
+    /// Scalars as one JSON object `{key: value}`.
+    pub fn scalars_json(&self) -> serde_json::Value {
+        let map: serde_json::Map<String, serde_json::Value> = self
+            .scalars
+            .iter()
+            .map(|s| (s.key.to_string(), serde_json::json!(s.value)))
+            .collect();
+        serde_json::Value::Object(map)
+    }
+
+    /// Looks a scalar up by key.
+    pub fn scalar(&self, key: &str) -> Option<f64> {
+        self.scalars.iter().find(|s| s.key == key).map(|s| s.value)
+    }
+}
+
+/// Why a scene could not be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SceneError {
+    /// A parameter is out of range.
+    #[error(transparent)]
+    Param(#[from] ParamError),
+    /// The model rejected its input or failed.
+    #[error(transparent)]
+    Physics(#[from] crate::physics::PhysicsError),
+    /// The computation was cancelled.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+/// Progress reporting and cancellation shared between a worker and the UI.
+#[derive(Debug, Clone, Default)]
+pub struct Progress {
+    cancel: Arc<AtomicBool>,
+    permille: Arc<AtomicU32>,
+}
+
+impl Progress {
+    /// Requests cancellation.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+    /// Whether cancellation was requested.
+    pub fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+    /// Errors out if cancellation was requested.
+    pub fn check(&self) -> Result<(), SceneError> {
+        if self.cancelled() {
+            Err(SceneError::Cancelled)
+        } else {
+            Ok(())
+        }
+    }
+    /// Sets the fraction done (0–1).
+    pub fn set(&self, fraction: f64) {
+        self.permille.store(
+            (fraction.clamp(0.0, 1.0) * 1000.0) as u32,
+            Ordering::Relaxed,
+        );
+    }
+    /// The fraction done (0–1).
+    pub fn fraction(&self) -> f64 {
+        self.permille.load(Ordering::Relaxed) as f64 / 1000.0
+    }
+}
+
+/// Partial results kept between recomputations, so that a changed parameter
+/// recomputes only what it touches. Results do not depend on the cache.
+#[derive(Debug, Default)]
+pub struct Caches {
+    restitution: restitution::Cache,
+}
+
+/// Computes a scene. Pure: the same parameters give the same output.
+pub fn compute(params: &SceneParams, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    compute_cached(params, progress, &mut Caches::default())
+}
+
+/// Computes a scene, reusing parts of earlier results held in `caches`.
+pub fn compute_cached(
+    params: &SceneParams,
+    progress: &Progress,
+    caches: &mut Caches,
+) -> Result<SceneOutput, SceneError> {
+    params.validate()?;
+    match params {
+        SceneParams::Hysteresis(p) => hysteresis::compute(p),
+        SceneParams::Restitution(p) => restitution::compute(p, progress, &mut caches.restitution),
+        SceneParams::Adhesion(p) => adhesion::compute(p),
+    }
+}
+
+/// Evenly spaced values in log space, `n ≥ 2` points from `lo` to `hi`.
+pub fn logspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    let (a, b) = (lo.ln(), hi.ln());
+    (0..n)
+        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
+        .collect()
+}

@@ -1,0 +1,508 @@
+//! Scene "Restitution" (thesis Figs. 2.4, 2.5): the coefficient of
+//! restitution against velocity and against reduced radius, and the sticking
+//! velocity against radius for several relaxation times.
+
+use super::collision_params::CollisionParams;
+use super::controls::{Control, ParamError};
+use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::collision::{restitution, sticking_velocity};
+use crate::physics::contact::e_independent;
+use crate::physics::plasticity;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Scene description.
+pub const INFO: SceneInfo = SceneInfo {
+    id: "restitution",
+    title: "Restitution",
+    source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
+    explanation: "The coefficient of restitution e_A = −δ̇(t_c)/v (2.23) from the full contact model, \
+compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
+v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
+e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
+Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
+combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is found by bisection \
+on the outcome of the full model; viscosity at the crack raises it far above v_c for small grains.",
+    heavy: true,
+};
+
+/// Parameters of the restitution scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The collision; its velocity is the fixed velocity of e(R).
+    pub collision: CollisionParams,
+    /// Lowest velocity of e(v), m/s (default 0.5).
+    pub v_min: f64,
+    /// Highest velocity of e(v), m/s (default 100).
+    pub v_max: f64,
+    /// Number of velocities of e(v) (default 200).
+    pub n_velocities: usize,
+    /// Smallest reduced radius of e(R) and v_s(R), m (default 0.1 µm).
+    pub r_min: f64,
+    /// Largest reduced radius of e(R) and v_s(R), m (default 100 µm).
+    pub r_max: f64,
+    /// Number of radii (default 16).
+    pub n_radii: usize,
+    /// Smallest T_vis of the v_s(R) family, s (default 1e-13).
+    pub t_vis_min: f64,
+    /// Largest T_vis of the v_s(R) family, s (default 1e-10).
+    pub t_vis_max: f64,
+    /// Number of curves in the v_s(R) family, log-spaced in T_vis (default 4).
+    pub n_t_vis: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            collision: CollisionParams::default(),
+            v_min: 0.5,
+            v_max: 100.0,
+            n_velocities: 200,
+            r_min: 1e-7,
+            r_max: 1e-4,
+            n_radii: 16,
+            t_vis_min: 1e-13,
+            t_vis_max: 1e-10,
+            n_t_vis: 4,
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let mut c = self.collision.controls();
+        let v = ("m/s", 1.0);
+        c.push(Control::number(
+            "v_min",
+            "lowest velocity",
+            &mut self.v_min,
+            "m s^-1",
+            (1e-3, 1e3),
+            true,
+            v,
+            "start of e(v)",
+        ));
+        c.push(Control::number(
+            "v_max",
+            "highest velocity",
+            &mut self.v_max,
+            "m s^-1",
+            (1e-3, 1e3),
+            true,
+            v,
+            "end of e(v)",
+        ));
+        c.push(Control::count(
+            "n_velocities",
+            "velocities",
+            &mut self.n_velocities,
+            (2, 2000),
+            "points of e(v)",
+        ));
+        let um = ("µm", 1e6);
+        c.push(Control::number(
+            "r_min",
+            "smallest reduced radius",
+            &mut self.r_min,
+            "m",
+            (1e-8, 1e-2),
+            true,
+            um,
+            "start of e(R), v_s(R)",
+        ));
+        c.push(Control::number(
+            "r_max",
+            "largest reduced radius",
+            &mut self.r_max,
+            "m",
+            (1e-8, 1e-2),
+            true,
+            um,
+            "end of e(R), v_s(R)",
+        ));
+        c.push(Control::count(
+            "n_radii",
+            "radii",
+            &mut self.n_radii,
+            (2, 200),
+            "points of e(R) and v_s(R)",
+        ));
+        let s = ("s", 1.0);
+        c.push(Control::number(
+            "t_vis_min",
+            "smallest T_vis",
+            &mut self.t_vis_min,
+            "s",
+            (1e-15, 1e-8),
+            true,
+            s,
+            "first v_s(R) curve",
+        ));
+        c.push(Control::number(
+            "t_vis_max",
+            "largest T_vis",
+            &mut self.t_vis_max,
+            "s",
+            (1e-15, 1e-8),
+            true,
+            s,
+            "last v_s(R) curve",
+        ));
+        c.push(Control::count(
+            "n_t_vis",
+            "T_vis curves",
+            &mut self.n_t_vis,
+            (1, 8),
+            "curves of v_s(R)",
+        ));
+        c
+    }
+
+    fn check_ranges(&self) -> Result<(), ParamError> {
+        let bad = |what: &str| {
+            Err(ParamError::Inconsistent(format!(
+                "{what}: the lower end must be below the upper end"
+            )))
+        };
+        if self.v_min >= self.v_max {
+            return bad("v_min/v_max");
+        }
+        if self.r_min >= self.r_max {
+            return bad("r_min/r_max");
+        }
+        if self.t_vis_min > self.t_vis_max {
+            return bad("t_vis_min/t_vis_max");
+        }
+        Ok(())
+    }
+
+    /// The collision with equal spheres of reduced radius `r` (or a sphere of
+    /// radius `r` on a wall).
+    fn at_radius(&self, r: f64) -> CollisionParams {
+        let mut c = self.collision.clone();
+        if c.wall {
+            c.radius_1 = r;
+        } else {
+            c.radius_1 = 2.0 * r;
+            c.radius_2 = 2.0 * r;
+        }
+        c
+    }
+}
+
+/// Results of the three panels, kept so that a change of one parameter
+/// recomputes only the panels it touches.
+#[derive(Debug, Default, Clone)]
+pub struct Cache {
+    velocity: Option<(CollisionParams, f64, f64, usize, Panel)>,
+    radius: Option<(CollisionParams, f64, f64, usize, Panel)>,
+    sticking: Option<(CollisionParams, f64, f64, usize, f64, f64, usize, Panel)>,
+}
+
+#[derive(Debug, Clone)]
+struct Panel {
+    figure: Figure,
+    scalars: Vec<Scalar>,
+}
+
+/// The collision parameters with the velocity cleared (for cache keys of
+/// panels that do not depend on it).
+fn without_velocity(c: &CollisionParams) -> CollisionParams {
+    CollisionParams {
+        velocity: 0.0,
+        ..c.clone()
+    }
+}
+
+/// Runs `f` over `items` in parallel with progress and cancellation.
+fn par_map<T: Sync, R: Send>(
+    items: &[T],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+    f: impl Fn(&T) -> Result<R, SceneError> + Sync + Send,
+) -> Result<Vec<R>, SceneError> {
+    items
+        .par_iter()
+        .map(|x| {
+            progress.check()?;
+            let r = f(x)?;
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / total as f64);
+            Ok(r)
+        })
+        .collect()
+}
+
+/// Computes the scene, reusing panels of `cache` whose inputs did not change.
+pub fn compute(
+    p: &Params,
+    progress: &Progress,
+    cache: &mut Cache,
+) -> Result<SceneOutput, SceneError> {
+    p.check_ranges()?;
+    let key_c = without_velocity(&p.collision);
+    let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
+    let radii = logspace(p.r_min, p.r_max, p.n_radii);
+    let t_vis: Vec<f64> = logspace(
+        p.t_vis_min,
+        p.t_vis_max.max(p.t_vis_min * 1.000001),
+        p.n_t_vis.max(2),
+    )
+    .into_iter()
+    .take(p.n_t_vis)
+    .collect();
+    let need_v = !matches!(&cache.velocity, Some((c, a, b, n, _)) if *c == key_c && *a == p.v_min && *b == p.v_max && *n == p.n_velocities);
+    let need_r = !matches!(&cache.radius, Some((c, a, b, n, _)) if *c == p.collision && *a == p.r_min && *b == p.r_max && *n == p.n_radii);
+    let need_s = !matches!(&cache.sticking, Some((c, a, b, n, t0, t1, nt, _))
+        if *c == key_c && *a == p.r_min && *b == p.r_max && *n == p.n_radii && *t0 == p.t_vis_min && *t1 == p.t_vis_max && *nt == p.n_t_vis);
+    // Rough work units: a bisection costs ~20 collisions.
+    let total = usize::from(need_v) * (velocities.len() + 20)
+        + usize::from(need_r) * radii.len()
+        + usize::from(need_s) * radii.len() * t_vis.len() * 20;
+    let done = AtomicUsize::new(0);
+    let total = total.max(1);
+
+    if need_v {
+        let panel = velocity_panel(p, &velocities, progress, &done, total)?;
+        cache.velocity = Some((key_c.clone(), p.v_min, p.v_max, p.n_velocities, panel));
+    }
+    if need_r {
+        let panel = radius_panel(p, &radii, progress, &done, total)?;
+        cache.radius = Some((p.collision.clone(), p.r_min, p.r_max, p.n_radii, panel));
+    }
+    if need_s {
+        let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
+        cache.sticking = Some((
+            key_c,
+            p.r_min,
+            p.r_max,
+            p.n_radii,
+            p.t_vis_min,
+            p.t_vis_max,
+            p.n_t_vis,
+            panel,
+        ));
+    }
+    let mut out = SceneOutput::default();
+    let panels = [
+        cache.velocity.as_ref().map(|x| &x.4),
+        cache.radius.as_ref().map(|x| &x.4),
+        cache.sticking.as_ref().map(|x| &x.7),
+    ];
+    for panel in panels.into_iter().flatten() {
+        out.figures.push(panel.figure.clone());
+        out.scalars.extend(panel.scalars.iter().cloned());
+    }
+    if p.collision.plasticity {
+        out.notes
+            .push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+    }
+    Ok(out)
+}
+
+fn velocity_panel(
+    p: &Params,
+    velocities: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let setup = p.collision.setup();
+    let opts = p.collision.options();
+    let results = par_map(velocities, progress, done, total, |&v| {
+        Ok(restitution(&setup, v, &opts)?)
+    })?;
+    let v_s = sticking_velocity(&setup, &opts, 1e-4)?;
+    progress.check()?;
+    let pair = setup.pair;
+    let a = setup.dissipation_time();
+    let v_y = setup.yield_velocity();
+    let mut fig = Figure::new(
+        "restitution-velocity",
+        "Restitution against velocity",
+        Axis::log("impact velocity v", "m/s"),
+        Axis::linear("coefficient of restitution", ""),
+    )
+    .with(Series::new(
+        "e (model)",
+        results.iter().map(|r| [r.velocity, r.e]).collect(),
+        Style::Line,
+        0,
+    ))
+    .with(Series::new(
+        "e_JKR (2.24)",
+        velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(),
+        Style::Dashed,
+        1,
+    ))
+    .with(Series::new(
+        "e_D (2.26)",
+        velocities
+            .iter()
+            .map(|&v| [v, pair.e_viscous(a, v)])
+            .collect(),
+        Style::Dashed,
+        2,
+    ))
+    .with(Series::new(
+        "e_I (2.27)",
+        velocities
+            .iter()
+            .map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))])
+            .collect(),
+        Style::Dashed,
+        3,
+    ));
+    if p.collision.plasticity {
+        fig = fig.with(Series::new(
+            "e_P (2.29)",
+            velocities
+                .iter()
+                .map(|&v| [v, plasticity::e_plastic(v, v_y)])
+                .collect(),
+            Style::Dashed,
+            4,
+        ));
+    }
+    fig = fig.with(Series::new(
+        "sticking velocity v_s",
+        vec![[v_s, 0.0], [v_s, 1.0]],
+        Style::Dashed,
+        6,
+    ));
+    let e_max = results.iter().map(|r| r.e).fold(0.0, f64::max);
+    Ok(Panel {
+        figure: fig,
+        scalars: vec![
+            Scalar {
+                key: "v_stick",
+                label: "sticking velocity v_s (model)",
+                value: v_s,
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "v_c",
+                label: "JKR sticking velocity v_c (2.25)",
+                value: pair.jkr_sticking_velocity(),
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "v_y",
+                label: "yield velocity v_y (2.28)",
+                value: v_y,
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "e_max",
+                label: "largest e on the velocity grid",
+                value: e_max,
+                unit: "",
+            },
+        ],
+    })
+}
+
+fn radius_panel(
+    p: &Params,
+    radii: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let v = p.collision.velocity;
+    let rows = par_map(radii, progress, done, total, |&r| {
+        let c = p.at_radius(r);
+        let setup = c.setup();
+        let res = restitution(&setup, v, &c.options())?;
+        let pair = setup.pair;
+        Ok([
+            r,
+            res.e_adhesive,
+            e_independent(pair.e_jkr(v), pair.e_viscous(setup.dissipation_time(), v)),
+            pair.e_jkr(v),
+        ])
+    })?;
+    let fig = Figure::new(
+        "restitution-radius",
+        "Restitution against reduced radius",
+        Axis::log("reduced radius R", "µm"),
+        Axis::linear("coefficient of restitution", ""),
+    )
+    .with(Series::new(
+        "e_A (model)",
+        rows.iter().map(|r| [r[0] * 1e6, r[1]]).collect(),
+        Style::Line,
+        0,
+    ))
+    .with(Series::new(
+        "e_I (2.27)",
+        rows.iter().map(|r| [r[0] * 1e6, r[2]]).collect(),
+        Style::Dashed,
+        3,
+    ))
+    .with(Series::new(
+        "e_JKR (2.24)",
+        rows.iter().map(|r| [r[0] * 1e6, r[3]]).collect(),
+        Style::Dashed,
+        1,
+    ));
+    Ok(Panel {
+        figure: fig,
+        scalars: Vec::new(),
+    })
+}
+
+fn sticking_panel(
+    p: &Params,
+    radii: &[f64],
+    t_vis: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let jobs: Vec<(usize, f64)> = t_vis
+        .iter()
+        .enumerate()
+        .flat_map(|(i, _)| radii.iter().map(move |&r| (i, r)))
+        .collect();
+    let vs = par_map(&jobs, progress, done, total, |&(i, r)| {
+        let mut c = p.at_radius(r);
+        c.t_vis = t_vis[i];
+        let v = sticking_velocity(&c.setup(), &c.options(), 1e-3)?;
+        done.fetch_add(19, Ordering::Relaxed);
+        Ok(v)
+    })?;
+    let mut fig = Figure::new(
+        "sticking-velocity",
+        "Sticking velocity against reduced radius",
+        Axis::log("reduced radius R", "µm"),
+        Axis::log("sticking velocity", "m/s"),
+    );
+    for (i, tv) in t_vis.iter().enumerate() {
+        let pts = radii
+            .iter()
+            .enumerate()
+            .map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]])
+            .collect();
+        fig = fig.with(Series::new(
+            format!("T_vis = {tv:.0e} s"),
+            pts,
+            Style::Line,
+            i % 6,
+        ));
+    }
+    let jkr = radii
+        .iter()
+        .map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()])
+        .collect();
+    fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));
+    Ok(Panel {
+        figure: fig,
+        scalars: Vec::new(),
+    })
+}

@@ -138,8 +138,8 @@ pub fn show(
                     && let (Some(x), Some(y)) = (transform(p[0], xs), transform(p[1], ys))
                 {
                     plot_ui.points(
-                        Points::new("cursor", PlotPoints::from(vec![[x, y]]))
-                            .color(Color32::BLACK)
+                        Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
+                            .color(Color32::from_rgb(255, 200, 0))
                             .radius(5.0)
                             .shape(MarkerShape::Circle)
                             .filled(true),

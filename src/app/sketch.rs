@@ -41,7 +41,7 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
     };
     let scale = (left.height() as f64 * 0.45) / (r1 + r2);
     let cx = left.center().x;
-    let contact_y = left.min.y + (r1 * scale) as f32 + 0.05 * left.height();
+    let contact_y = left.min.y + (2.0 * r1 * scale) as f32 + 0.05 * left.height();
     let sphere = Color32::from_rgb(120, 160, 210);
     painter.circle(
         pos2(cx, contact_y - (r1 * scale) as f32),

@@ -11,7 +11,10 @@
 pub struct CrackLaw {
     /// Ratio of relaxed to instantaneous modulus k (dimensionless, 0 < k < 0.5).
     pub k: f64,
-    /// Use Greenwood's low-speed fits (2.17) for 0.29 < β < 3.7 (made for k = 0.02).
+    /// Use Greenwood's low-speed fits (2.17) for 0.29 < β < 3.7. They were
+    /// made for k = 0.02 and join the general law (2.16) within ~1 % there;
+    /// for other k they would not, and a jump in the crack speed traps the
+    /// contact on it, so they are applied only for 0.018 ≤ k ≤ 0.022.
     pub low_speed_fit: bool,
 }
 
@@ -33,21 +36,31 @@ impl CrackLaw {
         if !(beta > k && beta < 1.0 / k) {
             return None;
         }
-        if beta == 1.0 {
+        let fit = self.low_speed_fit && (0.018..=0.022).contains(&k);
+        if beta == 1.0 && fit {
             return Some((0.0, self.speed(1.0 - 1e-9).map_or(0.0, |s| s.1)));
         }
-        if self.low_speed_fit && beta > 0.29 && beta < 1.0 {
+        if fit && beta > 0.29 && beta < 1.0 {
             let x = 1.0 / beta - 1.0;
             let g = (0.1035 * x + 0.3421) * x.powf(1.116);
             let dgdx = 0.1035 * x.powf(1.116) + (0.1035 * x + 0.3421) * 1.116 * x.powf(0.116);
             return Some((g, -dgdx / (beta * beta)));
         }
-        if self.low_speed_fit && beta > 1.0 && beta < 3.7 {
+        if fit && beta > 1.0 && beta < 3.7 {
             let x = beta - 1.0;
             let g = -(0.2112 * x + 0.3939) * x.powf(1.1403);
             let dgdx = -(0.2112 * x.powf(1.1403) + (0.2112 * x + 0.3939) * 1.1403 * x.powf(0.1403));
             return Some((g, dgdx));
         }
+        if (beta - 1.0).abs() < BRIDGE {
+            return Some(self.bridge(beta));
+        }
+        self.general(beta)
+    }
+
+    /// Greenwood's general law (2.16), valid away from β = 1.
+    fn general(&self, beta: f64) -> Option<(f64, f64)> {
+        let k = self.k;
         if beta < 1.0 {
             let l = ((1.0 - k) / (1.0 - beta)).ln();
             let g = 0.15 / (beta * l);
@@ -60,7 +73,25 @@ impl CrackLaw {
             Some((g, dg))
         }
     }
+
+    /// Near β = 1 the general law has an infinite slope (and is inaccurate:
+    /// Greenwood gives the low-speed fits for that reason), which makes the
+    /// quasi-static limit needlessly stiff. Within |β − 1| < `BRIDGE` it is
+    /// replaced by the quadratic in u = 1 − β through g(1 ± BRIDGE) and 0 at
+    /// β = 1, which keeps the sign of ȧ equal to that of 1 − β.
+    fn bridge(&self, beta: f64) -> (f64, f64) {
+        let e = BRIDGE;
+        let g_minus = self.general(1.0 - e).map_or(0.0, |g| g.0);
+        let g_plus = self.general(1.0 + e).map_or(0.0, |g| g.0);
+        let s = (g_minus - g_plus) / (2.0 * e);
+        let c = (g_minus + g_plus) / (2.0 * e * e);
+        let u = 1.0 - beta;
+        (s * u + c * u * u, -(s + 2.0 * c * u))
+    }
 }
+
+/// Half-width of the window around β = 1 where the general law is bridged.
+const BRIDGE: f64 = 0.01;
 
 #[cfg(test)]
 mod tests {
@@ -108,6 +139,28 @@ mod tests {
                     "{law:?} β={b}: {num} vs {ana}"
                 );
             }
+        }
+    }
+
+    #[test]
+    fn bridge_keeps_the_sign_and_joins_the_general_law() {
+        let law = CrackLaw {
+            k: 0.05,
+            low_speed_fit: false,
+        };
+        assert_eq!(law.speed(1.0).expect("in").0, 0.0);
+        for i in 1..100 {
+            let u = 0.0101 * i as f64 / 100.0;
+            assert!(law.speed(1.0 - u).expect("in").0 > 0.0);
+            assert!(law.speed(1.0 + u).expect("in").0 < 0.0);
+        }
+        for b in [0.99, 1.01] {
+            let inside = law.speed(b + (1.0 - b) * 1e-9).expect("in").0;
+            let outside = law.speed(b - (1.0 - b) * 1e-9).expect("in").0;
+            assert!(
+                (inside - outside).abs() < 1e-6,
+                "{b}: {inside} vs {outside}"
+            );
         }
     }
 

@@ -152,7 +152,7 @@ impl CollisionParams {
                 "low_speed_fit",
                 "low-speed crack fit",
                 &mut self.low_speed_fit,
-                "use Greenwood's fits (2.17) near β = 1 (made for k = 0.02)",
+                "use Greenwood's fits (2.17) near β = 1 (made for k = 0.02; applied for k = 0.018–0.022)",
             ),
             Control::toggle(
                 "plasticity",

@@ -581,12 +581,11 @@ impl GrainscopeApp {
             .map(|c| (c.key, c.label))
             .collect();
         ui.horizontal(|ui| {
-            ui.label("Sweep");
             let current = keys
                 .iter()
                 .find(|k| k.0 == self.sweep.key)
                 .map_or("choose", |k| k.1);
-            egui::ComboBox::from_id_salt("sweep-key")
+            egui::ComboBox::from_label("sweep parameter")
                 .selected_text(current)
                 .show_ui(ui, |ui| {
                     for (k, l) in &keys {
@@ -789,21 +788,20 @@ impl GrainscopeApp {
                 ui.vertical(|ui| {
                     ui.label(egui::RichText::new("Contact sketch").strong());
                     sketch::show(ui, t, cursor_fraction, size);
-                    if let SceneParams::Hysteresis(p) = &mut self.session.params[self.session.scene]
-                    {
-                        ui.add(egui::Slider::new(&mut p.cursor, 0.0..=1.0).text("time cursor"));
-                    }
+                    ui.small("move the time cursor among the parameters");
                     ui.horizontal(|ui| {
-                        ui.label("export folder");
-                        ui.text_edit_singleline(&mut self.session.export_dir);
+                        let label = ui.label("export folder");
+                        ui.text_edit_singleline(&mut self.session.export_dir)
+                            .labelled_by(label.id);
                     });
                 });
             }
         });
         if trajectory.is_none() {
             ui.horizontal(|ui| {
-                ui.label("export folder");
-                ui.text_edit_singleline(&mut self.session.export_dir);
+                let label = ui.label("export folder");
+                ui.text_edit_singleline(&mut self.session.export_dir)
+                    .labelled_by(label.id);
             });
         }
         if let Some((fig, ext)) = export {

@@ -1,0 +1,139 @@
+//! Presets: every shipped preset loads, runs headless and round-trips; bad
+//! presets and values give errors that name the problem.
+
+use grainscope::preset::{Preset, PresetError, SHIPPED, resolve};
+use grainscope::scene::{self, ParamError, Progress, SceneParams};
+
+#[test]
+fn shipped_presets_match_the_presets_folder() {
+    let mut on_disk: Vec<String> =
+        std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/presets"))
+            .expect("presets folder")
+            .filter_map(|e| e.ok())
+            .map(|e| e.file_name().to_string_lossy().into_owned())
+            .filter(|n| n.ends_with(".ron"))
+            .collect();
+    on_disk.sort();
+    let mut shipped: Vec<String> = SHIPPED.iter().map(|(f, _)| f.to_string()).collect();
+    shipped.sort();
+    assert_eq!(on_disk, shipped);
+}
+
+#[test]
+fn every_shipped_preset_loads_runs_and_round_trips() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    for (file, text) in SHIPPED {
+        let preset = Preset::from_ron(text, file).unwrap_or_else(|e| panic!("{file}: {e}"));
+        let out = scene::compute(&preset.scene, &Progress::default())
+            .unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert!(!out.figures.is_empty(), "{file}");
+        assert!(out.scalars.iter().all(|s| !s.value.is_nan()), "{file}");
+        let path = dir.path().join(file);
+        preset.save(&path).expect("save");
+        let back = Preset::load(&path).expect("load");
+        assert_eq!(back, preset, "{file} round trip");
+    }
+}
+
+#[test]
+fn required_presets_reproduce_their_stories() {
+    let e = |name: &str| {
+        let p = resolve(name).expect(name);
+        scene::compute(&p.scene, &Progress::default()).expect(name)
+    };
+    let bounce = e("ice-bounce-8ms");
+    assert!((bounce.scalar("e").expect("e") - 0.66).abs() <= 0.02);
+    assert_eq!(e("ice-stick-2ms").scalar("sticks"), Some(1.0));
+    assert!((e("ice-quasistatic").scalar("e").expect("e") - 0.93).abs() <= 0.02);
+    let r = e("restitution-ice");
+    assert!(r.scalar("v_stick").expect("v_stick") > r.scalar("v_c").expect("v_c"));
+}
+
+#[test]
+fn old_presets_with_missing_fields_load_with_defaults() {
+    let p = Preset::from_ron(
+        "(scene: Hysteresis((collision: (velocity: 3.0))))",
+        "<text>",
+    )
+    .expect("loads");
+    match p.scene {
+        SceneParams::Hysteresis(h) => {
+            assert_eq!(h.collision.velocity, 3.0);
+            assert_eq!(h.collision.t_vis, 1e-11);
+        }
+        other => panic!("wrong scene {other:?}"),
+    }
+}
+
+#[test]
+fn unknown_keys_are_reported_with_their_location() {
+    let text = "(\n    scene: Hysteresis((\n        collision: (velocty: 3.0),\n    )),\n)";
+    match Preset::from_ron(text, "bad.ron") {
+        Err(PresetError::Syntax { line, message, .. }) => {
+            assert_eq!(line, 3, "{message}");
+            assert!(message.contains("velocty"), "{message}");
+        }
+        other => panic!("expected a syntax error, got {other:?}"),
+    }
+}
+
+#[test]
+fn malformed_and_out_of_range_presets_are_errors_not_panics() {
+    let cases = [
+        "",
+        "(",
+        "(scene: Nonsense(()))",
+        "(scene: Hysteresis((collision: (velocity: \"fast\"))))",
+        "(scene: Hysteresis((collision: (velocity: -1.0))))",
+        "(scene: Hysteresis((collision: (t_vis: 1.0))))",
+        "(scene: Restitution((n_velocities: 0)))",
+        "(scene: Adhesion((radius: inf)))",
+        "(scene: Hysteresis((collision: (projectile: (name: \"x\", youngs_modulus: -1.0, poisson_ratio: 0.3, density: 1.0, surface_energy: 1.0)))))",
+    ];
+    for text in cases {
+        let err = Preset::from_ron(text, "case.ron").expect_err(text);
+        let message = err.to_string();
+        assert!(message.starts_with("case.ron"), "{text}: {message}");
+    }
+}
+
+#[test]
+fn set_names_bad_keys_and_values_and_changes_nothing() {
+    let mut p = SceneParams::default_for("hysteresis").expect("scene");
+    let before = p.clone();
+    assert!(matches!(
+        p.set("nope", "1"),
+        Err(ParamError::UnknownKey { .. })
+    ));
+    assert!(matches!(
+        p.set("velocity", "abc"),
+        Err(ParamError::Parse { .. })
+    ));
+    assert!(matches!(
+        p.set("velocity", "1e9"),
+        Err(ParamError::OutOfRange { .. })
+    ));
+    assert!(matches!(
+        p.set("velocity", "NaN"),
+        Err(ParamError::OutOfRange { .. })
+    ));
+    assert_eq!(p, before);
+    p.set("velocity", "4").expect("valid");
+    p.set("projectile", "PSL").expect("material");
+    assert_ne!(p, before);
+}
+
+#[test]
+fn saving_to_an_unwritable_path_fails_and_keeps_the_old_file() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let preset = resolve("ice-bounce-8ms").expect("preset");
+    let err = preset
+        .save(&dir.path().join("missing-folder/x.ron"))
+        .expect_err("unwritable");
+    assert!(err.to_string().contains("missing-folder"), "{err}");
+    // An existing file is replaced only by a complete new one.
+    let path = dir.path().join("keep.ron");
+    std::fs::write(&path, "old").expect("write");
+    preset.save(&path).expect("save");
+    assert!(Preset::load(&path).is_ok());
+}

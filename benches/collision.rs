@@ -1,1 +1,114 @@
-fn main() {}
+//! Speed against error of the collision solver and the collision scenes.
+//!
+//! Run with `cargo bench --bench collision`. For each tolerance it prints the
+//! time per collision (median of repeated runs) and |e − e_ref|, where e_ref
+//! comes from a run at rtol = 1e-11; then the time of whole scenes.
+
+use grainscope::physics::collision::{Options, Setup, collide};
+use grainscope::scene::{self, Caches, Progress, SceneParams};
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+/// Median wall time of `f` over enough repetitions to fill ~0.3 s.
+fn time<T>(mut f: impl FnMut() -> T) -> Duration {
+    let start = Instant::now();
+    black_box(f());
+    let once = start.elapsed().max(Duration::from_nanos(100));
+    let reps = ((0.3 / once.as_secs_f64()) as usize).clamp(3, 2000);
+    let mut samples: Vec<Duration> = (0..reps)
+        .map(|_| {
+            let t = Instant::now();
+            black_box(f());
+            t.elapsed()
+        })
+        .collect();
+    samples.sort();
+    samples[samples.len() / 2]
+}
+
+fn solver_table(name: &str, setup: &Setup, v: f64) {
+    let e_ref = collide(
+        setup,
+        v,
+        &Options {
+            rtol: 1e-11,
+            ..Options::default()
+        },
+    )
+    .expect("reference")
+    .e_adhesive;
+    println!(
+        "\n{name}: v = {v} m/s, T_vis = {:e} s, e_ref = {e_ref:.10}",
+        setup.t_vis
+    );
+    println!(
+        "{:>8} {:>12} {:>8} {:>12}",
+        "rtol", "time [µs]", "steps", "|e - e_ref|"
+    );
+    for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9] {
+        let opts = Options {
+            rtol,
+            ..Options::default()
+        };
+        let c = collide(setup, v, &opts).expect("collision");
+        let t = time(|| collide(setup, v, &opts).expect("collision").e_adhesive);
+        println!(
+            "{rtol:>8.0e} {:>12.1} {:>8} {:>12.2e}",
+            t.as_secs_f64() * 1e6,
+            c.stats.accepted,
+            (c.e_adhesive - e_ref).abs()
+        );
+    }
+}
+
+fn main() {
+    let ice = Setup::reference_ice();
+    solver_table("reference ice collision", &ice, 8.0);
+    let mut hard = ice;
+    hard.t_vis = 1e-14;
+    solver_table("quasi-static hard case", &hard, 4.0);
+    let mut harder = ice;
+    harder.t_vis = 1e-15;
+    solver_table("quasi-static, T_vis = 1e-15 s", &harder, 4.0);
+    let mut viscous = ice;
+    viscous.t_vis = 1e-10;
+    solver_table("viscous, T_vis = 1e-10 s", &viscous, 100.0);
+
+    println!(
+        "\nscenes (default parameters, {} threads):",
+        rayon::current_num_threads()
+    );
+    let hysteresis = SceneParams::default_for("hysteresis").expect("scene");
+    let t = time(|| scene::compute(&hysteresis, &Progress::default()).expect("scene"));
+    println!(
+        "  hysteresis (one recorded collision):            {:>8.2} ms",
+        t.as_secs_f64() * 1e3
+    );
+    let restitution = SceneParams::default_for("restitution").expect("scene");
+    let t = time(|| scene::compute(&restitution, &Progress::default()).expect("scene"));
+    println!(
+        "  restitution, all three panels:                  {:>8.2} ms",
+        t.as_secs_f64() * 1e3
+    );
+    // Only e(v) (200 velocities) and v_s: the other panels come from the cache.
+    let mut caches = Caches::default();
+    scene::compute_cached(&restitution, &Progress::default(), &mut caches).expect("scene");
+    let mut flip = false;
+    let t = time(|| {
+        flip = !flip;
+        let mut p = restitution.clone();
+        p.set("v_min", if flip { "0.5" } else { "0.50001" })
+            .expect("valid");
+        scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene")
+    });
+    println!(
+        "  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms",
+        t.as_secs_f64() * 1e3
+    );
+    let adhesion = SceneParams::default_for("adhesion").expect("scene");
+    let t = time(|| scene::compute(&adhesion, &Progress::default()).expect("scene"));
+    println!(
+        "  adhesion basics:                                {:>8.2} ms",
+        t.as_secs_f64() * 1e3
+    );
+}

@@ -60,7 +60,7 @@ pub enum PresetError {
         /// File name or "<text>".
         origin: String,
         /// The range error.
-        source: ParamError,
+        source: Box<ParamError>,
     },
     /// The file could not be written.
     #[error(transparent)]
@@ -79,13 +79,10 @@ impl Preset {
             column: e.span.start.col,
             message: e.code.to_string(),
         })?;
-        preset
-            .scene
-            .validate()
-            .map_err(|source| PresetError::Invalid {
-                origin: origin.into(),
-                source,
-            })?;
+        preset.scene.validate().map_err(|e| PresetError::Invalid {
+            origin: origin.into(),
+            source: Box::new(e),
+        })?;
         Ok(preset)
     }
 

@@ -288,7 +288,7 @@ fn stability_sweep_over_documented_ranges() {
     // 1000 random parameter sets: T_vis 1e-15–1e-8 s, v 1e-3–1e3 m/s, R 10 nm–1 cm,
     // γ 1e-3–10 J/m², E 1–400 GPa, k 0.005–0.3, z₀ 0.1–1 nm.
     let mut rng = rand::rngs::StdRng::seed_from_u64(20151);
-    let mut log_uniform = |lo: f64, hi: f64, rng: &mut rand::rngs::StdRng| {
+    let log_uniform = |lo: f64, hi: f64, rng: &mut rand::rngs::StdRng| {
         (lo.ln() + rng.random::<f64>() * (hi.ln() - lo.ln())).exp()
     };
     let mut bounces = 0;

@@ -42,14 +42,16 @@ impl CrackLaw {
         }
         if fit && beta > 0.29 && beta < 1.0 {
             let x = 1.0 / beta - 1.0;
-            let g = (0.1035 * x + 0.3421) * x.powf(1.116);
-            let dgdx = 0.1035 * x.powf(1.116) + (0.1035 * x + 0.3421) * 1.116 * x.powf(0.116);
+            let p = x.powf(0.116);
+            let g = (0.1035 * x + 0.3421) * x * p;
+            let dgdx = 0.1035 * x * p + (0.1035 * x + 0.3421) * 1.116 * p;
             return Some((g, -dgdx / (beta * beta)));
         }
         if fit && beta > 1.0 && beta < 3.7 {
             let x = beta - 1.0;
-            let g = -(0.2112 * x + 0.3939) * x.powf(1.1403);
-            let dgdx = -(0.2112 * x.powf(1.1403) + (0.2112 * x + 0.3939) * 1.1403 * x.powf(0.1403));
+            let p = x.powf(0.1403);
+            let g = -(0.2112 * x + 0.3939) * x * p;
+            let dgdx = -(0.2112 * x * p + (0.2112 * x + 0.3939) * 1.1403 * p);
             return Some((g, dgdx));
         }
         if (beta - 1.0).abs() < BRIDGE {

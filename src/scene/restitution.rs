@@ -198,10 +198,13 @@ impl Params {
 /// recomputes only the panels it touches.
 #[derive(Debug, Default, Clone)]
 pub struct Cache {
-    velocity: Option<(CollisionParams, f64, f64, usize, Panel)>,
-    radius: Option<(CollisionParams, f64, f64, usize, Panel)>,
-    sticking: Option<(CollisionParams, f64, f64, usize, f64, f64, usize, Panel)>,
+    velocity: Option<(RangeKey, Panel)>,
+    radius: Option<(RangeKey, Panel)>,
+    sticking: Option<(RangeKey, (f64, f64, usize), Panel)>,
 }
+
+/// The inputs of a panel: collision parameters and a (low, high, count) range.
+type RangeKey = (CollisionParams, f64, f64, usize);
 
 #[derive(Debug, Clone)]
 struct Panel {
@@ -256,10 +259,16 @@ pub fn compute(
     .into_iter()
     .take(p.n_t_vis)
     .collect();
-    let need_v = !matches!(&cache.velocity, Some((c, a, b, n, _)) if *c == key_c && *a == p.v_min && *b == p.v_max && *n == p.n_velocities);
-    let need_r = !matches!(&cache.radius, Some((c, a, b, n, _)) if *c == p.collision && *a == p.r_min && *b == p.r_max && *n == p.n_radii);
-    let need_s = !matches!(&cache.sticking, Some((c, a, b, n, t0, t1, nt, _))
-        if *c == key_c && *a == p.r_min && *b == p.r_max && *n == p.n_radii && *t0 == p.t_vis_min && *t1 == p.t_vis_max && *nt == p.n_t_vis);
+    let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
+    let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
+    let key_s: RangeKey = (key_c, p.r_min, p.r_max, p.n_radii);
+    let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
+    let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
+    let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
+    let need_s = cache
+        .sticking
+        .as_ref()
+        .is_none_or(|(k, f, _)| *k != key_s || *f != family);
     // Rough work units: a bisection costs ~20 collisions.
     let total = usize::from(need_v) * (velocities.len() + 20)
         + usize::from(need_r) * radii.len()
@@ -269,30 +278,21 @@ pub fn compute(
 
     if need_v {
         let panel = velocity_panel(p, &velocities, progress, &done, total)?;
-        cache.velocity = Some((key_c.clone(), p.v_min, p.v_max, p.n_velocities, panel));
+        cache.velocity = Some((key_v, panel));
     }
     if need_r {
         let panel = radius_panel(p, &radii, progress, &done, total)?;
-        cache.radius = Some((p.collision.clone(), p.r_min, p.r_max, p.n_radii, panel));
+        cache.radius = Some((key_r, panel));
     }
     if need_s {
         let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
-        cache.sticking = Some((
-            key_c,
-            p.r_min,
-            p.r_max,
-            p.n_radii,
-            p.t_vis_min,
-            p.t_vis_max,
-            p.n_t_vis,
-            panel,
-        ));
+        cache.sticking = Some((key_s, family, panel));
     }
     let mut out = SceneOutput::default();
     let panels = [
-        cache.velocity.as_ref().map(|x| &x.4),
-        cache.radius.as_ref().map(|x| &x.4),
-        cache.sticking.as_ref().map(|x| &x.7),
+        cache.velocity.as_ref().map(|x| &x.1),
+        cache.radius.as_ref().map(|x| &x.1),
+        cache.sticking.as_ref().map(|x| &x.2),
     ];
     for panel in panels.into_iter().flatten() {
         out.figures.push(panel.figure.clone());
@@ -314,10 +314,16 @@ fn velocity_panel(
 ) -> Result<Panel, SceneError> {
     let setup = p.collision.setup();
     let opts = p.collision.options();
-    let results = par_map(velocities, progress, done, total, |&v| {
-        Ok(restitution(&setup, v, &opts)?)
-    })?;
-    let v_s = sticking_velocity(&setup, &opts, 1e-4)?;
+    // The bisection for v_s is sequential: run it beside the velocity sweep.
+    let (results, v_s) = rayon::join(
+        || {
+            par_map(velocities, progress, done, total, |&v| {
+                Ok(restitution(&setup, v, &opts)?)
+            })
+        },
+        || sticking_velocity(&setup, &opts, 1e-4),
+    );
+    let (results, v_s) = (results?, v_s?);
     progress.check()?;
     let pair = setup.pair;
     let a = setup.dissipation_time();

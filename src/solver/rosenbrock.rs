@@ -158,7 +158,7 @@ impl<const N: usize> Lu<N> {
                 }
             }
             let d = m[(piv, col)];
-            if !(d.abs() > 0.0) || !d.is_finite() {
+            if d == 0.0 || !d.is_finite() {
                 return None;
             }
             if piv != col {

@@ -1,0 +1,38 @@
+#!/usr/bin/env bash
+# Starts the real window under Xvfb with Mesa's software OpenGL, takes a
+# screenshot and checks that it is not blank.
+# Usage: .ci/smoke-window.sh PATH-TO-GRAINSCOPE [SCREENSHOT.png]
+set -euo pipefail
+bin=$1
+shot=${2:-$(mktemp -d)/grainscope-window.png}
+
+need=()
+command -v Xvfb >/dev/null || need+=(xvfb)
+command -v import >/dev/null || need+=(imagemagick)
+if [ ${#need[@]} -gt 0 ]; then
+    apt-get update -qq
+    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${need[@]}" libgl1-mesa-dri libegl1 >/dev/null
+fi
+
+home=$(mktemp -d)            # a fresh session, not the user's
+display=:$((90 + RANDOM % 50))
+Xvfb "$display" -screen 0 1440x920x24 >/dev/null 2>&1 &
+xvfb=$!
+trap 'kill $app $xvfb 2>/dev/null || true' EXIT
+sleep 2
+HOME=$home DISPLAY=$display LIBGL_ALWAYS_SOFTWARE=1 "$bin" >"$home/app.log" 2>&1 &
+app=$!
+sleep 10
+if ! kill -0 "$app" 2>/dev/null; then
+    echo "smoke test: the window exited early:" >&2
+    cat "$home/app.log" >&2
+    exit 1
+fi
+DISPLAY=$display import -window root "$shot"
+sd=$(identify -format '%[fx:standard_deviation]' "$shot")
+colors=$(identify -format '%k' "$shot")
+echo "smoke test: screenshot $shot, standard deviation $sd, $colors colours"
+awk -v sd="$sd" -v c="$colors" 'BEGIN { exit !(sd > 0.02 && c > 50) }' || {
+    echo "smoke test: the screenshot is blank" >&2
+    exit 1
+}

@@ -1,0 +1,77 @@
+//! Scene-level checks: caching never changes results, outputs are complete.
+
+use grainscope::scene::{self, Caches, Progress, SCENES, SceneParams};
+
+fn small_restitution() -> SceneParams {
+    let mut p = SceneParams::default_for("restitution").expect("scene");
+    for (k, v) in [("n_velocities", "24"), ("n_radii", "5"), ("n_t_vis", "2")] {
+        p.set(k, v).expect("valid");
+    }
+    p
+}
+
+#[test]
+fn cached_recomputation_equals_a_fresh_one() {
+    let mut caches = Caches::default();
+    let p1 = small_restitution();
+    scene::compute_cached(&p1, &Progress::default(), &mut caches).expect("first");
+    for (k, v) in [
+        ("v_min", "0.8"),
+        ("velocity", "20"),
+        ("t_vis_max", "1e-11"),
+        ("t_vis", "3e-12"),
+    ] {
+        let mut p2 = p1.clone();
+        p2.set(k, v).expect("valid");
+        let cached = scene::compute_cached(&p2, &Progress::default(), &mut caches).expect("cached");
+        let fresh = scene::compute(&p2, &Progress::default()).expect("fresh");
+        assert_eq!(cached, fresh, "after changing {k}");
+    }
+}
+
+#[test]
+fn cancelled_computation_reports_cancellation() {
+    let progress = Progress::default();
+    progress.cancel();
+    let err = scene::compute(&small_restitution(), &progress).expect_err("cancelled");
+    assert!(matches!(err, scene::SceneError::Cancelled));
+}
+
+#[test]
+fn every_scene_computes_with_defaults_and_documents_its_parameters() {
+    for info in SCENES {
+        let mut p = SceneParams::default_for(info.id).expect("scene");
+        let out = scene::compute(&p, &Progress::default()).expect(info.id);
+        assert!(
+            !out.figures.is_empty() && !out.scalars.is_empty(),
+            "{}",
+            info.id
+        );
+        for fig in &out.figures {
+            assert!(
+                fig.series.iter().any(|s| !s.points.is_empty()),
+                "{}: {}",
+                info.id,
+                fig.id
+            );
+        }
+        for c in p.controls() {
+            assert!(
+                !c.doc.is_empty() && !c.label.is_empty(),
+                "{}: {}",
+                info.id,
+                c.key
+            );
+            c.check().expect("defaults are valid");
+        }
+    }
+}
+
+#[test]
+fn inverted_ranges_are_rejected() {
+    let mut p = small_restitution();
+    p.set("v_min", "50").expect("in range");
+    p.set("v_max", "10").expect("in range");
+    let err = scene::compute(&p, &Progress::default()).expect_err("inverted");
+    assert!(err.to_string().contains("v_min"), "{err}");
+}

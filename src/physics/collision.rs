@@ -555,7 +555,9 @@ pub fn restitution(
 /// The sticking velocity v_s: the largest impact speed at which the spheres
 /// stick through adhesion and viscosity (e_A = 0), found by bracketing and
 /// bisection in log v to relative precision `rel`. Plasticity, which only acts
-/// far above v_s, is not part of the criterion. Searches 10⁻⁶–10⁴ m/s.
+/// far above v_s, is not part of the criterion. Searches 10⁻⁶–10⁴ m/s and
+/// returns infinity if the spheres still stick at 10⁴ m/s, zero if they
+/// still bounce at 10⁻⁶ m/s.
 pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64, PhysicsError> {
     setup.validate()?;
     let sticks = |v: f64| -> Result<bool, PhysicsError> {
@@ -579,7 +581,7 @@ pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64,
         loop {
             v *= 2.0;
             if v > v_max {
-                return Ok(v_max);
+                return Ok(f64::INFINITY);
             }
             if !sticks(v)? {
                 hi = v;
@@ -592,7 +594,7 @@ pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64,
         loop {
             v *= 0.5;
             if v < v_min {
-                return Ok(v_min);
+                return Ok(0.0);
             }
             if sticks(v)? {
                 lo = v;

@@ -210,6 +210,7 @@ type RangeKey = (CollisionParams, f64, f64, usize);
 struct Panel {
     figure: Figure,
     scalars: Vec<Scalar>,
+    notes: Vec<String>,
 }
 
 /// The collision parameters with the velocity cleared (for cache keys of
@@ -297,6 +298,7 @@ pub fn compute(
     for panel in panels.into_iter().flatten() {
         out.figures.push(panel.figure.clone());
         out.scalars.extend(panel.scalars.iter().cloned());
+        out.notes.extend(panel.notes.iter().cloned());
     }
     if p.collision.plasticity {
         out.notes
@@ -382,7 +384,12 @@ fn velocity_panel(
         6,
     ));
     let e_max = results.iter().map(|r| r.e).fold(0.0, f64::max);
+    let mut notes = Vec::new();
+    if v_s.is_infinite() {
+        notes.push("The spheres stick at every velocity up to 10⁴ m/s.".to_string());
+    }
     Ok(Panel {
+        notes,
         figure: fig,
         scalars: vec![
             Scalar {
@@ -399,7 +406,7 @@ fn velocity_panel(
             },
             Scalar {
                 key: "v_y",
-                label: "yield velocity v_y (2.28)",
+                label: "yield velocity v_y (2.28; inf without plasticity)",
                 value: v_y,
                 unit: "m s^-1",
             },
@@ -460,6 +467,7 @@ fn radius_panel(
     Ok(Panel {
         figure: fig,
         scalars: Vec::new(),
+        notes: Vec::new(),
     })
 }
 
@@ -507,8 +515,22 @@ fn sticking_panel(
         .map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()])
         .collect();
     fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));
+    let mut notes = Vec::new();
+    for (i, tv) in t_vis.iter().enumerate() {
+        let stuck = vs[i * radii.len()..(i + 1) * radii.len()]
+            .iter()
+            .filter(|v| v.is_infinite())
+            .count();
+        if stuck > 0 {
+            notes.push(format!(
+                "T_vis = {tv:.0e} s: at {stuck} of {} radii the spheres stick even at 10⁴ m/s (not drawn).",
+                radii.len()
+            ));
+        }
+    }
     Ok(Panel {
         figure: fig,
         scalars: Vec::new(),
+        notes,
     })
 }

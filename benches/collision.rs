@@ -27,29 +27,11 @@ fn time<T>(mut f: impl FnMut() -> T) -> Duration {
 }
 
 fn solver_table(name: &str, setup: &Setup, v: f64) {
-    let e_ref = collide(
-        setup,
-        v,
-        &Options {
-            rtol: 1e-11,
-            ..Options::default()
-        },
-    )
-    .expect("reference")
-    .e_adhesive;
-    println!(
-        "\n{name}: v = {v} m/s, T_vis = {:e} s, e_ref = {e_ref:.10}",
-        setup.t_vis
-    );
-    println!(
-        "{:>8} {:>12} {:>8} {:>12}",
-        "rtol", "time [µs]", "steps", "|e - e_ref|"
-    );
+    let e_ref = collide(setup, v, &Options { rtol: 1e-11, ..Options::default() }).expect("reference").e_adhesive;
+    println!("\n{name}: v = {v} m/s, T_vis = {:e} s, e_ref = {e_ref:.10}", setup.t_vis);
+    println!("{:>8} {:>12} {:>8} {:>12}", "rtol", "time [µs]", "steps", "|e - e_ref|");
     for rtol in [1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9] {
-        let opts = Options {
-            rtol,
-            ..Options::default()
-        };
+        let opts = Options { rtol, ..Options::default() };
         let c = collide(setup, v, &opts).expect("collision");
         let t = time(|| collide(setup, v, &opts).expect("collision").e_adhesive);
         println!(
@@ -74,22 +56,13 @@ fn main() {
     viscous.t_vis = 1e-10;
     solver_table("viscous, T_vis = 1e-10 s", &viscous, 100.0);
 
-    println!(
-        "\nscenes (default parameters, {} threads):",
-        rayon::current_num_threads()
-    );
+    println!("\nscenes (default parameters, {} threads):", rayon::current_num_threads());
     let hysteresis = SceneParams::default_for("hysteresis").expect("scene");
     let t = time(|| scene::compute(&hysteresis, &Progress::default()).expect("scene"));
-    println!(
-        "  hysteresis (one recorded collision):            {:>8.2} ms",
-        t.as_secs_f64() * 1e3
-    );
+    println!("  hysteresis (one recorded collision):            {:>8.2} ms", t.as_secs_f64() * 1e3);
     let restitution = SceneParams::default_for("restitution").expect("scene");
     let t = time(|| scene::compute(&restitution, &Progress::default()).expect("scene"));
-    println!(
-        "  restitution, all three panels:                  {:>8.2} ms",
-        t.as_secs_f64() * 1e3
-    );
+    println!("  restitution, all three panels:                  {:>8.2} ms", t.as_secs_f64() * 1e3);
     // Only e(v) (200 velocities) and v_s: the other panels come from the cache.
     let mut caches = Caches::default();
     scene::compute_cached(&restitution, &Progress::default(), &mut caches).expect("scene");
@@ -97,18 +70,11 @@ fn main() {
     let t = time(|| {
         flip = !flip;
         let mut p = restitution.clone();
-        p.set("v_min", if flip { "0.5" } else { "0.50001" })
-            .expect("valid");
+        p.set("v_min", if flip { "0.5" } else { "0.50001" }).expect("valid");
         scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene")
     });
-    println!(
-        "  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms",
-        t.as_secs_f64() * 1e3
-    );
+    println!("  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms", t.as_secs_f64() * 1e3);
     let adhesion = SceneParams::default_for("adhesion").expect("scene");
     let t = time(|| scene::compute(&adhesion, &Progress::default()).expect("scene"));
-    println!(
-        "  adhesion basics:                                {:>8.2} ms",
-        t.as_secs_f64() * 1e3
-    );
+    println!("  adhesion basics:                                {:>8.2} ms", t.as_secs_f64() * 1e3);
 }

@@ -48,6 +48,36 @@ pub enum Command {
         /// Scene id (hysteresis, restitution, adhesion).
         scene: String,
     },
+    /// Fit γ, T_vis and Y of the restitution model to measurements (CSV with
+    /// 'velocity [m/s]', 'restitution' and optional 'uncertainty' columns).
+    Fit {
+        /// The measurements.
+        data: PathBuf,
+        /// Projectile and target material of Table 2.2, e.g. `AF,mica`.
+        #[arg(long, value_delimiter = ',', num_args = 1..=2, required = true)]
+        materials: Vec<String>,
+        /// `wall` (sphere on a flat target) or `spheres` (two spheres).
+        #[arg(long, value_enum)]
+        geometry: Geometry,
+        /// Projectile radius, m.
+        #[arg(long)]
+        radius: f64,
+        /// Target sphere radius, m (default: equal to --radius).
+        #[arg(long)]
+        radius2: Option<f64>,
+        /// Grid points per fitted parameter.
+        #[arg(long, default_value_t = 16)]
+        grid: usize,
+        /// Override a fit parameter by its documented key (see `grainscope params fit`).
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Write the fit figures (CSV, SVG, PNG) into this folder.
+        #[arg(long, value_name = "DIR")]
+        out: Option<PathBuf>,
+        /// Print the result as one JSON object.
+        #[arg(long)]
+        json: bool,
+    },
     /// Regenerate the thesis figures covered here and the comparison table.
     Reproduce {
         /// Output folder.
@@ -56,16 +86,20 @@ pub enum Command {
     },
 }
 
+/// Geometry of a fitted experiment.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
+pub enum Geometry {
+    /// A sphere on a flat target.
+    Wall,
+    /// Two spheres.
+    Spheres,
+}
+
 /// Applies `key=value` overrides to a preset.
 pub fn apply_sets(preset: &mut Preset, sets: &[String]) -> Result<()> {
     for s in sets {
-        let (k, v) = s
-            .split_once('=')
-            .with_context(|| format!("--set expects KEY=VALUE, got '{s}'"))?;
-        preset
-            .scene
-            .set(k.trim(), v)
-            .with_context(|| format!("--set {s}"))?;
+        let (k, v) = s.split_once('=').with_context(|| format!("--set expects KEY=VALUE, got '{s}'"))?;
+        preset.scene.set(k.trim(), v).with_context(|| format!("--set {s}"))?;
     }
     Ok(())
 }
@@ -73,8 +107,7 @@ pub fn apply_sets(preset: &mut Preset, sets: &[String]) -> Result<()> {
 /// Writes every figure of `out` as CSV, SVG and PNG into `dir`, plus the
 /// scalars as JSON. Returns the files written.
 pub fn write_outputs(out: &SceneOutput, dir: &Path) -> Result<Vec<PathBuf>> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create folder {}", dir.display()))?;
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let mut files = Vec::new();
     for fig in &out.figures {
         let csv = dir.join(format!("{}.csv", fig.id));
@@ -105,12 +138,7 @@ fn print_scalars(out: &SceneOutput) {
 pub fn run(command: Command) -> Result<()> {
     match command {
         Command::Gui { .. } => bail!("the window is opened by the binary, not the harness"),
-        Command::Run {
-            preset,
-            set,
-            out,
-            json,
-        } => {
+        Command::Run { preset, set, out, json } => {
             let mut p = resolve(&preset)?;
             apply_sets(&mut p, &set)?;
             let result = scene::compute(&p.scene, &Progress::default())?;
@@ -144,13 +172,90 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
+        Command::Fit { data, materials, geometry, radius, radius2, grid, set, out, json } => {
+            fit_command(&data, &materials, geometry, radius, radius2, grid, &set, out.as_deref(), json)
+        }
         Command::Reproduce { out } => reproduce(&out),
     }
 }
 
+#[allow(clippy::too_many_arguments)]
+fn fit_command(
+    data: &Path,
+    materials: &[String],
+    geometry: Geometry,
+    radius: f64,
+    radius2: Option<f64>,
+    grid: usize,
+    sets: &[String],
+    out: Option<&Path>,
+    json: bool,
+) -> Result<()> {
+    use crate::physics::experiments::Bounded;
+    use crate::physics::material::Material;
+    let measurements = crate::measurements::load(data)?;
+    let material = |name: &str| {
+        Material::named(name).cloned().with_context(|| {
+            let names: Vec<&str> = crate::physics::material::materials().iter().map(|m| m.name.as_str()).collect();
+            format!("unknown material '{name}' (Table 2.2: {})", names.join(", "))
+        })
+    };
+    let projectile = material(&materials[0])?;
+    let target = material(materials.get(1).unwrap_or(&materials[0]))?;
+    let mut preset = Preset {
+        title: "fit".into(),
+        description: String::new(),
+        scene: scene::SceneParams::Fit(scene::fit::Params {
+            data: measurements.clone(),
+            projectile,
+            target,
+            wall: geometry == Geometry::Wall,
+            ..Default::default()
+        }),
+    };
+    let mut overrides = vec![
+        format!("radius_1={radius}"),
+        format!("radius_2={}", radius2.unwrap_or(radius)),
+        format!("n_gamma={grid}"),
+        format!("n_t_vis={grid}"),
+        format!("n_y={grid}"),
+    ];
+    overrides.extend(sets.iter().cloned());
+    apply_sets(&mut preset, &overrides)?;
+    preset.scene.validate()?;
+    let scene::SceneParams::Fit(params) = &preset.scene else { bail!("internal: not a fit scene") };
+    let progress = Progress::default();
+    let fit = scene::fit::run_fit(params, &measurements, &progress)?;
+    let describe = |b: &Bounded, best: f64| match *b {
+        Bounded::Value { best, plus, minus } => {
+            serde_json::json!({"best": best, "low": best - minus, "high": best + plus, "kind": "value"})
+        }
+        Bounded::Above(x) => serde_json::json!({"best": best, "low": x, "high": null, "kind": "lower limit"}),
+        Bounded::Below(x) => serde_json::json!({"best": best, "low": null, "high": x, "kind": "upper limit"}),
+    };
+    let result = serde_json::json!({
+        "gamma": describe(&fit.ranges[0], fit.best[0]),
+        "t_vis": describe(&fit.ranges[1], fit.best[1]),
+        "yield_strength": describe(&fit.ranges[2], fit.best[2]),
+        "chi2": fit.chi2_min,
+        "collisions": fit.collisions,
+        "points": measurements.len(),
+        "units": {"gamma": "J m^-2", "t_vis": "s", "yield_strength": "Pa"},
+    });
+    if let Some(dir) = out {
+        let output = scene::compute(&preset.scene, &progress)?;
+        write_outputs(&output, dir)?;
+    }
+    if json {
+        println!("{}", serde_json::to_string(&result)?);
+    } else {
+        println!("{}", serde_json::to_string_pretty(&result)?);
+    }
+    Ok(())
+}
+
 fn reproduce(dir: &Path) -> Result<()> {
-    std::fs::create_dir_all(dir)
-        .with_context(|| format!("cannot create folder {}", dir.display()))?;
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let checks = crate::reproduce::chapter2()?;
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;

@@ -10,6 +10,7 @@
 pub mod app;
 pub mod cli;
 pub mod figure;
+pub mod measurements;
 pub mod physics;
 pub mod preset;
 pub mod reproduce;

@@ -79,33 +79,23 @@ impl Preset {
             column: e.span.start.col,
             message: e.code.to_string(),
         })?;
-        preset.scene.validate().map_err(|e| PresetError::Invalid {
-            origin: origin.into(),
-            source: Box::new(e),
-        })?;
+        preset.scene.validate().map_err(|e| PresetError::Invalid { origin: origin.into(), source: Box::new(e) })?;
         Ok(preset)
     }
 
     /// Reads a preset file.
     pub fn load(path: &Path) -> Result<Preset, PresetError> {
-        let text = std::fs::read_to_string(path).map_err(|source| PresetError::Read {
-            path: path.into(),
-            source,
-        })?;
+        let text = std::fs::read_to_string(path).map_err(|source| PresetError::Read { path: path.into(), source })?;
         Preset::from_ron(&text, &path.display().to_string())
     }
 
     /// The preset as RON text, preceded by comments documenting every key
     /// with its unit and range.
     pub fn to_ron(&self) -> Result<String, PresetError> {
-        let body =
-            ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default().struct_names(false))
-                .map_err(|e| PresetError::Serialise(e.to_string()))?;
+        let body = ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default().struct_names(false))
+            .map_err(|e| PresetError::Serialise(e.to_string()))?;
         let mut scene = self.scene.clone();
-        let mut out = format!(
-            "// grainscope preset, scene '{}'. All values in SI units.\n",
-            scene.info().id
-        );
+        let mut out = format!("// grainscope preset, scene '{}'. All values in SI units.\n", scene.info().id);
         for c in scene.controls() {
             out.push_str("//   ");
             out.push_str(&c.doc_line());
@@ -124,31 +114,16 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 6] = [
-    (
-        "ice-bounce-8ms.ron",
-        include_str!("../presets/ice-bounce-8ms.ron"),
-    ),
-    (
-        "ice-stick-2ms.ron",
-        include_str!("../presets/ice-stick-2ms.ron"),
-    ),
-    (
-        "ice-quasistatic.ron",
-        include_str!("../presets/ice-quasistatic.ron"),
-    ),
-    (
-        "restitution-ice.ron",
-        include_str!("../presets/restitution-ice.ron"),
-    ),
-    (
-        "sticking-velocity-ice.ron",
-        include_str!("../presets/sticking-velocity-ice.ron"),
-    ),
-    (
-        "adhesion-ice-monomers.ron",
-        include_str!("../presets/adhesion-ice-monomers.ron"),
-    ),
+pub const SHIPPED: [(&str, &str); 9] = [
+    ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
+    ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
+    ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
+    ("restitution-ice.ron", include_str!("../presets/restitution-ice.ron")),
+    ("sticking-velocity-ice.ron", include_str!("../presets/sticking-velocity-ice.ron")),
+    ("adhesion-ice-monomers.ron", include_str!("../presets/adhesion-ice-monomers.ron")),
+    ("experiments-fig-2-11.ron", include_str!("../presets/experiments-fig-2-11.ron")),
+    ("material-parameters.ron", include_str!("../presets/material-parameters.ron")),
+    ("fit-wall-mica-synthetic.ron", include_str!("../presets/fit-wall-mica-synthetic.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or
@@ -160,10 +135,7 @@ pub fn resolve(name: &str) -> Result<Preset, PresetError> {
     }
     let stem = name.trim_end_matches(".ron");
     let stem = stem.rsplit('/').next().unwrap_or(stem);
-    match SHIPPED
-        .iter()
-        .find(|(file, _)| file.trim_end_matches(".ron") == stem)
-    {
+    match SHIPPED.iter().find(|(file, _)| file.trim_end_matches(".ron") == stem) {
         Some((file, text)) => Preset::from_ron(text, file),
         None => Err(PresetError::Read {
             path: path.into(),

@@ -54,22 +54,8 @@ pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
         slip: false,
     };
     Ok(vec![
-        check(
-            "Eq. 2.22",
-            "Hertz time t_H at 8 m/s [s]",
-            1.4e-8,
-            c8.hertz_time,
-            0.05 * 1.4e-8,
-            "",
-        ),
-        check(
-            "Fig. 2.2",
-            "contact time t_c at 8 m/s [s]",
-            1.7e-8,
-            c8.contact_time,
-            0.05 * 1.7e-8,
-            "",
-        ),
+        check("Eq. 2.22", "Hertz time t_H at 8 m/s [s]", 1.4e-8, c8.hertz_time, 0.05 * 1.4e-8, ""),
+        check("Fig. 2.2", "contact time t_c at 8 m/s [s]", 1.7e-8, c8.contact_time, 0.05 * 1.7e-8, ""),
         check("Sect. 2.3.3", "e_A at 8 m/s", 0.66, c8.e_adhesive, 0.02, ""),
         check(
             "Sect. 2.3.3",
@@ -90,47 +76,12 @@ pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
                 "slip: (2.27) gives 0.96; the printed 0.92 is its square",
             )
         },
-        check(
-            "App. 2.C, Fig. 2.9",
-            "fraction dissipated at the crack",
-            0.37,
-            c8.crack_fraction(),
-            0.02,
-            "",
-        ),
-        check(
-            "App. 2.C, Fig. 2.9",
-            "fraction dissipated in the bulk",
-            0.19,
-            c8.bulk_fraction(),
-            0.02,
-            "",
-        ),
-        check(
-            "Fig. 2.3",
-            "2 m/s sticks (1 = yes)",
-            1.0,
-            f64::from(u8::from(c2.outcome == Outcome::Stick)),
-            0.0,
-            "",
-        ),
-        check(
-            "Eq. 2.25",
-            "JKR sticking velocity v_c [m/s]",
-            1.46,
-            p.jkr_sticking_velocity(),
-            0.02,
-            "",
-        ),
+        check("App. 2.C, Fig. 2.9", "fraction dissipated at the crack", 0.37, c8.crack_fraction(), 0.02, ""),
+        check("App. 2.C, Fig. 2.9", "fraction dissipated in the bulk", 0.19, c8.bulk_fraction(), 0.02, ""),
+        check("Fig. 2.3", "2 m/s sticks (1 = yes)", 1.0, f64::from(u8::from(c2.outcome == Outcome::Stick)), 0.0, ""),
+        check("Eq. 2.25", "JKR sticking velocity v_c [m/s]", 1.46, p.jkr_sticking_velocity(), 0.02, ""),
         check("Eq. 2.24", "e_JKR at 4 m/s", 0.93, p.e_jkr(4.0), 0.02, ""),
-        check(
-            "App. 2.A",
-            "e at 4 m/s, T_vis = 1e-14 s",
-            0.93,
-            c4q.e_adhesive,
-            0.02,
-            "quasi-static hard case",
-        ),
+        check("App. 2.A", "e at 4 m/s, T_vis = 1e-14 s", 0.93, c4q.e_adhesive, 0.02, "quasi-static hard case"),
     ])
 }
 
@@ -159,22 +110,17 @@ pub fn markdown(checks: &[Check]) -> String {
     }
     let passed = checks.iter().filter(|c| c.pass()).count();
     let slips = checks.iter().filter(|c| !c.pass() && c.slip).count();
-    s.push_str(&format!("\n{passed} of {} within tolerance; {slips} differ through a known slip of the printed text.\n", checks.len()));
+    s.push_str(&format!(
+        "\n{passed} of {} within tolerance; {slips} differ through a known slip of the printed text.\n",
+        checks.len()
+    ));
     s
 }
 
 /// The checks as CSV.
 pub fn csv(checks: &[Check]) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record([
-        "figure",
-        "quantity",
-        "thesis",
-        "ours",
-        "tolerance",
-        "pass",
-        "note",
-    ])?;
+    w.write_record(["figure", "quantity", "thesis", "ours", "tolerance", "pass", "note"])?;
     for c in checks {
         w.write_record([
             c.figure,

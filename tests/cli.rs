@@ -3,20 +3,13 @@
 use std::process::Command;
 
 fn grainscope(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_grainscope"))
-        .args(args)
-        .output()
-        .expect("runs")
+    Command::new(env!("CARGO_BIN_EXE_grainscope")).args(args).output().expect("runs")
 }
 
 #[test]
 fn run_json_prints_the_scalars() {
     let out = grainscope(&["run", "ice-bounce-8ms", "--json"]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("one JSON object");
     let e = v["e"].as_f64().expect("e");
     assert!((e - 0.66).abs() <= 0.02);
@@ -36,17 +29,8 @@ fn out_writes_csv_svg_png() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path().to_str().expect("utf8");
     let out = grainscope(&["run", "presets/adhesion-ice-monomers.ron", "--out", d]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
-    for f in [
-        "collision-regimes.csv",
-        "collision-regimes.svg",
-        "collision-regimes.png",
-        "scalars.json",
-    ] {
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    for f in ["collision-regimes.csv", "collision-regimes.svg", "collision-regimes.png", "scalars.json"] {
         assert!(dir.path().join(f).exists(), "{f}");
     }
 }
@@ -81,17 +65,9 @@ fn reproduce_writes_the_table() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path().to_str().expect("utf8");
     let out = grainscope(&["reproduce", "--out", d]);
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
-    );
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let md = std::fs::read_to_string(dir.path().join("reproduce.md")).expect("md");
     assert!(md.contains("| Fig. 2.2 |"));
     assert!(dir.path().join("reproduce.csv").exists());
-    assert!(
-        dir.path()
-            .join("restitution-ice/restitution-velocity.png")
-            .exists()
-    );
+    assert!(dir.path().join("restitution-ice/restitution-velocity.png").exists());
 }

@@ -1,9 +1,7 @@
 //! Physics of head-on collisions (thesis ch. 2): published numbers, exact
 //! limits, conservation and stability over the documented ranges.
 
-use grainscope::physics::collision::{
-    Options, Outcome, Setup, collide, restitution, sticking_velocity,
-};
+use grainscope::physics::collision::{Options, Outcome, Setup, collide, restitution, sticking_velocity};
 use grainscope::physics::contact::e_independent;
 use grainscope::physics::plasticity::{e_plastic, yield_velocity};
 use rand::{Rng, SeedableRng};
@@ -22,31 +20,11 @@ fn reference_bounce_at_8_m_per_s_matches_the_thesis() {
     assert_eq!(c.outcome, Outcome::Bounce);
     // e_A = 0.66 (Sect. 2.3.3), t_c ≈ 1.7e-8 s and t_H = 1.4e-8 s (Sect. 2.3.1),
     // 37 % / 19 % dissipated at the crack / in the bulk (App. 2.C).
-    assert!(
-        (c.e_adhesive - 0.66).abs() <= 0.02,
-        "e_A = {}",
-        c.e_adhesive
-    );
-    assert!(
-        (c.contact_time / 1.7e-8 - 1.0).abs() <= 0.05,
-        "t_c = {}",
-        c.contact_time
-    );
-    assert!(
-        (c.hertz_time / 1.4e-8 - 1.0).abs() <= 0.05,
-        "t_H = {}",
-        c.hertz_time
-    );
-    assert!(
-        (c.crack_fraction() - 0.37).abs() <= 0.02,
-        "crack {}",
-        c.crack_fraction()
-    );
-    assert!(
-        (c.bulk_fraction() - 0.19).abs() <= 0.02,
-        "bulk {}",
-        c.bulk_fraction()
-    );
+    assert!((c.e_adhesive - 0.66).abs() <= 0.02, "e_A = {}", c.e_adhesive);
+    assert!((c.contact_time / 1.7e-8 - 1.0).abs() <= 0.05, "t_c = {}", c.contact_time);
+    assert!((c.hertz_time / 1.4e-8 - 1.0).abs() <= 0.05, "t_H = {}", c.hertz_time);
+    assert!((c.crack_fraction() - 0.37).abs() <= 0.02, "crack {}", c.crack_fraction());
+    assert!((c.bulk_fraction() - 0.19).abs() <= 0.02, "bulk {}", c.bulk_fraction());
 }
 
 #[test]
@@ -64,26 +42,13 @@ fn independent_estimate_as_printed() {
 #[test]
 fn two_meters_per_second_sticks_and_spirals_into_jkr_equilibrium() {
     let s = ice();
-    let c = collide(
-        &s,
-        2.0,
-        &Options {
-            follow_after_stick: 40.0,
-            record: true,
-            ..opts()
-        },
-    )
-    .expect("collides");
+    let c = collide(&s, 2.0, &Options { follow_after_stick: 40.0, record: true, ..opts() }).expect("collides");
     assert_eq!(c.outcome, Outcome::Stick);
     assert!(c.resolved);
     // After 40 Hertz times the contact sits near the JKR equilibrium.
     let last = c.samples.last().expect("samples");
     let a_eq = s.pair.jkr_equilibrium_radius();
-    assert!(
-        (last.radius / a_eq - 1.0).abs() < 0.05,
-        "a = {} vs a_eq = {a_eq}",
-        last.radius
-    );
+    assert!((last.radius / a_eq - 1.0).abs() < 0.05, "a = {} vs a_eq = {a_eq}", last.radius);
     assert!(last.elastic_force.abs() < 0.1 * s.pair.pull_off_force());
 }
 
@@ -101,11 +66,7 @@ fn jkr_sticking_velocity_and_quasi_static_limit() {
     // Deeper in the quasi-static limit the result approaches e_JKR.
     q.t_vis = 1e-15;
     let c = collide(&q, 4.0, &opts()).expect("collides");
-    assert!(
-        (c.e_adhesive - s.pair.e_jkr(4.0)).abs() < 0.01,
-        "e = {}",
-        c.e_adhesive
-    );
+    assert!((c.e_adhesive - s.pair.e_jkr(4.0)).abs() < 0.01, "e = {}", c.e_adhesive);
 }
 
 #[test]
@@ -128,47 +89,21 @@ fn without_adhesion_and_viscosity_the_collision_is_hertzian() {
 #[test]
 fn energy_bookkeeping_closes() {
     let s = ice();
-    for (v, tv) in [
-        (8.0, 1e-11),
-        (2.0, 1e-11),
-        (4.0, 1e-14),
-        (30.0, 1e-9),
-        (0.5, 1e-12),
-    ] {
+    for (v, tv) in [(8.0, 1e-11), (2.0, 1e-11), (4.0, 1e-14), (30.0, 1e-9), (0.5, 1e-12)] {
         let mut q = s;
         q.t_vis = tv;
-        let c = collide(
-            &q,
-            v,
-            &Options {
-                rtol: 1e-9,
-                follow_after_stick: 5.0,
-                record: true,
-                ..opts()
-            },
-        )
-        .expect("collides");
-        assert!(
-            c.energy_error < 1e-6,
-            "v = {v}, T_vis = {tv}: {}",
-            c.energy_error
-        );
+        let c =
+            collide(&q, v, &Options { rtol: 1e-9, follow_after_stick: 5.0, record: true, ..opts() }).expect("collides");
+        assert!(c.energy_error < 1e-6, "v = {v}, T_vis = {tv}: {}", c.energy_error);
         // Recomputed from the recorded energies, too.
         let e0 = c.samples[0].total_energy();
-        let worst = c
-            .samples
-            .iter()
-            .map(|x| (x.total_energy() - e0).abs())
-            .fold(0.0, f64::max)
-            / c.initial_kinetic;
+        let worst = c.samples.iter().map(|x| (x.total_energy() - e0).abs()).fold(0.0, f64::max) / c.initial_kinetic;
         assert!(worst < 1e-6, "{worst}");
         // Dissipation never decreases.
-        assert!(c.samples.windows(2).all(|w| w[1].crack_dissipated >= w[0].crack_dissipated - 1e-12 * c.initial_kinetic));
         assert!(
-            c.samples
-                .windows(2)
-                .all(|w| w[1].bulk_dissipated >= w[0].bulk_dissipated - 1e-12 * c.initial_kinetic)
+            c.samples.windows(2).all(|w| w[1].crack_dissipated >= w[0].crack_dissipated - 1e-12 * c.initial_kinetic)
         );
+        assert!(c.samples.windows(2).all(|w| w[1].bulk_dissipated >= w[0].bulk_dissipated - 1e-12 * c.initial_kinetic));
     }
 }
 
@@ -188,9 +123,7 @@ fn plastic_restitution_is_continuous_at_the_yield_velocity() {
 /// interval with the largest jump is refined 64-fold; the largest step inside
 /// it must be a small fraction of the original jump.
 fn assert_continuous(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize, what: &str) -> Vec<f64> {
-    let xs: Vec<f64> = (0..=n)
-        .map(|i| lo * (hi / lo).powf(i as f64 / n as f64))
-        .collect();
+    let xs: Vec<f64> = (0..=n).map(|i| lo * (hi / lo).powf(i as f64 / n as f64)).collect();
     let ys: Vec<f64> = xs.iter().map(|&x| f(x)).collect();
     let (worst, jump) = ys
         .windows(2)
@@ -200,17 +133,9 @@ fn assert_continuous(f: impl Fn(f64) -> f64, lo: f64, hi: f64, n: usize, what: &
         .expect("grid");
     if jump > 1e-3 {
         let (a, b) = (xs[worst], xs[worst + 1]);
-        let fine: Vec<f64> = (0..=64)
-            .map(|i| f(a * (b / a).powf(i as f64 / 64.0)))
-            .collect();
-        let inner = fine
-            .windows(2)
-            .map(|w| (w[1] - w[0]).abs())
-            .fold(0.0, f64::max);
-        assert!(
-            inner < jump / 8.0,
-            "{what}: jump {jump} between {a:e} and {b:e} persists ({inner}) under refinement"
-        );
+        let fine: Vec<f64> = (0..=64).map(|i| f(a * (b / a).powf(i as f64 / 64.0))).collect();
+        let inner = fine.windows(2).map(|w| (w[1] - w[0]).abs()).fold(0.0, f64::max);
+        assert!(inner < jump / 8.0, "{what}: jump {jump} between {a:e} and {b:e} persists ({inner}) under refinement");
     }
     ys
 }
@@ -226,27 +151,19 @@ fn restitution_is_continuous_in_relaxation_time() {
     };
     let e = assert_continuous(e_of, 1e-15, 1e-11, 40, "e(T_vis)");
     assert!(e.iter().all(|&x| x > 0.0));
-    assert!(
-        e.windows(2).all(|w| w[1] <= w[0] + 1e-4),
-        "e decreases with T_vis: {e:?}"
-    );
+    assert!(e.windows(2).all(|w| w[1] <= w[0] + 1e-4), "e decreases with T_vis: {e:?}");
 }
 
 #[test]
 fn restitution_is_continuous_in_velocity_above_sticking() {
     let s = ice();
     let v_s = sticking_velocity(&s, &opts(), 1e-5).expect("v_s");
-    assert!(
-        v_s > s.pair.jkr_sticking_velocity(),
-        "viscosity raises the sticking velocity: {v_s}"
-    );
+    assert!(v_s > s.pair.jkr_sticking_velocity(), "viscosity raises the sticking velocity: {v_s}");
     let e_of = |v: f64| collide(&s, v, &opts()).expect("collides").e_adhesive;
     let e = assert_continuous(e_of, 1.01 * v_s, 1e3, 60, "e(v)");
     assert!(e.iter().all(|&x| x > 0.0 && x < 1.0));
     // Just above v_s the restitution is small: e is continuous through sticking.
-    let just = collide(&s, v_s * 1.0001, &opts())
-        .expect("collides")
-        .e_adhesive;
+    let just = collide(&s, v_s * 1.0001, &opts()).expect("collides").e_adhesive;
     assert!(just < 0.05, "{just}");
 }
 
@@ -266,20 +183,8 @@ fn default_tolerance_gives_restitution_to_1e5() {
         s.pair.radius = r;
         s.pair.mass = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * (2.0 * r).powi(3) / 2.0;
         let e = collide(&s, v, &opts()).expect("collides").e_adhesive;
-        let e_ref = collide(
-            &s,
-            v,
-            &Options {
-                rtol: 1e-9,
-                ..opts()
-            },
-        )
-        .expect("collides")
-        .e_adhesive;
-        assert!(
-            (e - e_ref).abs() <= 1e-5,
-            "v={v} T_vis={tv} R={r}: {e} vs {e_ref}"
-        );
+        let e_ref = collide(&s, v, &Options { rtol: 1e-9, ..opts() }).expect("collides").e_adhesive;
+        assert!((e - e_ref).abs() <= 1e-5, "v={v} T_vis={tv} R={r}: {e} vs {e_ref}");
     }
 }
 
@@ -288,9 +193,8 @@ fn stability_sweep_over_documented_ranges() {
     // 1000 random parameter sets: T_vis 1e-15–1e-8 s, v 1e-3–1e3 m/s, R 10 nm–1 cm,
     // γ 1e-3–10 J/m², E 1–400 GPa, k 0.005–0.3, z₀ 0.1–1 nm.
     let mut rng = rand::rngs::StdRng::seed_from_u64(20151);
-    let log_uniform = |lo: f64, hi: f64, rng: &mut rand::rngs::StdRng| {
-        (lo.ln() + rng.random::<f64>() * (hi.ln() - lo.ln())).exp()
-    };
+    let log_uniform =
+        |lo: f64, hi: f64, rng: &mut rand::rngs::StdRng| (lo.ln() + rng.random::<f64>() * (hi.ln() - lo.ln())).exp();
     let mut bounces = 0;
     for i in 0..1000 {
         let mut s = ice();
@@ -305,17 +209,11 @@ fn stability_sweep_over_documented_ranges() {
         s.z0 = 1e-10 + rng.random::<f64>() * 9e-10;
         s.crack.k = log_uniform(0.005, 0.3, &mut rng);
         s.crack.low_speed_fit = rng.random::<bool>();
-        s.yield_strength = rng
-            .random::<bool>()
-            .then(|| log_uniform(1e5, 1e11, &mut rng));
+        s.yield_strength = rng.random::<bool>().then(|| log_uniform(1e5, 1e11, &mut rng));
         let v = log_uniform(1e-3, 1e3, &mut rng);
-        let res =
-            restitution(&s, v, &opts()).unwrap_or_else(|e| panic!("set {i}: {e} ({s:?}, v = {v})"));
+        let res = restitution(&s, v, &opts()).unwrap_or_else(|e| panic!("set {i}: {e} ({s:?}, v = {v})"));
         for x in [res.e, res.e_adhesive, res.e_plastic] {
-            assert!(
-                x.is_finite() && (0.0..=1.0).contains(&x),
-                "set {i}: {res:?} ({s:?}, v = {v})"
-            );
+            assert!(x.is_finite() && (0.0..=1.0).contains(&x), "set {i}: {res:?} ({s:?}, v = {v})");
         }
         bounces += usize::from(res.e_adhesive > 0.0);
     }
@@ -326,10 +224,7 @@ fn stability_sweep_over_documented_ranges() {
 #[test]
 fn sphere_on_wall_uses_the_projectile_as_reduced_body() {
     use grainscope::scene::collision_params::CollisionParams;
-    let p = CollisionParams {
-        wall: true,
-        ..CollisionParams::default()
-    };
+    let p = CollisionParams { wall: true, ..CollisionParams::default() };
     assert_eq!(p.reduced_radius(), p.radius_1);
     let m1 = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * p.radius_1.powi(3);
     assert!((p.reduced_mass() / m1 - 1.0).abs() < 1e-12);

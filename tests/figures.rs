@@ -1,45 +1,20 @@
 //! Figure export: CSV with units in the header, SVG and PNG from the same
 //! description, atomic writes.
 
-use grainscope::figure::{
-    Axis, Figure, Series, Style, csv_bytes, png_bytes, svg_string, write_png,
-};
+use grainscope::figure::{Axis, Figure, Series, Style, csv_bytes, png_bytes, svg_string, write_png};
 
 fn figure() -> Figure {
-    Figure::new(
-        "test",
-        "Test figure",
-        Axis::log("impact velocity v", "m/s"),
-        Axis::linear("restitution", ""),
-    )
-    .with(Series::new(
-        "model",
-        vec![[1.0, 0.1], [10.0, 0.5], [100.0, 0.9]],
-        Style::Line,
-        0,
-    ))
-    .with(Series::new(
-        "reference",
-        vec![[1.0, 0.2], [100.0, 1.0]],
-        Style::Dashed,
-        1,
-    ))
-    .with(Series::new(
-        "point",
-        vec![[3.0, 0.4], [-1.0, 0.5]],
-        Style::Marker,
-        2,
-    ))
+    Figure::new("test", "Test figure", Axis::log("impact velocity v", "m/s"), Axis::linear("restitution", ""))
+        .with(Series::new("model", vec![[1.0, 0.1], [10.0, 0.5], [100.0, 0.9]], Style::Line, 0))
+        .with(Series::new("reference", vec![[1.0, 0.2], [100.0, 1.0]], Style::Dashed, 1))
+        .with(Series::new("point", vec![[3.0, 0.4], [-1.0, 0.5]], Style::Marker, 2))
 }
 
 #[test]
 fn csv_header_names_quantities_and_units() {
     let text = String::from_utf8(csv_bytes(&figure()).expect("csv")).expect("utf8");
     let mut lines = text.lines();
-    assert_eq!(
-        lines.next(),
-        Some("series,impact velocity v [m/s],restitution")
-    );
+    assert_eq!(lines.next(), Some("series,impact velocity v [m/s],restitution"));
     assert_eq!(text.lines().count(), 1 + 3 + 2 + 2);
     assert!(text.contains("model,1e1,5e-1"));
 }

@@ -6,13 +6,12 @@ use grainscope::scene::{self, ParamError, Progress, SceneParams};
 
 #[test]
 fn shipped_presets_match_the_presets_folder() {
-    let mut on_disk: Vec<String> =
-        std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/presets"))
-            .expect("presets folder")
-            .filter_map(|e| e.ok())
-            .map(|e| e.file_name().to_string_lossy().into_owned())
-            .filter(|n| n.ends_with(".ron"))
-            .collect();
+    let mut on_disk: Vec<String> = std::fs::read_dir(concat!(env!("CARGO_MANIFEST_DIR"), "/presets"))
+        .expect("presets folder")
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| n.ends_with(".ron"))
+        .collect();
     on_disk.sort();
     let mut shipped: Vec<String> = SHIPPED.iter().map(|(f, _)| f.to_string()).collect();
     shipped.sort();
@@ -24,8 +23,7 @@ fn every_shipped_preset_loads_runs_and_round_trips() {
     let dir = tempfile::tempdir().expect("tempdir");
     for (file, text) in SHIPPED {
         let preset = Preset::from_ron(text, file).unwrap_or_else(|e| panic!("{file}: {e}"));
-        let out = scene::compute(&preset.scene, &Progress::default())
-            .unwrap_or_else(|e| panic!("{file}: {e}"));
+        let out = scene::compute(&preset.scene, &Progress::default()).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(!out.figures.is_empty(), "{file}");
         assert!(out.scalars.iter().all(|s| !s.value.is_nan()), "{file}");
         let path = dir.path().join(file);
@@ -51,11 +49,7 @@ fn required_presets_reproduce_their_stories() {
 
 #[test]
 fn old_presets_with_missing_fields_load_with_defaults() {
-    let p = Preset::from_ron(
-        "(scene: Hysteresis((collision: (velocity: 3.0))))",
-        "<text>",
-    )
-    .expect("loads");
+    let p = Preset::from_ron("(scene: Hysteresis((collision: (velocity: 3.0))))", "<text>").expect("loads");
     match p.scene {
         SceneParams::Hysteresis(h) => {
             assert_eq!(h.collision.velocity, 3.0);
@@ -101,22 +95,10 @@ fn malformed_and_out_of_range_presets_are_errors_not_panics() {
 fn set_names_bad_keys_and_values_and_changes_nothing() {
     let mut p = SceneParams::default_for("hysteresis").expect("scene");
     let before = p.clone();
-    assert!(matches!(
-        p.set("nope", "1"),
-        Err(ParamError::UnknownKey { .. })
-    ));
-    assert!(matches!(
-        p.set("velocity", "abc"),
-        Err(ParamError::Parse { .. })
-    ));
-    assert!(matches!(
-        p.set("velocity", "1e9"),
-        Err(ParamError::OutOfRange { .. })
-    ));
-    assert!(matches!(
-        p.set("velocity", "NaN"),
-        Err(ParamError::OutOfRange { .. })
-    ));
+    assert!(matches!(p.set("nope", "1"), Err(ParamError::UnknownKey { .. })));
+    assert!(matches!(p.set("velocity", "abc"), Err(ParamError::Parse { .. })));
+    assert!(matches!(p.set("velocity", "1e9"), Err(ParamError::OutOfRange { .. })));
+    assert!(matches!(p.set("velocity", "NaN"), Err(ParamError::OutOfRange { .. })));
     assert_eq!(p, before);
     p.set("velocity", "4").expect("valid");
     p.set("projectile", "PSL").expect("material");
@@ -127,9 +109,7 @@ fn set_names_bad_keys_and_values_and_changes_nothing() {
 fn saving_to_an_unwritable_path_fails_and_keeps_the_old_file() {
     let dir = tempfile::tempdir().expect("tempdir");
     let preset = resolve("ice-bounce-8ms").expect("preset");
-    let err = preset
-        .save(&dir.path().join("missing-folder/x.ron"))
-        .expect_err("unwritable");
+    let err = preset.save(&dir.path().join("missing-folder/x.ron")).expect_err("unwritable");
     assert!(err.to_string().contains("missing-folder"), "{err}");
     // An existing file is replaced only by a complete new one.
     let path = dir.path().join("keep.ron");

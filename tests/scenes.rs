@@ -15,12 +15,7 @@ fn cached_recomputation_equals_a_fresh_one() {
     let mut caches = Caches::default();
     let p1 = small_restitution();
     scene::compute_cached(&p1, &Progress::default(), &mut caches).expect("first");
-    for (k, v) in [
-        ("v_min", "0.8"),
-        ("velocity", "20"),
-        ("t_vis_max", "1e-11"),
-        ("t_vis", "3e-12"),
-    ] {
+    for (k, v) in [("v_min", "0.8"), ("velocity", "20"), ("t_vis_max", "1e-11"), ("t_vis", "3e-12")] {
         let mut p2 = p1.clone();
         p2.set(k, v).expect("valid");
         let cached = scene::compute_cached(&p2, &Progress::default(), &mut caches).expect("cached");
@@ -42,26 +37,12 @@ fn every_scene_computes_with_defaults_and_documents_its_parameters() {
     for info in SCENES {
         let mut p = SceneParams::default_for(info.id).expect("scene");
         let out = scene::compute(&p, &Progress::default()).expect(info.id);
-        assert!(
-            !out.figures.is_empty() && !out.scalars.is_empty(),
-            "{}",
-            info.id
-        );
+        assert!(!out.figures.is_empty() && !out.scalars.is_empty(), "{}", info.id);
         for fig in &out.figures {
-            assert!(
-                fig.series.iter().any(|s| !s.points.is_empty()),
-                "{}: {}",
-                info.id,
-                fig.id
-            );
+            assert!(fig.series.iter().any(|s| !s.points.is_empty()), "{}: {}", info.id, fig.id);
         }
         for c in p.controls() {
-            assert!(
-                !c.doc.is_empty() && !c.label.is_empty(),
-                "{}: {}",
-                info.id,
-                c.key
-            );
+            assert!(!c.doc.is_empty() && !c.label.is_empty(), "{}: {}", info.id, c.key);
             c.check().expect("defaults are valid");
         }
     }

@@ -18,16 +18,14 @@ fn moving_the_velocity_slider_changes_the_shown_restitution() {
     h.run();
     // Default scene: the reference ice collision at 8 m/s, e = 0.657.
     h.get_by_label_contains("e = 0.65");
-    h.get_by_role_and_label(Role::Slider, "impact velocity v")
-        .set_value_accesskit(4.0);
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(4.0);
     h.run();
     assert!(h.query_by_label_contains("e = 0.65").is_none());
     h.get_by_label_contains("e = 0.22");
     let e = h.state().output().and_then(|o| o.scalar("e")).expect("e");
     assert!((e - 0.222).abs() < 0.002, "{e}");
     // Slow enough to stick.
-    h.get_by_role_and_label(Role::Slider, "impact velocity v")
-        .set_value_accesskit(1.0);
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(1.0);
     h.run();
     h.get_by_label_contains("(sticks)");
 }
@@ -37,8 +35,7 @@ fn a_styling_control_does_not_recompute() {
     let mut h = harness();
     h.run();
     let before = h.state().output().map(|o| o as *const _);
-    h.get_by_role_and_label(Role::Slider, "time cursor")
-        .set_value_accesskit(0.8);
+    h.get_by_role_and_label(Role::Slider, "time cursor").set_value_accesskit(0.8);
     h.run();
     let after = h.state().output().map(|o| o as *const _);
     assert_eq!(before, after, "the output was recomputed for a cursor move");
@@ -50,20 +47,11 @@ fn switching_scene_and_pinning_keeps_the_app_alive() {
     h.run();
     h.get_by_label("Adhesive contact basics").click();
     h.run();
-    assert!(
-        h.query_all_by_label_contains("Regime of this aggregate collision")
-            .next()
-            .is_some()
-    );
+    assert!(h.query_all_by_label_contains("Regime of this aggregate collision").next().is_some());
     h.get_by_label("Pin curves").click();
     h.run();
     assert_eq!(h.state().session.pins.len(), 1);
-    h.get_by_role_and_label(Role::Slider, "monomer radius r₀")
-        .set_value_accesskit(1.0);
+    h.get_by_role_and_label(Role::Slider, "monomer radius r₀").set_value_accesskit(1.0);
     h.run();
-    assert!(
-        h.query_all_by_label_contains("pinned: monomer radius r₀")
-            .next()
-            .is_some()
-    );
+    assert!(h.query_all_by_label_contains("pinned: monomer radius r₀").next().is_some());
 }

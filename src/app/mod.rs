@@ -10,9 +10,7 @@ pub use worker::Worker;
 
 use crate::figure::{self, Figure, Series, Style};
 use crate::preset::{Preset, resolve};
-use crate::scene::{
-    self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams,
-};
+use crate::scene::{self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, Sender, channel};
@@ -74,20 +72,20 @@ pub struct Session {
     pub export_dir: String,
     /// Path typed for loading and saving presets.
     pub preset_path: String,
+    /// Path typed for importing measurements.
+    pub data_path: String,
 }
 
 impl Default for Session {
     fn default() -> Self {
         Session {
             scene: 0,
-            params: SCENES
-                .iter()
-                .filter_map(|s| SceneParams::default_for(s.id))
-                .collect(),
+            params: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
             pins: Vec::new(),
             lecture: false,
             export_dir: "exports".into(),
             preset_path: "presets/my-preset.ron".into(),
+            data_path: "assets/examples/wall-mica-synthetic.csv".into(),
         }
     }
 }
@@ -97,11 +95,7 @@ impl Session {
     fn repaired(mut self) -> Session {
         let fresh = Session::default();
         if self.params.len() != fresh.params.len()
-            || self
-                .params
-                .iter()
-                .zip(&fresh.params)
-                .any(|(a, b)| a.info().id != b.info().id || a.validate().is_err())
+            || self.params.iter().zip(&fresh.params).any(|(a, b)| a.info().id != b.info().id || a.validate().is_err())
         {
             self.params = fresh.params;
             self.pins.clear();
@@ -124,6 +118,7 @@ enum Dialog {
     Open(Option<PathBuf>),
     Save(Option<PathBuf>),
     Export(Option<PathBuf>, Figure),
+    ImportData(Option<PathBuf>),
 }
 
 /// Settings of a parameter sweep.
@@ -168,12 +163,7 @@ impl GrainscopeApp {
             worker: Worker::new(move || ctx.request_repaint()),
             caches: Arc::new(Mutex::new(Caches::default())),
             dialogs: channel(),
-            sweep: Sweep {
-                key: "velocity".into(),
-                from: 1.0,
-                to: 10.0,
-                steps: 5,
-            },
+            sweep: Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 },
             lecture_applied: None,
         }
     }
@@ -201,6 +191,24 @@ impl GrainscopeApp {
             self.session.params[i] = preset.scene;
             self.status = format!("loaded preset '{}' from {origin}", preset.title);
             self.error = None;
+        }
+    }
+
+    /// Loads measurements from a CSV file into the fit scene and opens it.
+    /// A rejected file changes nothing.
+    pub fn import_data(&mut self, path: &Path) {
+        match crate::measurements::load(path) {
+            Ok(data) => {
+                if let Some(i) = SCENES.iter().position(|s| s.id == "fit")
+                    && let SceneParams::Fit(p) = &mut self.session.params[i]
+                {
+                    self.status = format!("imported {} measurements from {}", data.len(), path.display());
+                    p.data = data;
+                    self.session.scene = i;
+                    self.error = None;
+                }
+            }
+            Err(e) => self.error = Some(format!("{}: {e} (nothing imported)", path.display())),
         }
     }
 
@@ -258,12 +266,7 @@ impl GrainscopeApp {
                 self.outputs[i] = Some(Arc::new(o));
                 self.error = None;
             }
-            Err(e) => {
-                self.error = Some(format!(
-                    "{}: {e} (showing the last good result)",
-                    SCENES[i].title
-                ))
-            }
+            Err(e) => self.error = Some(format!("{}: {e} (showing the last good result)", SCENES[i].title)),
         }
     }
 
@@ -284,21 +287,22 @@ impl GrainscopeApp {
                 Dialog::Open(Some(p)) => self.load_preset_file(&p),
                 Dialog::Save(Some(p)) => self.save_preset_file(&p),
                 Dialog::Export(Some(p), fig) => self.export(&fig, &p),
-                Dialog::Open(None) | Dialog::Save(None) | Dialog::Export(None, _) => {
-                    self.status = "no file chosen (cancelled, or no file dialog on this desktop: type a path instead)".into();
+                Dialog::ImportData(Some(p)) => self.import_data(&p),
+                Dialog::Open(None) | Dialog::Save(None) | Dialog::Export(None, _) | Dialog::ImportData(None) => {
+                    self.status =
+                        "no file chosen (cancelled, or no file dialog on this desktop: type a path instead)".into();
                 }
             }
         }
         let dropped: Vec<PathBuf> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path().to_path_buf())
-                .filter(|p| !p.as_os_str().is_empty())
-                .collect()
+            i.raw.dropped_files.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect()
         });
         for p in dropped {
-            self.load_preset_file(&p);
+            if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv")) {
+                self.import_data(&p);
+            } else {
+                self.load_preset_file(&p);
+            }
         }
         if self.worker.busy() {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
@@ -306,20 +310,13 @@ impl GrainscopeApp {
     }
 
     fn export(&mut self, fig: &Figure, path: &Path) {
-        let ext = path
-            .extension()
-            .and_then(|e| e.to_str())
-            .unwrap_or("")
-            .to_ascii_lowercase();
+        let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
         let result = match ext.as_str() {
             "png" => figure::write_png(fig, path, crate::cli::FIGURE_SIZE),
             "svg" => figure::write_svg(fig, path, crate::cli::FIGURE_SIZE),
             "csv" => figure::write_csv(fig, path),
             _ => {
-                self.error = Some(format!(
-                    "cannot export to {}: use a .png, .svg or .csv file name",
-                    path.display()
-                ));
+                self.error = Some(format!("cannot export to {}: use a .png, .svg or .csv file name", path.display()));
                 return;
             }
         };
@@ -351,12 +348,9 @@ impl GrainscopeApp {
         self.apply_lecture(&ctx);
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
-        egui::Panel::left("controls")
-            .resizable(true)
-            .default_size(360.0)
-            .show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
-            });
+        egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
+            egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
+        });
         self.request();
         egui::CentralPanel::default().show(ui, |ui| self.figures(ui));
     }
@@ -370,11 +364,17 @@ impl GrainscopeApp {
             }
             if ui.button("Save preset…").clicked() {
                 self.spawn_dialog(|| {
-                    Dialog::Save(rfd::FileDialog::new().add_filter("preset", &["ron"]).set_file_name("preset.ron").save_file())
+                    Dialog::Save(
+                        rfd::FileDialog::new().add_filter("preset", &["ron"]).set_file_name("preset.ron").save_file(),
+                    )
                 });
             }
-            ui.add(egui::TextEdit::singleline(&mut self.session.preset_path).desired_width(220.0).hint_text("preset path"))
-                .on_hover_text("path for Load/Save when no file dialog is available; presets can also be dropped on the window");
+            ui.add(
+                egui::TextEdit::singleline(&mut self.session.preset_path).desired_width(220.0).hint_text("preset path"),
+            )
+            .on_hover_text(
+                "path for Load/Save when no file dialog is available; presets can also be dropped on the window",
+            );
             if ui.button("Load").clicked() {
                 let p = PathBuf::from(&self.session.preset_path);
                 self.load_preset_file(&p);
@@ -401,11 +401,7 @@ impl GrainscopeApp {
     fn status_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             if self.worker.busy() {
-                ui.add(
-                    egui::ProgressBar::new(self.worker.progress() as f32)
-                        .desired_width(160.0)
-                        .show_percentage(),
-                );
+                ui.add(egui::ProgressBar::new(self.worker.progress() as f32).desired_width(160.0).show_percentage());
                 if ui.button("Cancel").clicked() {
                     self.worker.cancel();
                     self.stale = false;
@@ -424,21 +420,16 @@ impl GrainscopeApp {
     fn side_panel(&mut self, ui: &mut egui::Ui) {
         ui.label(egui::RichText::new("Scenes").strong());
         for (i, s) in SCENES.iter().enumerate() {
-            if ui
-                .selectable_label(self.session.scene == i, s.title)
-                .clicked()
-            {
+            if ui.selectable_label(self.session.scene == i, s.title).clicked() {
                 self.session.scene = i;
             }
         }
         ui.separator();
         let info = self.params().info();
-        egui::CollapsingHeader::new("What this scene shows")
-            .default_open(false)
-            .show(ui, |ui| {
-                ui.label(info.explanation);
-                ui.small(format!("Thesis: {}", info.source));
-            });
+        egui::CollapsingHeader::new("What this scene shows").default_open(false).show(ui, |ui| {
+            ui.label(info.explanation);
+            ui.small(format!("Thesis: {}", info.source));
+        });
         self.headline(ui);
         ui.separator();
         ui.label(egui::RichText::new("Parameters").strong());
@@ -452,10 +443,7 @@ impl GrainscopeApp {
     fn headline(&self, ui: &mut egui::Ui) {
         let Some(out) = self.output() else { return };
         let text = match (out.scalar("e"), out.scalar("sticks"), out.scalar("v_stick")) {
-            (Some(e), Some(s), _) => format!(
-                "e = {e:.4} ({})",
-                if s > 0.5 { "sticks" } else { "bounces" }
-            ),
+            (Some(e), Some(s), _) => format!("e = {e:.4} ({})", if s > 0.5 { "sticks" } else { "bounces" }),
             (_, _, Some(v)) => format!("v_stick = {} m/s", figure::tick_label(v)),
             _ => out.notes.first().cloned().unwrap_or_default(),
         };
@@ -465,68 +453,90 @@ impl GrainscopeApp {
     fn controls(&mut self, ui: &mut egui::Ui) {
         let mut material_changed = false;
         let scene = self.session.scene;
+        if let SceneParams::Fit(p) = &mut self.session.params[scene] {
+            let n = p.data.len();
+            ui.horizontal(|ui| {
+                ui.label(if n == 0 {
+                    "data: synthetic example".to_string()
+                } else {
+                    format!("data: {n} measurements")
+                });
+                if n > 0 && ui.button("Clear data").clicked() {
+                    p.data.clear();
+                }
+            });
+            let mut import = false;
+            ui.horizontal(|ui| {
+                import = ui
+                    .button("Import data…")
+                    .on_hover_text(
+                        "CSV: 'velocity [m/s]', 'restitution', optional 'uncertainty'; or drop a .csv on the window",
+                    )
+                    .clicked();
+                let label = ui.label("or path");
+                ui.text_edit_singleline(&mut self.session.data_path).labelled_by(label.id);
+                if ui.button("Load data").clicked() {
+                    let path = PathBuf::from(&self.session.data_path);
+                    self.import_data(&path);
+                }
+            });
+            if import {
+                self.spawn_dialog(|| {
+                    Dialog::ImportData(rfd::FileDialog::new().add_filter("measurements", &["csv"]).pick_file())
+                });
+            }
+        }
         {
             let params = &mut self.session.params[scene];
             let mut controls = params.controls();
-            egui::Grid::new("controls")
-                .num_columns(1)
-                .striped(false)
-                .show(ui, |ui| {
-                    for c in controls.iter_mut() {
-                        let (label, unit, doc) = (c.label, c.unit, c.doc);
-                        match &mut c.kind {
-                            ControlKind::Number {
-                                value,
-                                min,
-                                max,
-                                log,
-                                display_scale,
-                            } => {
-                                let mut shown = **value * *display_scale;
-                                let (lo, hi) = (*min * *display_scale, *max * *display_scale);
-                                let mut slider = egui::Slider::new(&mut shown, lo..=hi)
-                                    .logarithmic(*log)
-                                    .text(label);
-                                if !unit.is_empty() {
-                                    slider = slider.suffix(format!(" {unit}"));
-                                }
-                                if *log {
-                                    slider = slider.custom_formatter(|v, _| figure::tick_label(v));
-                                }
-                                if ui.add(slider).on_hover_text(doc).changed() && shown.is_finite()
-                                {
-                                    **value = (shown / *display_scale).clamp(*min, *max);
-                                }
+            egui::Grid::new("controls").num_columns(1).striped(false).show(ui, |ui| {
+                for c in controls.iter_mut() {
+                    let (label, unit, doc) = (c.label, c.unit, c.doc);
+                    match &mut c.kind {
+                        ControlKind::Number { value, min, max, log, display_scale } => {
+                            let mut shown = **value * *display_scale;
+                            let (lo, hi) = (*min * *display_scale, *max * *display_scale);
+                            let mut slider = egui::Slider::new(&mut shown, lo..=hi).logarithmic(*log).text(label);
+                            if !unit.is_empty() {
+                                slider = slider.suffix(format!(" {unit}"));
                             }
-                            ControlKind::Count { value, min, max } => {
-                                ui.add(egui::Slider::new(*value, *min..=*max).text(label))
-                                    .on_hover_text(doc);
+                            if *log {
+                                slider = slider.custom_formatter(|v, _| figure::tick_label(v));
                             }
-                            ControlKind::Toggle(v) => {
-                                ui.checkbox(v, label).on_hover_text(doc);
-                            }
-                            ControlKind::Material(m) => {
-                                egui::ComboBox::from_label(label)
-                                    .selected_text(m.name.clone())
-                                    .show_ui(ui, |ui| {
-                                        for candidate in crate::physics::material::materials() {
-                                            if ui
-                                                .selectable_label(
-                                                    m.name == candidate.name,
-                                                    &candidate.name,
-                                                )
-                                                .clicked()
-                                            {
-                                                **m = candidate.clone();
-                                                material_changed = true;
-                                            }
-                                        }
-                                    });
+                            if ui.add(slider).on_hover_text(doc).changed() && shown.is_finite() {
+                                **value = (shown / *display_scale).clamp(*min, *max);
                             }
                         }
-                        ui.end_row();
+                        ControlKind::Count { value, min, max } => {
+                            ui.add(egui::Slider::new(*value, *min..=*max).text(label)).on_hover_text(doc);
+                        }
+                        ControlKind::Toggle(v) => {
+                            ui.checkbox(v, label).on_hover_text(doc);
+                        }
+                        ControlKind::Material(m) => {
+                            egui::ComboBox::from_label(label).selected_text(m.name.clone()).show_ui(ui, |ui| {
+                                for candidate in crate::physics::material::materials() {
+                                    if ui.selectable_label(m.name == candidate.name, &candidate.name).clicked() {
+                                        **m = candidate.clone();
+                                        material_changed = true;
+                                    }
+                                }
+                            });
+                        }
+                        ControlKind::Choice { value, options } => {
+                            let shown = options.iter().find(|(k, _)| *k == value.as_str()).map_or("?", |(_, l)| *l);
+                            egui::ComboBox::from_label(label).selected_text(shown).show_ui(ui, |ui| {
+                                for (k, l) in options.iter() {
+                                    if ui.selectable_label(value.as_str() == *k, *l).clicked() {
+                                        **value = k.to_string();
+                                    }
+                                }
+                            });
+                        }
                     }
-                });
+                    ui.end_row();
+                }
+            });
         }
         if material_changed {
             self.session.params[scene].material_changed();
@@ -543,16 +553,13 @@ impl GrainscopeApp {
             ui.label("computing…");
             return;
         };
-        egui::Grid::new("scalars")
-            .num_columns(2)
-            .striped(true)
-            .show(ui, |ui| {
-                for s in &out.scalars {
-                    ui.label(s.label);
-                    ui.label(format!("{} {}", figure::tick_label(s.value), s.unit));
-                    ui.end_row();
-                }
-            });
+        egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
+            for s in &out.scalars {
+                ui.label(s.label);
+                ui.label(format!("{} {}", figure::tick_label(s.value), s.unit));
+                ui.end_row();
+            }
+        });
         for n in &out.notes {
             ui.label(egui::RichText::new(n).italics());
         }
@@ -581,34 +588,17 @@ impl GrainscopeApp {
             .map(|c| (c.key, c.label))
             .collect();
         ui.horizontal(|ui| {
-            let current = keys
-                .iter()
-                .find(|k| k.0 == self.sweep.key)
-                .map_or("choose", |k| k.1);
-            egui::ComboBox::from_label("sweep parameter")
-                .selected_text(current)
-                .show_ui(ui, |ui| {
-                    for (k, l) in &keys {
-                        ui.selectable_value(&mut self.sweep.key, k.to_string(), *l);
-                    }
-                });
+            let current = keys.iter().find(|k| k.0 == self.sweep.key).map_or("choose", |k| k.1);
+            egui::ComboBox::from_label("sweep parameter").selected_text(current).show_ui(ui, |ui| {
+                for (k, l) in &keys {
+                    ui.selectable_value(&mut self.sweep.key, k.to_string(), *l);
+                }
+            });
         });
         ui.horizontal(|ui| {
-            ui.add(
-                egui::DragValue::new(&mut self.sweep.from)
-                    .speed(0.01)
-                    .prefix("from "),
-            );
-            ui.add(
-                egui::DragValue::new(&mut self.sweep.to)
-                    .speed(0.01)
-                    .prefix("to "),
-            );
-            ui.add(
-                egui::DragValue::new(&mut self.sweep.steps)
-                    .range(2..=12)
-                    .prefix("n "),
-            );
+            ui.add(egui::DragValue::new(&mut self.sweep.from).speed(0.01).prefix("from "));
+            ui.add(egui::DragValue::new(&mut self.sweep.to).speed(0.01).prefix("to "));
+            ui.add(egui::DragValue::new(&mut self.sweep.steps).range(2..=12).prefix("n "));
         });
         ui.small("sweep values are in SI units, log-spaced when both ends are positive");
         if ui.button("Draw family").clicked() {
@@ -621,36 +611,20 @@ impl GrainscopeApp {
         let curves: Vec<(String, Series)> = out
             .figures
             .iter()
-            .flat_map(|f| {
-                f.series
-                    .iter()
-                    .filter(|s| s.style == Style::Line)
-                    .map(move |s| (f.id.clone(), s.clone()))
-            })
+            .flat_map(|f| f.series.iter().filter(|s| s.style == Style::Line).map(move |s| (f.id.clone(), s.clone())))
             .collect();
         let color = self.session.pins.len() + 1;
         let params = self.params().clone();
-        self.session.pins.push(Pin {
-            params,
-            label: String::new(),
-            curves,
-            color,
-        });
+        self.session.pins.push(Pin { params, label: String::new(), curves, color });
     }
 
     fn start_sweep(&mut self) {
         let base = self.params().clone();
-        let (from, to, n) = (
-            self.sweep.from,
-            self.sweep.to,
-            self.sweep.steps.clamp(2, 12),
-        );
+        let (from, to, n) = (self.sweep.from, self.sweep.to, self.sweep.steps.clamp(2, 12));
         let values: Vec<f64> = if from > 0.0 && to > 0.0 {
             scene::logspace(from, to, n)
         } else {
-            (0..n)
-                .map(|i| from + (to - from) * i as f64 / (n - 1) as f64)
-                .collect()
+            (0..n).map(|i| from + (to - from) * i as f64 / (n - 1) as f64).collect()
         };
         // Check every value before starting, so a bad range is reported at once.
         for v in &values {
@@ -675,10 +649,7 @@ impl GrainscopeApp {
                     .figures
                     .iter()
                     .flat_map(|f| {
-                        f.series
-                            .iter()
-                            .filter(|s| s.style == Style::Line)
-                            .map(move |s| (f.id.clone(), s.clone()))
+                        f.series.iter().filter(|s| s.style == Style::Line).map(move |s| (f.id.clone(), s.clone()))
                     })
                     .collect();
                 pins.push(Pin {
@@ -712,17 +683,9 @@ impl GrainscopeApp {
                 } else {
                     pin.label.clone()
                 };
-                pin.curves
-                    .iter()
-                    .filter(|(id, _)| *id == fig.id)
-                    .map(move |(_, s)| {
-                        Series::new(
-                            format!("{label} — {}", s.name),
-                            s.points.clone(),
-                            Style::Line,
-                            pin.color,
-                        )
-                    })
+                pin.curves.iter().filter(|(id, _)| *id == fig.id).map(move |(_, s)| {
+                    Series::new(format!("{label} — {}", s.name), s.points.clone(), Style::Line, pin.color)
+                })
             })
             .collect();
         plot::Overlay { pinned, cursor }
@@ -738,20 +701,20 @@ impl GrainscopeApp {
             Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
-        let cols = if n_panels > 1 { 2 } else { 1 };
+        let cols = match n_panels {
+            1 => 1,
+            2..=4 => 2,
+            5..=9 => 3,
+            _ => 4,
+        };
         let rows = n_panels.div_ceil(cols);
         let avail = ui.available_size();
-        let size = egui::vec2(
-            (avail.x / cols as f32 - 12.0).max(200.0),
-            (avail.y / rows as f32 - 40.0).max(160.0),
-        );
+        let size = egui::vec2((avail.x / cols as f32 - 12.0).max(200.0), (avail.y / rows as f32 - 40.0).max(160.0));
         let cursor_fraction = match self.params() {
             SceneParams::Hysteresis(p) => p.cursor,
             _ => 0.0,
         };
-        let cursor_sample = trajectory
-            .as_ref()
-            .and_then(|t| sketch::sample_at(t, cursor_fraction));
+        let cursor_sample = trajectory.as_ref().and_then(|t| sketch::sample_at(t, cursor_fraction));
         let mut export: Option<(Figure, &'static str)> = None;
         let mut save_as: Option<Figure> = None;
         egui::Grid::new("figures").num_columns(cols).show(ui, |ui| {
@@ -791,8 +754,7 @@ impl GrainscopeApp {
                     ui.small("move the time cursor among the parameters");
                     ui.horizontal(|ui| {
                         let label = ui.label("export folder");
-                        ui.text_edit_singleline(&mut self.session.export_dir)
-                            .labelled_by(label.id);
+                        ui.text_edit_singleline(&mut self.session.export_dir).labelled_by(label.id);
                     });
                 });
             }
@@ -800,17 +762,13 @@ impl GrainscopeApp {
         if trajectory.is_none() {
             ui.horizontal(|ui| {
                 let label = ui.label("export folder");
-                ui.text_edit_singleline(&mut self.session.export_dir)
-                    .labelled_by(label.id);
+                ui.text_edit_singleline(&mut self.session.export_dir).labelled_by(label.id);
             });
         }
         if let Some((fig, ext)) = export {
             let dir = PathBuf::from(&self.session.export_dir);
             if let Err(e) = std::fs::create_dir_all(&dir) {
-                self.error = Some(format!(
-                    "cannot create export folder {}: {e}",
-                    dir.display()
-                ));
+                self.error = Some(format!("cannot create export folder {}: {e}", dir.display()));
             } else {
                 let name = format!("{}-{}.{ext}", self.params().info().id, fig.id);
                 self.export(&fig, &dir.join(name));

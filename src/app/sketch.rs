@@ -7,10 +7,7 @@ use egui::{Color32, Pos2, Stroke, pos2, vec2};
 pub fn sample_at(t: &Trajectory, fraction: f64) -> Option<[f64; 4]> {
     let last = t.samples.last()?;
     let target = fraction.clamp(0.0, 1.0) * last[0];
-    let i = t
-        .samples
-        .partition_point(|s| s[0] < target)
-        .min(t.samples.len() - 1);
+    let i = t.samples.partition_point(|s| s[0] < target).min(t.samples.len() - 1);
     Some(t.samples[i])
 }
 
@@ -24,21 +21,12 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
     };
     let text_color = ui.visuals().text_color();
     let (delta, a) = (s[1], s[2]);
-    let a_max = t
-        .samples
-        .iter()
-        .map(|s| s[2])
-        .fold(0.0, f64::max)
-        .max(1e-30);
+    let a_max = t.samples.iter().map(|s| s[2]).fold(0.0, f64::max).max(1e-30);
 
     // Left: the two bodies at true scale.
     let left = egui::Rect::from_min_size(rect.min, vec2(rect.width() * 0.35, rect.height()));
     let r1 = t.radius_1;
-    let r2 = if t.radius_2.is_finite() {
-        t.radius_2
-    } else {
-        3.0 * r1
-    };
+    let r2 = if t.radius_2.is_finite() { t.radius_2 } else { 3.0 * r1 };
     let scale = (left.height() as f64 * 0.45) / (r1 + r2);
     let cx = left.center().x;
     let contact_y = left.min.y + (2.0 * r1 * scale) as f32 + 0.05 * left.height();
@@ -57,10 +45,8 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
             Stroke::new(1.0, text_color),
         );
     } else {
-        let wall = egui::Rect::from_min_max(
-            pos2(left.min.x + 8.0, contact_y),
-            pos2(left.max.x - 8.0, left.max.y - 8.0),
-        );
+        let wall =
+            egui::Rect::from_min_max(pos2(left.min.x + 8.0, contact_y), pos2(left.max.x - 8.0, left.max.y - 8.0));
         painter.rect_filled(wall, 0.0, Color32::from_rgb(150, 150, 150));
     }
 
@@ -78,35 +64,15 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
         (0..=120)
             .map(|i| {
                 let x = -half_w + 2.0 * half_w * i as f64 / 120.0;
-                let z = if x.abs() < a {
-                    0.0
-                } else {
-                    (x * x - a * a) / (2.0 * radius)
-                };
-                pos2(
-                    mid.x + (x * x_scale) as f32,
-                    mid.y - (sign * z * z_scale) as f32,
-                )
+                let z = if x.abs() < a { 0.0 } else { (x * x - a * a) / (2.0 * radius) };
+                pos2(mid.x + (x * x_scale) as f32, mid.y - (sign * z * z_scale) as f32)
             })
             .collect()
     };
     let upper = profile(1.0, r1);
-    let lower = profile(
-        -1.0,
-        if t.radius_2.is_finite() {
-            r2
-        } else {
-            f64::INFINITY
-        },
-    );
-    painter.add(egui::Shape::line(
-        upper,
-        Stroke::new(2.0, Color32::from_rgb(31, 119, 180)),
-    ));
-    painter.add(egui::Shape::line(
-        lower,
-        Stroke::new(2.0, Color32::from_rgb(31, 119, 180)),
-    ));
+    let lower = profile(-1.0, if t.radius_2.is_finite() { r2 } else { f64::INFINITY });
+    painter.add(egui::Shape::line(upper, Stroke::new(2.0, Color32::from_rgb(31, 119, 180))));
+    painter.add(egui::Shape::line(lower, Stroke::new(2.0, Color32::from_rgb(31, 119, 180))));
     let ax = (a * x_scale) as f32;
     painter.line_segment(
         [pos2(mid.x - ax, mid.y), pos2(mid.x + ax, mid.y)],

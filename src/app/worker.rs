@@ -43,30 +43,18 @@ impl<T: Send + 'static> Worker<T> {
                 }
             })
             .ok();
-        Worker {
-            jobs,
-            done,
-            generation: 0,
-            running: None,
-        }
+        Worker { jobs, done, generation: 0, running: None }
     }
 
     /// Queues a job, cancelling the one that is running.
-    pub fn submit(
-        &mut self,
-        task: impl FnOnce(&Progress) -> Result<T, SceneError> + Send + 'static,
-    ) {
+    pub fn submit(&mut self, task: impl FnOnce(&Progress) -> Result<T, SceneError> + Send + 'static) {
         self.cancel();
         self.generation += 1;
         let progress = Progress::default();
         self.running = Some(progress.clone());
         // A closed channel means the thread is gone; the job is then dropped
         // and `busy` stays true, which the window shows.
-        let _ = self.jobs.send(Job {
-            generation: self.generation,
-            progress,
-            task: Box::new(task),
-        });
+        let _ = self.jobs.send(Job { generation: self.generation, progress, task: Box::new(task) });
     }
 
     /// Cancels the running job, if any.

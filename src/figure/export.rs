@@ -2,7 +2,7 @@
 //! temporary sibling first and renamed into place, so a failed export never
 //! leaves a truncated file or destroys an earlier one.
 
-use super::{Figure, PALETTE, Scale, Style};
+use super::{Figure, Heatmap, PALETTE, Scale, Style, colormap};
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
@@ -33,22 +33,10 @@ pub enum ExportError {
 /// Writes `bytes` to `path` atomically: a temporary file in the same folder,
 /// then a rename. On error the previous file (if any) is untouched.
 pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
-    let io = |source| ExportError::Io {
-        path: path.to_path_buf(),
-        source,
-    };
-    let dir = path
-        .parent()
-        .filter(|d| !d.as_os_str().is_empty())
-        .unwrap_or(Path::new("."));
-    let name = path
-        .file_name()
-        .ok_or_else(|| io(std::io::Error::other("not a file name")))?;
-    let tmp = dir.join(format!(
-        ".{}.{}.tmp",
-        name.to_string_lossy(),
-        std::process::id()
-    ));
+    let io = |source| ExportError::Io { path: path.to_path_buf(), source };
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().ok_or_else(|| io(std::io::Error::other("not a file name")))?;
+    let tmp = dir.join(format!(".{}.{}.tmp", name.to_string_lossy(), std::process::id()));
     std::fs::write(&tmp, bytes).map_err(io)?;
     std::fs::rename(&tmp, path).map_err(|e| {
         let _ = std::fs::remove_file(&tmp);
@@ -60,14 +48,24 @@ pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
 /// with the header naming quantities and units.
 pub fn csv_bytes(fig: &Figure) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
-    w.write_record(["series", &fig.x.title(), &fig.y.title()])?;
+    match &fig.heatmap {
+        None => w.write_record(["series", &fig.x.title(), &fig.y.title()])?,
+        Some(h) => w.write_record(["series", &fig.x.title(), &fig.y.title(), &h.label])?,
+    }
+    let extra = usize::from(fig.heatmap.is_some());
     for s in &fig.series {
         for p in &s.points {
-            w.write_record([
-                s.name.as_str(),
-                &format!("{:e}", p[0]),
-                &format!("{:e}", p[1]),
-            ])?;
+            let mut row = vec![s.name.clone(), format!("{:e}", p[0]), format!("{:e}", p[1])];
+            row.extend(std::iter::repeat_n(String::new(), extra));
+            w.write_record(&row)?;
+        }
+    }
+    if let Some(h) = &fig.heatmap {
+        for (j, y) in h.y.iter().enumerate() {
+            for (i, x) in h.x.iter().enumerate() {
+                let v = h.values[j * h.x.len() + i];
+                w.write_record([h.label.clone(), format!("{x:e}"), format!("{y:e}"), format!("{v:e}")])?;
+            }
         }
     }
     w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
@@ -75,10 +73,7 @@ pub fn csv_bytes(fig: &Figure) -> Result<Vec<u8>, csv::Error> {
 
 /// Writes the figure's data to a CSV file.
 pub fn write_csv(fig: &Figure, path: &Path) -> Result<(), ExportError> {
-    let bytes = csv_bytes(fig).map_err(|e| ExportError::Draw {
-        id: fig.id.clone(),
-        message: e.to_string(),
-    })?;
+    let bytes = csv_bytes(fig).map_err(|e| ExportError::Draw { id: fig.id.clone(), message: e.to_string() })?;
     write_atomically(path, &bytes)
 }
 
@@ -87,10 +82,7 @@ pub fn svg_string(fig: &Figure, size: (u32, u32)) -> Result<String, ExportError>
     let mut out = String::new();
     {
         let root = SVGBackend::with_string(&mut out, size).into_drawing_area();
-        draw(&root, fig).map_err(|message| ExportError::Draw {
-            id: fig.id.clone(),
-            message,
-        })?;
+        draw(&root, fig).map_err(|message| ExportError::Draw { id: fig.id.clone(), message })?;
     }
     Ok(out)
 }
@@ -104,20 +96,15 @@ static FONT: Once = Once::new();
 
 /// Renders the figure as PNG bytes.
 pub fn png_bytes(fig: &Figure, size: (u32, u32)) -> Result<Vec<u8>, ExportError> {
-    let draw_err = |message: String| ExportError::Draw {
-        id: fig.id.clone(),
-        message,
-    };
+    let draw_err = |message: String| ExportError::Draw { id: fig.id.clone(), message };
     let mut buf = vec![0u8; size.0 as usize * size.1 as usize * 3];
     {
         let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
         draw(&root, fig).map_err(draw_err)?;
     }
-    let img = image::RgbImage::from_raw(size.0, size.1, buf)
-        .ok_or_else(|| draw_err("bad buffer size".into()))?;
+    let img = image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| draw_err("bad buffer size".into()))?;
     let mut png = std::io::Cursor::new(Vec::new());
-    img.write_to(&mut png, image::ImageFormat::Png)
-        .map_err(|e| draw_err(e.to_string()))?;
+    img.write_to(&mut png, image::ImageFormat::Png).map_err(|e| draw_err(e.to_string()))?;
     Ok(png.into_inner())
 }
 
@@ -160,11 +147,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, fig: &Figure) -> Resu
     // Text is measured (SVG) and rendered (PNG) with the font that ships
     // inside egui's default fonts, so no system font is needed.
     FONT.call_once(|| {
-        let _ = plotters::style::register_font(
-            "sans-serif",
-            FontStyle::Normal,
-            epaint_default_fonts::UBUNTU_LIGHT,
-        );
+        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT);
     });
     root.fill(&WHITE).map_err(|e| e.to_string())?;
     let [x0, x1, y0, y1] = fig.bounds().unwrap_or([1.0, 10.0, 1.0, 10.0]);
@@ -178,12 +161,7 @@ fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, fig: &Figure) -> Resu
     }
 }
 
-fn draw_in<DB, X, Y>(
-    root: &DrawingArea<DB, Shift>,
-    fig: &Figure,
-    xr: X,
-    yr: Y,
-) -> Result<(), String>
+fn draw_in<DB, X, Y>(root: &DrawingArea<DB, Shift>, fig: &Figure, xr: X, yr: Y) -> Result<(), String>
 where
     DB: DrawingBackend,
     X: AsRangedCoord<Value = f64>,
@@ -210,37 +188,37 @@ where
         .light_line_style(RGBColor(235, 235, 235))
         .draw()
         .map_err(e)?;
+    if let Some(h) = &fig.heatmap {
+        let ex = Heatmap::edges(&h.x, fig.x.scale);
+        let ey = Heatmap::edges(&h.y, fig.y.scale);
+        let (lo, hi) = h.range();
+        let span = if hi > lo { hi - lo } else { 1.0 };
+        let cells = (0..h.y.len()).flat_map(|j| (0..h.x.len()).map(move |i| (i, j))).map(|(i, j)| {
+            let [r, g, b] = colormap((h.values[j * h.x.len() + i] - lo) / span);
+            Rectangle::new([(ex[i], ey[j]), (ex[i + 1], ey[j + 1])], RGBColor(r, g, b).filled())
+        });
+        chart.draw_series(cells).map_err(e)?;
+    }
     for s in &fig.series {
         let [r, g, b] = PALETTE[s.color % PALETTE.len()];
         let color = RGBColor(r, g, b);
-        let pts: Vec<(f64, f64)> = s
-            .points
-            .iter()
-            .filter(|p| fig.visible(p))
-            .map(|p| (p[0], p[1]))
-            .collect();
+        let pts: Vec<(f64, f64)> = s.points.iter().filter(|p| fig.visible(p)).map(|p| (p[0], p[1])).collect();
         if pts.is_empty() {
             continue;
         }
-        let legend = move |(x, y): (i32, i32)| {
-            PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2))
-        };
+        let legend = move |(x, y): (i32, i32)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2));
         let anno = match s.style {
-            Style::Line => chart
-                .draw_series(LineSeries::new(pts, color.stroke_width(2)))
-                .map_err(e)?,
-            Style::Dashed => chart
-                .draw_series(DashedLineSeries::new(pts, 8, 5, color.stroke_width(2)))
-                .map_err(e)?,
-            Style::Points => chart
-                .draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled())))
-                .map_err(e)?,
-            Style::Marker => chart
-                .draw_series(
-                    pts.into_iter()
-                        .map(|p| TriangleMarker::new(p, 8, color.filled())),
-                )
-                .map_err(e)?,
+            Style::Line => chart.draw_series(LineSeries::new(pts, color.stroke_width(2))).map_err(e)?,
+            Style::Dashed => chart.draw_series(DashedLineSeries::new(pts, 8, 5, color.stroke_width(2))).map_err(e)?,
+            Style::Points => {
+                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled()))).map_err(e)?
+            }
+            Style::Marker | Style::LowerLimit => {
+                chart.draw_series(pts.into_iter().map(|p| TriangleMarker::new(p, 8, color.filled()))).map_err(e)?
+            }
+            Style::UpperLimit => {
+                chart.draw_series(pts.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?
+            }
         };
         if !s.name.is_empty() {
             anno.label(s.name.clone()).legend(legend);

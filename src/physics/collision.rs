@@ -57,10 +57,7 @@ impl Setup {
             t_vis: 1e-11,
             poisson_ratio: 0.25,
             z0: 3e-10,
-            crack: CrackLaw {
-                k: 0.02,
-                low_speed_fit: true,
-            },
+            crack: CrackLaw { k: 0.02, low_speed_fit: true },
             yield_strength: None,
         }
     }
@@ -83,8 +80,7 @@ impl Setup {
 
     /// Yield velocity v_y (2.28), m/s (infinite without plasticity).
     pub fn yield_velocity(&self) -> f64 {
-        self.yield_strength
-            .map_or(f64::INFINITY, |y| plasticity::yield_velocity(&self.pair, y))
+        self.yield_strength.map_or(f64::INFINITY, |y| plasticity::yield_velocity(&self.pair, y))
     }
 
     /// Checks that every quantity is finite and in its physical domain.
@@ -127,12 +123,7 @@ pub struct Options {
 
 impl Default for Options {
     fn default() -> Self {
-        Options {
-            rtol: 1e-6,
-            record: false,
-            follow_after_stick: 0.0,
-            max_time: 2000.0,
-        }
+        Options { rtol: 1e-6, record: false, follow_after_stick: 0.0, max_time: 2000.0 }
     }
 }
 
@@ -259,17 +250,12 @@ impl ContactOde {
         let u = y[2].exp();
         let beta = self.cb * u * u / s;
         let (g, _) = self.crack.speed(beta)?;
-        Some(Point {
-            s,
-            beta,
-            sdot: self.cg * g,
-        })
+        Some(Point { s, beta, sdot: self.cg * g })
     }
 
     fn beta(&self, y: &State<5>) -> f64 {
         let u = y[2].exp();
-        self.radius(y[0], y[2])
-            .map_or(f64::INFINITY, |s| self.cb * u * u / s)
+        self.radius(y[0], y[2]).map_or(f64::INFINITY, |s| self.cb * u * u / s)
     }
 
     fn elastic_energy(&self, x: f64, s: f64) -> f64 {
@@ -325,10 +311,8 @@ impl StiffSystem<5> for ContactOde {
         j[(2, 0)] = 2.0 * (s_x * sdot + s * sd_x) / u;
         j[(2, 1)] = -self.rho / u;
         j[(2, 2)] = 2.0 * (s_q * sdot + s * sd_q) / u - f2;
-        j[(3, 0)] =
-            self.cs * (s_x * (1.0 - beta) * sdot - s * b_x * sdot + s * (1.0 - beta) * sd_x);
-        j[(3, 2)] =
-            self.cs * (s_q * (1.0 - beta) * sdot - s * b_q * sdot + s * (1.0 - beta) * sd_q);
+        j[(3, 0)] = self.cs * (s_x * (1.0 - beta) * sdot - s * b_x * sdot + s * (1.0 - beta) * sd_x);
+        j[(3, 2)] = self.cs * (s_q * (1.0 - beta) * sdot - s * b_q * sdot + s * (1.0 - beta) * sd_q);
         j[(4, 0)] = self.c3 * w * w * s_x;
         j[(4, 1)] = 2.0 * self.c3 * s * w;
         j[(4, 2)] = self.c3 * w * w * s_q;
@@ -409,11 +393,7 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
     let mut t = 0.0;
     let mut y = y0;
     let mut energy_error: f64 = 0.0;
-    let mut stuck_at: Option<(f64, bool)> = if ode.mechanical_energy(&y0) < 0.0 {
-        Some((0.0, true))
-    } else {
-        None
-    };
+    let mut stuck_at: Option<(f64, bool)> = if ode.mechanical_energy(&y0) < 0.0 { Some((0.0, true)) } else { None };
     let mut bounce: Option<(f64, State<5>)> = None;
 
     while stuck_at.is_none() || opts.follow_after_stick > 0.0 {
@@ -525,30 +505,14 @@ pub struct Restitution {
 
 /// Coefficient of restitution at impact speed `velocity` (m/s), combining
 /// the numerical e_A with Thornton–Ning plasticity (2.30).
-pub fn restitution(
-    setup: &Setup,
-    velocity: f64,
-    opts: &Options,
-) -> Result<Restitution, PhysicsError> {
-    let c = collide(
-        setup,
-        velocity,
-        &Options {
-            record: false,
-            follow_after_stick: 0.0,
-            ..*opts
-        },
-    )?;
+pub fn restitution(setup: &Setup, velocity: f64, opts: &Options) -> Result<Restitution, PhysicsError> {
+    let c = collide(setup, velocity, &Options { record: false, follow_after_stick: 0.0, ..*opts })?;
     let e_p = plasticity::e_plastic(velocity, setup.yield_velocity());
     Ok(Restitution {
         velocity,
         e_adhesive: c.e_adhesive,
         e_plastic: e_p,
-        e: if c.e_adhesive > 0.0 {
-            plasticity::e_combined(c.e_adhesive, e_p)
-        } else {
-            0.0
-        },
+        e: if c.e_adhesive > 0.0 { plasticity::e_combined(c.e_adhesive, e_p) } else { 0.0 },
     })
 }
 
@@ -561,17 +525,7 @@ pub fn restitution(
 pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64, PhysicsError> {
     setup.validate()?;
     let sticks = |v: f64| -> Result<bool, PhysicsError> {
-        Ok(collide(
-            setup,
-            v,
-            &Options {
-                record: false,
-                follow_after_stick: 0.0,
-                ..*opts
-            },
-        )?
-        .outcome
-            == Outcome::Stick)
+        Ok(collide(setup, v, &Options { record: false, follow_after_stick: 0.0, ..*opts })?.outcome == Outcome::Stick)
     };
     let (v_min, v_max) = (1e-6, 1e4);
     let mut v = setup.pair.jkr_sticking_velocity().clamp(v_min, v_max);
@@ -628,10 +582,7 @@ mod tests {
             rho: 2.0,
             cg: 5.0,
             cs: 0.3,
-            crack: CrackLaw {
-                k: 0.02,
-                low_speed_fit: true,
-            },
+            crack: CrackLaw { k: 0.02, low_speed_fit: true },
         };
         for (w, s) in [(0.8, 0.3), (-0.4, 0.5), (-0.9, 0.25)] {
             // Choose u so that β lies in a smooth part of the crack law.

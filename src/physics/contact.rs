@@ -66,8 +66,7 @@ impl Pair {
     /// Elastic energy stored in the contact, U_E (2.3), J.
     pub fn elastic_energy(&self, a: f64, delta: f64) -> f64 {
         let (e, r) = (self.modulus, self.radius);
-        e * delta * delta * a - 2.0 * e / (3.0 * r) * delta * a.powi(3)
-            + e * a.powi(5) / (5.0 * r * r)
+        e * delta * delta * a - 2.0 * e / (3.0 * r) * delta * a.powi(3) + e * a.powi(5) / (5.0 * r * r)
     }
 
     /// Surface energy of the contact, U_S = −πa²γ (2.6), J.
@@ -94,8 +93,7 @@ impl Pair {
     /// JKR sticking velocity v_c = (14.18/m*)^{1/2} (γ⁵R⁴/E*²)^{1/6} (2.25), m/s.
     pub fn jkr_sticking_velocity(&self) -> f64 {
         (14.18 / self.mass).sqrt()
-            * (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(2))
-                .powf(1.0 / 6.0)
+            * (self.surface_energy.powi(5) * self.radius.powi(4) / self.modulus.powi(2)).powf(1.0 / 6.0)
     }
 
     /// Elastic JKR coefficient of restitution e_JKR = (1 − (v_c/v)²)^{1/2} (2.24); 0 below v_c.
@@ -140,12 +138,7 @@ mod tests {
 
     fn ice() -> Pair {
         let m = 1000.0 * 4.0 / 3.0 * PI * (2e-6f64).powi(3);
-        Pair {
-            modulus: 7e9 / (2.0 * 0.9375),
-            radius: 1e-6,
-            mass: m / 2.0,
-            surface_energy: 0.74,
-        }
+        Pair { modulus: 7e9 / (2.0 * 0.9375), radius: 1e-6, mass: m / 2.0, surface_energy: 0.74 }
     }
 
     #[test]
@@ -160,9 +153,7 @@ mod tests {
         let g = p.effective_surface_energy(a, p.jkr_approach(a));
         assert!((g / p.surface_energy - 1.0).abs() < 1e-12);
         // The JKR force's minimum along the curve is the pull-off force.
-        let fmin = (1..2000)
-            .map(|i| p.jkr_force(a_eq * i as f64 / 2000.0))
-            .fold(f64::MAX, f64::min);
+        let fmin = (1..2000).map(|i| p.jkr_force(a_eq * i as f64 / 2000.0)).fold(f64::MAX, f64::min);
         assert!((fmin / -p.pull_off_force() - 1.0).abs() < 1e-4, "{fmin}");
     }
 

@@ -99,10 +99,7 @@ const BRIDGE: f64 = 0.01;
 mod tests {
     use super::*;
 
-    const LAW: CrackLaw = CrackLaw {
-        k: 0.02,
-        low_speed_fit: true,
-    };
+    const LAW: CrackLaw = CrackLaw { k: 0.02, low_speed_fit: true };
 
     #[test]
     fn sign_and_divergence() {
@@ -110,46 +107,27 @@ mod tests {
         assert!(LAW.speed(2.0).expect("in domain").0 < 0.0);
         assert!(LAW.speed(0.02 * 1.0001).expect("in domain").0 > 1e4);
         assert!(LAW.speed(49.99).expect("in domain").0 < -1e4);
-        assert!(
-            LAW.speed(0.02).is_none() && LAW.speed(50.0).is_none() && LAW.speed(f64::NAN).is_none()
-        );
+        assert!(LAW.speed(0.02).is_none() && LAW.speed(50.0).is_none() && LAW.speed(f64::NAN).is_none());
     }
 
     #[test]
     fn derivative_matches_finite_differences() {
-        for law in [
-            LAW,
-            CrackLaw {
-                k: 0.02,
-                low_speed_fit: false,
-            },
-            CrackLaw {
-                k: 0.1,
-                low_speed_fit: false,
-            },
-        ] {
+        for law in [LAW, CrackLaw { k: 0.02, low_speed_fit: false }, CrackLaw { k: 0.1, low_speed_fit: false }] {
             for &b in &[0.03, 0.1, 0.5, 0.9, 1.1, 2.0, 5.0, 9.0] {
                 if b >= law.beta_max() || b <= law.beta_min() {
                     continue;
                 }
                 let h = 1e-7 * b;
-                let num =
-                    (law.speed(b + h).expect("in").0 - law.speed(b - h).expect("in").0) / (2.0 * h);
+                let num = (law.speed(b + h).expect("in").0 - law.speed(b - h).expect("in").0) / (2.0 * h);
                 let ana = law.speed(b).expect("in").1;
-                assert!(
-                    (num - ana).abs() <= 1e-5 * ana.abs().max(1e-3),
-                    "{law:?} β={b}: {num} vs {ana}"
-                );
+                assert!((num - ana).abs() <= 1e-5 * ana.abs().max(1e-3), "{law:?} β={b}: {num} vs {ana}");
             }
         }
     }
 
     #[test]
     fn bridge_keeps_the_sign_and_joins_the_general_law() {
-        let law = CrackLaw {
-            k: 0.05,
-            low_speed_fit: false,
-        };
+        let law = CrackLaw { k: 0.05, low_speed_fit: false };
         assert_eq!(law.speed(1.0).expect("in").0, 0.0);
         for i in 1..100 {
             let u = 0.0101 * i as f64 / 100.0;
@@ -159,10 +137,7 @@ mod tests {
         for b in [0.99, 1.01] {
             let inside = law.speed(b + (1.0 - b) * 1e-9).expect("in").0;
             let outside = law.speed(b - (1.0 - b) * 1e-9).expect("in").0;
-            assert!(
-                (inside - outside).abs() < 1e-6,
-                "{b}: {inside} vs {outside}"
-            );
+            assert!((inside - outside).abs() < 1e-6, "{b}: {inside} vs {outside}");
         }
     }
 
@@ -170,15 +145,7 @@ mod tests {
     fn low_speed_fits_join_the_general_law() {
         // At the ends of the fit ranges the two forms agree to about 1 %.
         let fit = |b: f64| LAW.speed(b).expect("in").0;
-        let general = |b: f64| {
-            CrackLaw {
-                k: 0.02,
-                low_speed_fit: false,
-            }
-            .speed(b)
-            .expect("in")
-            .0
-        };
+        let general = |b: f64| CrackLaw { k: 0.02, low_speed_fit: false }.speed(b).expect("in").0;
         assert!((fit(0.2901) / general(0.2901) - 1.0).abs() < 0.02);
         assert!((fit(3.699) / general(3.699) - 1.0).abs() < 0.02);
     }

@@ -30,9 +30,7 @@ impl Material {
 
     /// Looks a material up by name (case-insensitive).
     pub fn named(name: &str) -> Option<&'static Material> {
-        materials()
-            .iter()
-            .find(|m| m.name.eq_ignore_ascii_case(name))
+        materials().iter().find(|m| m.name.eq_ignore_ascii_case(name))
     }
 
     /// Water ice of Table 2.2: E = 7 GPa, ν = 0.25, ρ = 1000 kg m⁻³, γ_L = 0.37 J/m².
@@ -50,8 +48,7 @@ impl Material {
 
 /// Combined elastic modulus E* of two materials: 1/E* = (1−ν₁²)/E₁ + (1−ν₂²)/E₂, Pa.
 pub fn combined_modulus(a: &Material, b: &Material) -> f64 {
-    1.0 / ((1.0 - a.poisson_ratio.powi(2)) / a.youngs_modulus
-        + (1.0 - b.poisson_ratio.powi(2)) / b.youngs_modulus)
+    1.0 / ((1.0 - a.poisson_ratio.powi(2)) / a.youngs_modulus + (1.0 - b.poisson_ratio.powi(2)) / b.youngs_modulus)
 }
 
 /// Combined surface energy of a contact, γ = 2 (γ₁γ₂)^{1/2}, J/m² (twice γ_L for like materials).
@@ -66,8 +63,7 @@ pub fn materials() -> &'static [Material] {
     MATERIALS.get_or_init(|| {
         // The table is compiled into the binary; a malformed asset is a build
         // defect caught by the test suite, so fall back to ice alone here.
-        ron::from_str(include_str!("../../assets/materials.ron"))
-            .unwrap_or_else(|_| vec![Material::water_ice()])
+        ron::from_str(include_str!("../../assets/materials.ron")).unwrap_or_else(|_| vec![Material::water_ice()])
     })
 }
 
@@ -77,8 +73,8 @@ mod tests {
 
     #[test]
     fn table_parses_completely() {
-        let table: Vec<Material> = ron::from_str(include_str!("../../assets/materials.ron"))
-            .expect("materials.ron parses");
+        let table: Vec<Material> =
+            ron::from_str(include_str!("../../assets/materials.ron")).expect("materials.ron parses");
         assert_eq!(table.len(), 16);
         assert_eq!(materials().len(), 16);
     }
@@ -86,19 +82,10 @@ mod tests {
     #[test]
     fn sound_speeds_match_table() {
         // c_s column of Table 2.2.
-        let cases = [
-            ("water ice", 2645.0),
-            ("PSL", 1820.0),
-            ("silicon", 8789.0),
-            ("copper", 3813.0),
-        ];
+        let cases = [("water ice", 2645.0), ("PSL", 1820.0), ("silicon", 8789.0), ("copper", 3813.0)];
         for (name, cs) in cases {
             let m = Material::named(name).expect(name);
-            assert!(
-                (m.sound_speed() / cs - 1.0).abs() < 0.005,
-                "{name}: {}",
-                m.sound_speed()
-            );
+            assert!((m.sound_speed() / cs - 1.0).abs() < 0.005, "{name}: {}", m.sound_speed());
         }
     }
 

@@ -4,6 +4,8 @@
 pub mod collision;
 pub mod contact;
 pub mod crack;
+pub mod experiments;
+pub mod fit;
 pub mod material;
 pub mod plasticity;
 
@@ -30,10 +32,6 @@ pub fn positive(name: &'static str, value: f64) -> Result<f64, PhysicsError> {
     if value.is_finite() && value > 0.0 {
         Ok(value)
     } else {
-        Err(PhysicsError::InvalidParameter {
-            name,
-            value,
-            reason: "must be finite and > 0",
-        })
+        Err(PhysicsError::InvalidParameter { name, value, reason: "must be finite and > 0" })
     }
 }

@@ -21,9 +21,7 @@ pub fn e_plastic(v: f64, v_yield: f64) -> f64 {
 
 /// Combined restitution e = (e_A² + e_P² − 1)^{1/2} (2.30); 0 when the radicand is negative.
 pub fn e_combined(e_adhesive: f64, e_plastic: f64) -> f64 {
-    (e_adhesive * e_adhesive + e_plastic * e_plastic - 1.0)
-        .max(0.0)
-        .sqrt()
+    (e_adhesive * e_adhesive + e_plastic * e_plastic - 1.0).max(0.0).sqrt()
 }
 
 #[cfg(test)]

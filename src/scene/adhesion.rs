@@ -19,7 +19,7 @@ pub const INFO: SceneInfo = SceneInfo {
 equilibrium radius a_eq = (9πγR²/(2E*))^{1/3}, pull-off force F_c = (3/2)πγR, the energy to break \
 a contact E_break ~ (γ⁵R⁴/E*²)^{1/3} (the thesis prints E*³ in (1.24), which is not an energy) \
 and to roll over 90°, E_roll = 6πγRξ (1.25). Head-on monomers stick when ½m*v² < E_break, so \
-v_stick ∝ R^{-5/6}; (2.25) gives the JKR sticking velocity with its prefactor. The Tabor \
+v_stick ~ R^{-5/6}; (2.25) gives the JKR sticking velocity with its prefactor. The Tabor \
 parameter μ = (Rγ²/(E*²z₀³))^{1/3} > 5 puts the contact in the JKR limit. For aggregates with \
 n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energy with \
 5E_roll, n_cE_roll, n_cE_break and 10n_cE_break.",
@@ -67,12 +67,7 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         vec![
-            Control::material(
-                "material",
-                "material",
-                &mut self.material,
-                "monomer material (Table 2.2)",
-            ),
+            Control::material("material", "material", &mut self.material, "monomer material (Table 2.2)"),
             Control::number(
                 "radius",
                 "monomer radius r₀",
@@ -193,10 +188,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     )
     .with(Series::new(
         "v_c, JKR (2.25)",
-        radii
-            .iter()
-            .map(|&r| [r * 1e6, p.pair(r).jkr_sticking_velocity()])
-            .collect(),
+        radii.iter().map(|&r| [r * 1e6, p.pair(r).jkr_sticking_velocity()]).collect(),
         Style::Line,
         0,
     ))
@@ -212,21 +204,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Style::Dashed,
         1,
     ))
-    .with(Series::new(
-        "this monomer",
-        vec![[p.radius * 1e6, pair.jkr_sticking_velocity()]],
-        Style::Marker,
-        3,
-    ));
+    .with(Series::new("this monomer", vec![[p.radius * 1e6, pair.jkr_sticking_velocity()]], Style::Marker, 3));
 
     let nc = logspace(1.0, 1e9, 73);
     let line = |name: &str, f: &dyn Fn(f64) -> f64, color| {
-        Series::new(
-            name,
-            nc.iter().map(|&n| [n, f(n)]).collect(),
-            Style::Line,
-            color,
-        )
+        Series::new(name, nc.iter().map(|&n| [n, f(n)]).collect(), Style::Line, color)
     };
     let fig_r = Figure::new(
         "collision-regimes",
@@ -237,17 +219,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     .with(line("5 E_roll: onset of compaction", &|_| 5.0 * e_roll, 2))
     .with(line("n_c E_roll: maximum compression", &|n| n * e_roll, 1))
     .with(line("n_c E_break: loss of monomers", &|n| n * e_break, 3))
-    .with(line(
-        "10 n_c E_break: disruption",
-        &|n| 10.0 * n * e_break,
-        0,
-    ))
-    .with(Series::new(
-        "this collision",
-        vec![[p.contacts, e_k]],
-        Style::Marker,
-        4,
-    ));
+    .with(line("10 n_c E_break: disruption", &|n| 10.0 * n * e_break, 0))
+    .with(Series::new("this collision", vec![[p.contacts, e_k]], Style::Marker, 4));
 
     let a_max = 1.6 * pair.jkr_equilibrium_radius();
     let [_, _, hertz_f, jkr_f] = super::hysteresis::reference_curves(&pair, a_max);
@@ -261,77 +234,30 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     .with(jkr_f)
     .with(Series::new(
         "pull-off −F_c",
-        vec![[
-            pair.jkr_approach(pair.jkr_equilibrium_radius() / 4f64.cbrt()) * 1e9,
-            -pair.pull_off_force() * 1e6,
-        ]],
+        vec![[pair.jkr_approach(pair.jkr_equilibrium_radius() / 4f64.cbrt()) * 1e9, -pair.pull_off_force() * 1e6]],
         Style::Marker,
         3,
     ));
 
     let scalars = vec![
-        Scalar {
-            key: "a_eq",
-            label: "JKR equilibrium radius a_eq",
-            value: pair.jkr_equilibrium_radius(),
-            unit: "m",
-        },
-        Scalar {
-            key: "F_c",
-            label: "pull-off force F_c",
-            value: pair.pull_off_force(),
-            unit: "N",
-        },
-        Scalar {
-            key: "E_break",
-            label: "break energy E_break",
-            value: e_break,
-            unit: "J",
-        },
-        Scalar {
-            key: "E_roll",
-            label: "rolling energy E_roll",
-            value: e_roll,
-            unit: "J",
-        },
+        Scalar { key: "a_eq", label: "JKR equilibrium radius a_eq", value: pair.jkr_equilibrium_radius(), unit: "m" },
+        Scalar { key: "F_c", label: "pull-off force F_c", value: pair.pull_off_force(), unit: "N" },
+        Scalar { key: "E_break", label: "break energy E_break", value: e_break, unit: "J" },
+        Scalar { key: "E_roll", label: "rolling energy E_roll", value: e_roll, unit: "J" },
         Scalar {
             key: "v_c",
             label: "JKR sticking velocity v_c (2.25)",
             value: pair.jkr_sticking_velocity(),
             unit: "m s^-1",
         },
-        Scalar {
-            key: "v_break",
-            label: "(2E_break/m*)^{1/2}",
-            value: v_break,
-            unit: "m s^-1",
-        },
-        Scalar {
-            key: "tabor",
-            label: "Tabor parameter μ",
-            value: pair.tabor(p.z0),
-            unit: "",
-        },
-        Scalar {
-            key: "E_K",
-            label: "aggregate collision energy",
-            value: e_k,
-            unit: "J",
-        },
+        Scalar { key: "v_break", label: "(2E_break/m*)^{1/2}", value: v_break, unit: "m s^-1" },
+        Scalar { key: "tabor", label: "Tabor parameter μ", value: pair.tabor(p.z0), unit: "" },
+        Scalar { key: "E_K", label: "aggregate collision energy", value: e_k, unit: "J" },
     ];
-    let mut notes = vec![format!(
-        "Regime of this aggregate collision (Table 1.1): {regime}."
-    )];
+    let mut notes = vec![format!("Regime of this aggregate collision (Table 1.1): {regime}.")];
     let mu = pair.tabor(p.z0);
     if mu < 5.0 {
-        notes.push(format!(
-            "Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."
-        ));
+        notes.push(format!("Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."));
     }
-    Ok(SceneOutput {
-        scalars,
-        figures: vec![fig_v, fig_r, fig_f],
-        notes,
-        extra: super::Extra::None,
-    })
+    Ok(SceneOutput { scalars, figures: vec![fig_v, fig_r, fig_f], notes, extra: super::Extra::None })
 }

@@ -70,24 +70,9 @@ impl CollisionParams {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         vec![
-            Control::material(
-                "projectile",
-                "material 1",
-                &mut self.projectile,
-                "material of sphere 1 (Table 2.2)",
-            ),
-            Control::material(
-                "target",
-                "material 2",
-                &mut self.target,
-                "material of sphere 2 or of the wall",
-            ),
-            Control::toggle(
-                "wall",
-                "sphere on wall",
-                &mut self.wall,
-                "sphere 1 hits a flat wall of material 2",
-            ),
+            Control::material("projectile", "material 1", &mut self.projectile, "material of sphere 1 (Table 2.2)"),
+            Control::material("target", "material 2", &mut self.target, "material of sphere 2 or of the wall"),
+            Control::toggle("wall", "sphere on wall", &mut self.wall, "sphere 1 hits a flat wall of material 2"),
             Control::number(
                 "radius_1",
                 "radius 1",
@@ -154,12 +139,7 @@ impl CollisionParams {
                 &mut self.low_speed_fit,
                 "use Greenwood's fits (2.17) near β = 1 (made for k = 0.02; applied for k = 0.018–0.022)",
             ),
-            Control::toggle(
-                "plasticity",
-                "plasticity",
-                &mut self.plasticity,
-                "Thornton–Ning plastic yield (2.29)",
-            ),
+            Control::toggle("plasticity", "plasticity", &mut self.plasticity, "Thornton–Ning plastic yield (2.29)"),
             Control::number(
                 "yield_strength",
                 "yield strength Y",
@@ -195,11 +175,7 @@ impl CollisionParams {
 
     /// Reduced radius R, m.
     pub fn reduced_radius(&self) -> f64 {
-        if self.wall {
-            self.radius_1
-        } else {
-            1.0 / (1.0 / self.radius_1 + 1.0 / self.radius_2)
-        }
+        if self.wall { self.radius_1 } else { 1.0 / (1.0 / self.radius_1 + 1.0 / self.radius_2) }
     }
 
     /// Reduced mass m*, kg.
@@ -226,19 +202,13 @@ impl CollisionParams {
             t_vis: self.t_vis,
             poisson_ratio: 0.5 * (self.projectile.poisson_ratio + self.target.poisson_ratio),
             z0: self.z0,
-            crack: CrackLaw {
-                k: self.k,
-                low_speed_fit: self.low_speed_fit,
-            },
+            crack: CrackLaw { k: self.k, low_speed_fit: self.low_speed_fit },
             yield_strength: self.plasticity.then_some(self.yield_strength),
         }
     }
 
     /// Integrator options at the chosen tolerance.
     pub fn options(&self) -> Options {
-        Options {
-            rtol: self.rtol,
-            ..Options::default()
-        }
+        Options { rtol: self.rtol, ..Options::default() }
     }
 }

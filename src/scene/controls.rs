@@ -74,6 +74,13 @@ pub enum ControlKind<'a> {
     Toggle(&'a mut bool),
     /// A material from Table 2.2 (or a custom one).
     Material(&'a mut Material),
+    /// One of a fixed list of options, stored by key.
+    Choice {
+        /// The chosen key.
+        value: &'a mut String,
+        /// (key, label) of each option.
+        options: Vec<(&'static str, &'static str)>,
+    },
 }
 
 /// One documented parameter.
@@ -115,13 +122,7 @@ impl<'a> Control<'a> {
             si_unit,
             doc,
             style_only: false,
-            kind: ControlKind::Number {
-                value,
-                min,
-                max,
-                log,
-                display_scale,
-            },
+            kind: ControlKind::Number { value, min, max, log, display_scale },
         }
     }
 
@@ -145,28 +146,21 @@ impl<'a> Control<'a> {
     }
 
     /// A switch.
-    pub fn toggle(
-        key: &'static str,
-        label: &'static str,
-        value: &'a mut bool,
-        doc: &'static str,
-    ) -> Self {
-        Control {
-            key,
-            label,
-            unit: "",
-            si_unit: "",
-            doc,
-            style_only: false,
-            kind: ControlKind::Toggle(value),
-        }
+    pub fn toggle(key: &'static str, label: &'static str, value: &'a mut bool, doc: &'static str) -> Self {
+        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind: ControlKind::Toggle(value) }
     }
 
     /// A material picker.
-    pub fn material(
+    pub fn material(key: &'static str, label: &'static str, value: &'a mut Material, doc: &'static str) -> Self {
+        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind: ControlKind::Material(value) }
+    }
+
+    /// A choice among fixed options (stored by key).
+    pub fn choice(
         key: &'static str,
         label: &'static str,
-        value: &'a mut Material,
+        value: &'a mut String,
+        options: Vec<(&'static str, &'static str)>,
         doc: &'static str,
     ) -> Self {
         Control {
@@ -176,7 +170,7 @@ impl<'a> Control<'a> {
             si_unit: "",
             doc,
             style_only: false,
-            kind: ControlKind::Material(value),
+            kind: ControlKind::Choice { value, options },
         }
     }
 
@@ -196,15 +190,9 @@ impl<'a> Control<'a> {
             unit: self.si_unit,
         };
         match &self.kind {
-            ControlKind::Number {
-                value, min, max, ..
-            } => {
+            ControlKind::Number { value, min, max, .. } => {
                 if !(value.is_finite() && **value >= *min && **value <= *max) {
-                    return Err(out(
-                        format!("{value:e}"),
-                        format!("{min:e}"),
-                        format!("{max:e}"),
-                    ));
+                    return Err(out(format!("{value:e}"), format!("{min:e}"), format!("{max:e}")));
                 }
             }
             ControlKind::Count { value, min, max } => {
@@ -213,12 +201,19 @@ impl<'a> Control<'a> {
                 }
             }
             ControlKind::Toggle(_) => {}
+            ControlKind::Choice { value, options } => {
+                if !options.iter().any(|(k, _)| k == value) {
+                    let keys: Vec<&str> = options.iter().map(|(k, _)| *k).collect();
+                    return Err(ParamError::Parse {
+                        key: self.key.into(),
+                        value: value.to_string(),
+                        expected: if keys.is_empty() { "a known option" } else { "one of the listed options" },
+                    });
+                }
+            }
             ControlKind::Material(m) => {
                 let bad = |what: &str, v: f64| {
-                    ParamError::Inconsistent(format!(
-                        "{}: material '{}' has invalid {what} {v:e}",
-                        self.key, m.name
-                    ))
+                    ParamError::Inconsistent(format!("{}: material '{}' has invalid {what} {v:e}", self.key, m.name))
                 };
                 for (what, v) in [
                     ("Young's modulus", m.youngs_modulus),
@@ -240,17 +235,10 @@ impl<'a> Control<'a> {
     /// Sets the value from text (SI units for numbers, `true`/`false`,
     /// a material name), then checks the range. On error the value is unchanged.
     pub fn set_text(&mut self, text: &str) -> Result<(), ParamError> {
-        let parse_err = |expected| ParamError::Parse {
-            key: self.key.into(),
-            value: text.into(),
-            expected,
-        };
+        let parse_err = |expected| ParamError::Parse { key: self.key.into(), value: text.into(), expected };
         match &mut self.kind {
             ControlKind::Number { value, .. } => {
-                let v: f64 = text
-                    .trim()
-                    .parse()
-                    .map_err(|_| parse_err("a number in SI units"))?;
+                let v: f64 = text.trim().parse().map_err(|_| parse_err("a number in SI units"))?;
                 let old = **value;
                 **value = v;
                 if let Err(e) = self.check() {
@@ -261,10 +249,7 @@ impl<'a> Control<'a> {
                 }
             }
             ControlKind::Count { value, .. } => {
-                let v: usize = text
-                    .trim()
-                    .parse()
-                    .map_err(|_| parse_err("a whole number"))?;
+                let v: usize = text.trim().parse().map_err(|_| parse_err("a whole number"))?;
                 let old = **value;
                 **value = v;
                 if let Err(e) = self.check() {
@@ -282,9 +267,16 @@ impl<'a> Control<'a> {
                 };
             }
             ControlKind::Material(value) => {
-                let m = Material::named(text.trim())
-                    .ok_or_else(|| parse_err("a material name of Table 2.2"))?;
+                let m = Material::named(text.trim()).ok_or_else(|| parse_err("a material name of Table 2.2"))?;
                 **value = m.clone();
+            }
+            ControlKind::Choice { value, options } => {
+                let key = options
+                    .iter()
+                    .find(|(k, _)| *k == text.trim())
+                    .map(|(k, _)| *k)
+                    .ok_or_else(|| parse_err("one of the option keys (see `grainscope params`)"))?;
+                **value = key.to_string();
             }
         }
         Ok(())
@@ -293,22 +285,17 @@ impl<'a> Control<'a> {
     /// The value as short text in display units, for labels.
     pub fn display_value(&self) -> String {
         match &self.kind {
-            ControlKind::Number {
-                value,
-                display_scale,
-                ..
-            } => {
+            ControlKind::Number { value, display_scale, .. } => {
                 let v = **value * display_scale;
                 let s = crate::figure::tick_label(v);
-                if self.unit.is_empty() {
-                    s
-                } else {
-                    format!("{s} {}", self.unit)
-                }
+                if self.unit.is_empty() { s } else { format!("{s} {}", self.unit) }
             }
             ControlKind::Count { value, .. } => value.to_string(),
             ControlKind::Toggle(v) => if **v { "on" } else { "off" }.to_string(),
             ControlKind::Material(m) => m.name.clone(),
+            ControlKind::Choice { value, options } => {
+                options.iter().find(|(k, _)| k == value).map_or_else(|| value.to_string(), |(_, l)| l.to_string())
+            }
         }
     }
 
@@ -319,13 +306,8 @@ impl<'a> Control<'a> {
             ControlKind::Count { min, max, .. } => format!("{min} … {max}"),
             ControlKind::Toggle(_) => "true | false".into(),
             ControlKind::Material(_) => "material of Table 2.2".into(),
+            ControlKind::Choice { options, .. } => options.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(" | "),
         };
-        format!(
-            "{}: {} [{}] — {}",
-            self.key,
-            self.label,
-            range.trim(),
-            self.doc
-        )
+        format!("{}: {} [{}] — {}", self.key, self.label, range.trim(), self.doc)
     }
 }

@@ -9,7 +9,10 @@
 pub mod adhesion;
 pub mod collision_params;
 pub mod controls;
+pub mod experiments;
+pub mod fit;
 pub mod hysteresis;
+pub mod material_parameters;
 pub mod restitution;
 
 pub use controls::{Control, ControlKind, ParamError};
@@ -36,7 +39,8 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 3] = [hysteresis::INFO, restitution::INFO, adhesion::INFO];
+pub const SCENES: [SceneInfo; 6] =
+    [hysteresis::INFO, restitution::INFO, adhesion::INFO, experiments::INFO, material_parameters::INFO, fit::INFO];
 
 /// The parameters of one scene, tagged by scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -47,6 +51,12 @@ pub enum SceneParams {
     Restitution(restitution::Params),
     /// Adhesive contact basics.
     Adhesion(adhesion::Params),
+    /// The collision experiments and their best fits.
+    Experiments(experiments::Params),
+    /// Fitted material parameters against size.
+    MaterialParameters(material_parameters::Params),
+    /// Fitting measured restitution.
+    Fit(fit::Params),
 }
 
 impl SceneParams {
@@ -56,6 +66,9 @@ impl SceneParams {
             "hysteresis" => Some(SceneParams::Hysteresis(Default::default())),
             "restitution" => Some(SceneParams::Restitution(Default::default())),
             "adhesion" => Some(SceneParams::Adhesion(Default::default())),
+            "experiments" => Some(SceneParams::Experiments(Default::default())),
+            "material-parameters" => Some(SceneParams::MaterialParameters(Default::default())),
+            "fit" => Some(SceneParams::Fit(Default::default())),
             _ => None,
         }
     }
@@ -66,6 +79,9 @@ impl SceneParams {
             SceneParams::Hysteresis(_) => &SCENES[0],
             SceneParams::Restitution(_) => &SCENES[1],
             SceneParams::Adhesion(_) => &SCENES[2],
+            SceneParams::Experiments(_) => &SCENES[3],
+            SceneParams::MaterialParameters(_) => &SCENES[4],
+            SceneParams::Fit(_) => &SCENES[5],
         }
     }
 
@@ -75,6 +91,9 @@ impl SceneParams {
             SceneParams::Hysteresis(p) => p.controls(),
             SceneParams::Restitution(p) => p.controls(),
             SceneParams::Adhesion(p) => p.controls(),
+            SceneParams::Experiments(p) => p.controls(),
+            SceneParams::MaterialParameters(p) => p.controls(),
+            SceneParams::Fit(p) => p.controls(),
         }
     }
 
@@ -94,12 +113,10 @@ impl SceneParams {
         {
             let mut controls = trial.controls();
             let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
-            let c = controls.iter_mut().find(|c| c.key == key).ok_or_else(|| {
-                ParamError::UnknownKey {
-                    key: key.into(),
-                    known: known.join(", "),
-                }
-            })?;
+            let c = controls
+                .iter_mut()
+                .find(|c| c.key == key)
+                .ok_or_else(|| ParamError::UnknownKey { key: key.into(), known: known.join(", ") })?;
             c.set_text(value)?;
         }
         trial.validate()?;
@@ -127,16 +144,14 @@ impl SceneParams {
         use crate::physics::material::combined_surface_energy;
         match self {
             SceneParams::Hysteresis(p) => {
-                p.collision.surface_energy =
-                    combined_surface_energy(&p.collision.projectile, &p.collision.target)
+                p.collision.surface_energy = combined_surface_energy(&p.collision.projectile, &p.collision.target)
             }
             SceneParams::Restitution(p) => {
-                p.collision.surface_energy =
-                    combined_surface_energy(&p.collision.projectile, &p.collision.target)
+                p.collision.surface_energy = combined_surface_energy(&p.collision.projectile, &p.collision.target)
             }
-            SceneParams::Adhesion(p) => {
-                p.surface_energy = combined_surface_energy(&p.material, &p.material)
-            }
+            SceneParams::Adhesion(p) => p.surface_energy = combined_surface_energy(&p.material, &p.material),
+            // Fitted, not derived from the materials.
+            SceneParams::Experiments(_) | SceneParams::MaterialParameters(_) | SceneParams::Fit(_) => {}
         }
     }
 
@@ -152,9 +167,7 @@ impl SceneParams {
         }
         ca.iter()
             .zip(cb.iter())
-            .filter(|(x, y)| {
-                x.key == y.key && x.display_value() != y.display_value() && !x.style_only
-            })
+            .filter(|(x, y)| x.key == y.key && x.display_value() != y.display_value() && !x.style_only)
             .map(|(x, _)| format!("{} = {}", x.label, x.display_value()))
             .collect()
     }
@@ -199,11 +212,8 @@ pub struct SceneOutput {
 impl SceneOutput {
     /// Scalars as one JSON object `{key: value}`.
     pub fn scalars_json(&self) -> serde_json::Value {
-        let map: serde_json::Map<String, serde_json::Value> = self
-            .scalars
-            .iter()
-            .map(|s| (s.key.to_string(), serde_json::json!(s.value)))
-            .collect();
+        let map: serde_json::Map<String, serde_json::Value> =
+            self.scalars.iter().map(|s| (s.key.to_string(), serde_json::json!(s.value))).collect();
         serde_json::Value::Object(map)
     }
 
@@ -245,18 +255,11 @@ impl Progress {
     }
     /// Errors out if cancellation was requested.
     pub fn check(&self) -> Result<(), SceneError> {
-        if self.cancelled() {
-            Err(SceneError::Cancelled)
-        } else {
-            Ok(())
-        }
+        if self.cancelled() { Err(SceneError::Cancelled) } else { Ok(()) }
     }
     /// Sets the fraction done (0–1).
     pub fn set(&self, fraction: f64) {
-        self.permille.store(
-            (fraction.clamp(0.0, 1.0) * 1000.0) as u32,
-            Ordering::Relaxed,
-        );
+        self.permille.store((fraction.clamp(0.0, 1.0) * 1000.0) as u32, Ordering::Relaxed);
     }
     /// The fraction done (0–1).
     pub fn fraction(&self) -> f64 {
@@ -287,6 +290,9 @@ pub fn compute_cached(
         SceneParams::Hysteresis(p) => hysteresis::compute(p),
         SceneParams::Restitution(p) => restitution::compute(p, progress, &mut caches.restitution),
         SceneParams::Adhesion(p) => adhesion::compute(p),
+        SceneParams::Experiments(p) => experiments::compute(p, progress),
+        SceneParams::MaterialParameters(p) => material_parameters::compute(p),
+        SceneParams::Fit(p) => fit::compute(p, progress),
     }
 }
 
@@ -294,7 +300,5 @@ pub fn compute_cached(
 pub fn logspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     let n = n.max(2);
     let (a, b) = (lo.ln(), hi.ln());
-    (0..n)
-        .map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp())
-        .collect()
+    (0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp()).collect()
 }

@@ -18,7 +18,7 @@ pub const INFO: SceneInfo = SceneInfo {
     id: "restitution",
     title: "Restitution",
     source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
-    explanation: "The coefficient of restitution e_A = −δ̇(t_c)/v (2.23) from the full contact model, \
+    explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
 compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
 v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
 e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
@@ -96,13 +96,7 @@ impl Params {
             v,
             "end of e(v)",
         ));
-        c.push(Control::count(
-            "n_velocities",
-            "velocities",
-            &mut self.n_velocities,
-            (2, 2000),
-            "points of e(v)",
-        ));
+        c.push(Control::count("n_velocities", "velocities", &mut self.n_velocities, (2, 2000), "points of e(v)"));
         let um = ("µm", 1e6);
         c.push(Control::number(
             "r_min",
@@ -124,13 +118,7 @@ impl Params {
             um,
             "end of e(R), v_s(R)",
         ));
-        c.push(Control::count(
-            "n_radii",
-            "radii",
-            &mut self.n_radii,
-            (2, 200),
-            "points of e(R) and v_s(R)",
-        ));
+        c.push(Control::count("n_radii", "radii", &mut self.n_radii, (2, 200), "points of e(R) and v_s(R)"));
         let s = ("s", 1.0);
         c.push(Control::number(
             "t_vis_min",
@@ -152,22 +140,13 @@ impl Params {
             s,
             "last v_s(R) curve",
         ));
-        c.push(Control::count(
-            "n_t_vis",
-            "T_vis curves",
-            &mut self.n_t_vis,
-            (1, 8),
-            "curves of v_s(R)",
-        ));
+        c.push(Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis, (1, 8), "curves of v_s(R)"));
         c
     }
 
     fn check_ranges(&self) -> Result<(), ParamError> {
-        let bad = |what: &str| {
-            Err(ParamError::Inconsistent(format!(
-                "{what}: the lower end must be below the upper end"
-            )))
-        };
+        let bad =
+            |what: &str| Err(ParamError::Inconsistent(format!("{what}: the lower end must be below the upper end")));
         if self.v_min >= self.v_max {
             return bad("v_min/v_max");
         }
@@ -216,10 +195,7 @@ struct Panel {
 /// The collision parameters with the velocity cleared (for cache keys of
 /// panels that do not depend on it).
 fn without_velocity(c: &CollisionParams) -> CollisionParams {
-    CollisionParams {
-        velocity: 0.0,
-        ..c.clone()
-    }
+    CollisionParams { velocity: 0.0, ..c.clone() }
 }
 
 /// Runs `f` over `items` in parallel with progress and cancellation.
@@ -243,33 +219,22 @@ fn par_map<T: Sync, R: Send>(
 }
 
 /// Computes the scene, reusing panels of `cache` whose inputs did not change.
-pub fn compute(
-    p: &Params,
-    progress: &Progress,
-    cache: &mut Cache,
-) -> Result<SceneOutput, SceneError> {
+pub fn compute(p: &Params, progress: &Progress, cache: &mut Cache) -> Result<SceneOutput, SceneError> {
     p.check_ranges()?;
     let key_c = without_velocity(&p.collision);
     let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
     let radii = logspace(p.r_min, p.r_max, p.n_radii);
-    let t_vis: Vec<f64> = logspace(
-        p.t_vis_min,
-        p.t_vis_max.max(p.t_vis_min * 1.000001),
-        p.n_t_vis.max(2),
-    )
-    .into_iter()
-    .take(p.n_t_vis)
-    .collect();
+    let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
+        .into_iter()
+        .take(p.n_t_vis)
+        .collect();
     let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
     let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
     let key_s: RangeKey = (key_c, p.r_min, p.r_max, p.n_radii);
     let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
     let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
     let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
-    let need_s = cache
-        .sticking
-        .as_ref()
-        .is_none_or(|(k, f, _)| *k != key_s || *f != family);
+    let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
     // Rough work units: a bisection costs ~20 collisions.
     let total = usize::from(need_v) * (velocities.len() + 20)
         + usize::from(need_r) * radii.len()
@@ -301,8 +266,7 @@ pub fn compute(
         out.notes.extend(panel.notes.iter().cloned());
     }
     if p.collision.plasticity {
-        out.notes
-            .push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+        out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
     }
     Ok(out)
 }
@@ -318,11 +282,7 @@ fn velocity_panel(
     let opts = p.collision.options();
     // The bisection for v_s is sequential: run it beside the velocity sweep.
     let (results, v_s) = rayon::join(
-        || {
-            par_map(velocities, progress, done, total, |&v| {
-                Ok(restitution(&setup, v, &opts)?)
-            })
-        },
+        || par_map(velocities, progress, done, total, |&v| Ok(restitution(&setup, v, &opts)?)),
         || sticking_velocity(&setup, &opts, 1e-4),
     );
     let (results, v_s) = (results?, v_s?);
@@ -336,53 +296,24 @@ fn velocity_panel(
         Axis::log("impact velocity v", "m/s"),
         Axis::linear("coefficient of restitution", ""),
     )
-    .with(Series::new(
-        "e (model)",
-        results.iter().map(|r| [r.velocity, r.e]).collect(),
-        Style::Line,
-        0,
-    ))
-    .with(Series::new(
-        "e_JKR (2.24)",
-        velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(),
-        Style::Dashed,
-        1,
-    ))
-    .with(Series::new(
-        "e_D (2.26)",
-        velocities
-            .iter()
-            .map(|&v| [v, pair.e_viscous(a, v)])
-            .collect(),
-        Style::Dashed,
-        2,
-    ))
+    .with(Series::new("e (model)", results.iter().map(|r| [r.velocity, r.e]).collect(), Style::Line, 0))
+    .with(Series::new("e_JKR (2.24)", velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(), Style::Dashed, 1))
+    .with(Series::new("e_D (2.26)", velocities.iter().map(|&v| [v, pair.e_viscous(a, v)]).collect(), Style::Dashed, 2))
     .with(Series::new(
         "e_I (2.27)",
-        velocities
-            .iter()
-            .map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))])
-            .collect(),
+        velocities.iter().map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))]).collect(),
         Style::Dashed,
         3,
     ));
     if p.collision.plasticity {
         fig = fig.with(Series::new(
             "e_P (2.29)",
-            velocities
-                .iter()
-                .map(|&v| [v, plasticity::e_plastic(v, v_y)])
-                .collect(),
+            velocities.iter().map(|&v| [v, plasticity::e_plastic(v, v_y)]).collect(),
             Style::Dashed,
             4,
         ));
     }
-    fig = fig.with(Series::new(
-        "sticking velocity v_s",
-        vec![[v_s, 0.0], [v_s, 1.0]],
-        Style::Dashed,
-        6,
-    ));
+    fig = fig.with(Series::new("sticking velocity v_s", vec![[v_s, 0.0], [v_s, 1.0]], Style::Dashed, 6));
     let e_max = results.iter().map(|r| r.e).fold(0.0, f64::max);
     let mut notes = Vec::new();
     if v_s.is_infinite() {
@@ -392,12 +323,7 @@ fn velocity_panel(
         notes,
         figure: fig,
         scalars: vec![
-            Scalar {
-                key: "v_stick",
-                label: "sticking velocity v_s (model)",
-                value: v_s,
-                unit: "m s^-1",
-            },
+            Scalar { key: "v_stick", label: "sticking velocity v_s (model)", value: v_s, unit: "m s^-1" },
             Scalar {
                 key: "v_c",
                 label: "JKR sticking velocity v_c (2.25)",
@@ -410,12 +336,7 @@ fn velocity_panel(
                 value: v_y,
                 unit: "m s^-1",
             },
-            Scalar {
-                key: "e_max",
-                label: "largest e on the velocity grid",
-                value: e_max,
-                unit: "",
-            },
+            Scalar { key: "e_max", label: "largest e on the velocity grid", value: e_max, unit: "" },
         ],
     })
 }
@@ -446,29 +367,10 @@ fn radius_panel(
         Axis::log("reduced radius R", "µm"),
         Axis::linear("coefficient of restitution", ""),
     )
-    .with(Series::new(
-        "e_A (model)",
-        rows.iter().map(|r| [r[0] * 1e6, r[1]]).collect(),
-        Style::Line,
-        0,
-    ))
-    .with(Series::new(
-        "e_I (2.27)",
-        rows.iter().map(|r| [r[0] * 1e6, r[2]]).collect(),
-        Style::Dashed,
-        3,
-    ))
-    .with(Series::new(
-        "e_JKR (2.24)",
-        rows.iter().map(|r| [r[0] * 1e6, r[3]]).collect(),
-        Style::Dashed,
-        1,
-    ));
-    Ok(Panel {
-        figure: fig,
-        scalars: Vec::new(),
-        notes: Vec::new(),
-    })
+    .with(Series::new("e_A (model)", rows.iter().map(|r| [r[0] * 1e6, r[1]]).collect(), Style::Line, 0))
+    .with(Series::new("e_I (2.27)", rows.iter().map(|r| [r[0] * 1e6, r[2]]).collect(), Style::Dashed, 3))
+    .with(Series::new("e_JKR (2.24)", rows.iter().map(|r| [r[0] * 1e6, r[3]]).collect(), Style::Dashed, 1));
+    Ok(Panel { figure: fig, scalars: Vec::new(), notes: Vec::new() })
 }
 
 fn sticking_panel(
@@ -479,11 +381,8 @@ fn sticking_panel(
     done: &AtomicUsize,
     total: usize,
 ) -> Result<Panel, SceneError> {
-    let jobs: Vec<(usize, f64)> = t_vis
-        .iter()
-        .enumerate()
-        .flat_map(|(i, _)| radii.iter().map(move |&r| (i, r)))
-        .collect();
+    let jobs: Vec<(usize, f64)> =
+        t_vis.iter().enumerate().flat_map(|(i, _)| radii.iter().map(move |&r| (i, r))).collect();
     let vs = par_map(&jobs, progress, done, total, |&(i, r)| {
         let mut c = p.at_radius(r);
         c.t_vis = t_vis[i];
@@ -498,29 +397,14 @@ fn sticking_panel(
         Axis::log("sticking velocity", "m/s"),
     );
     for (i, tv) in t_vis.iter().enumerate() {
-        let pts = radii
-            .iter()
-            .enumerate()
-            .map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]])
-            .collect();
-        fig = fig.with(Series::new(
-            format!("T_vis = {tv:.0e} s"),
-            pts,
-            Style::Line,
-            i % 6,
-        ));
+        let pts = radii.iter().enumerate().map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]]).collect();
+        fig = fig.with(Series::new(format!("T_vis = {tv:.0e} s"), pts, Style::Line, i % 6));
     }
-    let jkr = radii
-        .iter()
-        .map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()])
-        .collect();
+    let jkr = radii.iter().map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()]).collect();
     fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));
     let mut notes = Vec::new();
     for (i, tv) in t_vis.iter().enumerate() {
-        let stuck = vs[i * radii.len()..(i + 1) * radii.len()]
-            .iter()
-            .filter(|v| v.is_infinite())
-            .count();
+        let stuck = vs[i * radii.len()..(i + 1) * radii.len()].iter().filter(|v| v.is_infinite()).count();
         if stuck > 0 {
             notes.push(format!(
                 "T_vis = {tv:.0e} s: at {stuck} of {} radii the spheres stick even at 10⁴ m/s (not drawn).",
@@ -528,9 +412,5 @@ fn sticking_panel(
             ));
         }
     }
-    Ok(Panel {
-        figure: fig,
-        scalars: Vec::new(),
-        notes,
-    })
+    Ok(Panel { figure: fig, scalars: Vec::new(), notes })
 }

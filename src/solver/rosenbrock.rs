@@ -73,58 +73,16 @@ pub struct SolverStats {
 const GAM: f64 = 0.25;
 const A: [[f64; 5]; 5] = [
     [1.544, 0.0, 0.0, 0.0, 0.0],
-    [
-        0.946_678_528_081_582_6,
-        0.255_701_169_898_328_4,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        3.314_825_187_068_521,
-        2.896_124_015_972_201,
-        0.998_641_913_997_781_7,
-        0.0,
-        0.0,
-    ],
-    [
-        1.221_224_509_226_641,
-        6.019_134_481_288_629,
-        12.537_083_329_320_87,
-        -0.687_886_036_105_895,
-        0.0,
-    ],
-    [
-        1.221_224_509_226_641,
-        6.019_134_481_288_629,
-        12.537_083_329_320_87,
-        -0.687_886_036_105_895,
-        1.0,
-    ],
+    [0.946_678_528_081_582_6, 0.255_701_169_898_328_4, 0.0, 0.0, 0.0],
+    [3.314_825_187_068_521, 2.896_124_015_972_201, 0.998_641_913_997_781_7, 0.0, 0.0],
+    [1.221_224_509_226_641, 6.019_134_481_288_629, 12.537_083_329_320_87, -0.687_886_036_105_895, 0.0],
+    [1.221_224_509_226_641, 6.019_134_481_288_629, 12.537_083_329_320_87, -0.687_886_036_105_895, 1.0],
 ];
 const C: [[f64; 5]; 5] = [
     [-5.6688, 0.0, 0.0, 0.0, 0.0],
-    [
-        -2.430_093_356_833_875,
-        -0.206_359_915_709_191_5,
-        0.0,
-        0.0,
-        0.0,
-    ],
-    [
-        -0.107_352_905_815_137_5,
-        -9.594_562_251_023_355,
-        -20.470_286_148_096_16,
-        0.0,
-        0.0,
-    ],
-    [
-        7.496_443_313_967_647,
-        -10.246_804_314_643_52,
-        -33.999_903_528_199_05,
-        11.708_908_932_061_6,
-        0.0,
-    ],
+    [-2.430_093_356_833_875, -0.206_359_915_709_191_5, 0.0, 0.0, 0.0],
+    [-0.107_352_905_815_137_5, -9.594_562_251_023_355, -20.470_286_148_096_16, 0.0, 0.0],
+    [7.496_443_313_967_647, -10.246_804_314_643_52, -33.999_903_528_199_05, 11.708_908_932_061_6, 0.0],
     [
         8.083_246_795_921_522,
         -7.981_132_988_064_893,
@@ -222,25 +180,13 @@ pub struct Rosenbrock4<const N: usize> {
 impl<const N: usize> Rosenbrock4<N> {
     /// A new integrator starting with step `h0`.
     pub fn new(rtol: f64, scale: State<N>, h0: f64) -> Self {
-        Self {
-            rtol,
-            scale,
-            h_min: h0 * 1e-12,
-            max_steps: 200_000,
-            h: h0,
-            stats: SolverStats::default(),
-        }
+        Self { rtol, scale, h_min: h0 * 1e-12, max_steps: 200_000, h: h0, stats: SolverStats::default() }
     }
 
     /// One attempted step of size `h` from `y`. Returns the new state and the
     /// scaled error norm (≤ 1 means acceptable), or `None` if the system
     /// refused a stage state.
-    fn try_step<S: StiffSystem<N>>(
-        &mut self,
-        sys: &S,
-        y: &State<N>,
-        h: f64,
-    ) -> Option<(State<N>, f64)> {
+    fn try_step<S: StiffSystem<N>>(&mut self, sys: &S, y: &State<N>, h: f64) -> Option<(State<N>, f64)> {
         self.stats.jacobian_evals += 1;
         let jac = sys.jacobian(y)?;
         let mut w = -jac;
@@ -274,11 +220,7 @@ impl<const N: usize> Rosenbrock4<N> {
             sum += r * r;
         }
         let norm = (sum / N as f64).sqrt();
-        if norm.is_finite() && y_new.iter().all(|v| v.is_finite()) {
-            Some((y_new, norm))
-        } else {
-            None
-        }
+        if norm.is_finite() && y_new.iter().all(|v| v.is_finite()) { Some((y_new, norm)) } else { None }
     }
 
     /// Advances `y` by one accepted step no longer than `h_max`, adapting the
@@ -296,23 +238,13 @@ impl<const N: usize> Rosenbrock4<N> {
         let mut rejected = false;
         loop {
             if h < self.h_min {
-                return Err(SolverError::StepSizeUnderflow {
-                    steps: self.stats.accepted,
-                    h,
-                });
+                return Err(SolverError::StepSizeUnderflow { steps: self.stats.accepted, h });
             }
-            match self
-                .try_step(sys, y, h)
-                .filter(|(y_new, _)| sys.admissible(y, y_new))
-            {
+            match self.try_step(sys, y, h).filter(|(y_new, _)| sys.admissible(y, y_new)) {
                 Some((y_new, err)) if err <= 1.0 => {
                     self.stats.accepted += 1;
                     let growth = if rejected { 1.0 } else { 5.0 };
-                    let factor = if err == 0.0 {
-                        growth
-                    } else {
-                        (0.9 * err.powf(-0.25)).clamp(0.2, growth)
-                    };
+                    let factor = if err == 0.0 { growth } else { (0.9 * err.powf(-0.25)).clamp(0.2, growth) };
                     self.h = h * factor;
                     return Ok((y_new, h));
                 }
@@ -332,12 +264,7 @@ impl<const N: usize> Rosenbrock4<N> {
 
     /// Integrates from `y0` over a time span `t_end` and returns the final
     /// state (no events; used by tests and simple problems).
-    pub fn integrate<S: StiffSystem<N>>(
-        &mut self,
-        sys: &S,
-        y0: State<N>,
-        t_end: f64,
-    ) -> Result<State<N>, SolverError> {
+    pub fn integrate<S: StiffSystem<N>>(&mut self, sys: &S, y0: State<N>, t_end: f64) -> Result<State<N>, SolverError> {
         let mut t = 0.0;
         let mut y = y0;
         while t < t_end {
@@ -367,9 +294,7 @@ mod tests {
     }
 
     fn system(stiff: f64) -> Linear {
-        Linear(Matrix::<3>::new(
-            -1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, -stiff,
-        ))
+        Linear(Matrix::<3>::new(-1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, -1.0, -stiff))
     }
 
     fn exact_first(t: f64) -> f64 {
@@ -435,9 +360,7 @@ mod tests {
         // integrator take steps set by the slow mode.
         let sys = system(1e9);
         let mut s = Rosenbrock4::<3>::new(1e-8, State::<3>::from_element(1e-3), 1e-6);
-        let y = s
-            .integrate(&sys, State::<3>::new(1.0, 1.0, 1.0), 5.0)
-            .expect("integrates");
+        let y = s.integrate(&sys, State::<3>::new(1.0, 1.0, 1.0), 5.0).expect("integrates");
         assert!((y[0] - exact_first(5.0)).abs() < 1e-7, "{}", y[0]);
         assert!(s.stats.accepted < 2_000, "{:?}", s.stats);
     }
@@ -445,13 +368,9 @@ mod tests {
     #[test]
     fn infinitely_stiff_modes_are_annihilated_in_one_step() {
         // L-stability with stiff accuracy: R(∞) = 0.
-        let sys = Linear(Matrix::<3>::new(
-            -1e15, 0.0, 0.0, 0.0, -1e12, 0.0, 0.0, 0.0, -1e9,
-        ));
+        let sys = Linear(Matrix::<3>::new(-1e15, 0.0, 0.0, 0.0, -1e12, 0.0, 0.0, 0.0, -1e9));
         let mut s = Rosenbrock4::<3>::new(1.0, State::<3>::from_element(1.0), 1.0);
-        let (y, _) = s
-            .try_step(&sys, &State::<3>::new(1.0, 1.0, 1.0), 1.0)
-            .expect("step");
+        let (y, _) = s.try_step(&sys, &State::<3>::new(1.0, 1.0, 1.0), 1.0).expect("step");
         assert!(y.iter().all(|v| v.abs() < 1e-6), "{y:?}");
     }
 
@@ -467,9 +386,7 @@ mod tests {
             }
         }
         let mut s = Rosenbrock4::<1>::new(1e-9, State::<1>::new(1.0), 10.0);
-        let y = s
-            .integrate(&Walled, State::<1>::new(0.0), 3.0)
-            .expect("integrates");
+        let y = s.integrate(&Walled, State::<1>::new(0.0), 3.0).expect("integrates");
         assert!((y[0] - (1.0 - (-3.0f64).exp())).abs() < 1e-7);
     }
 }

@@ -260,7 +260,7 @@ fn reproduce(dir: &Path) -> Result<()> {
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
     write_atomically(&dir.join("reproduce.csv"), &crate::reproduce::csv(&checks)?)?;
-    for name in ["ice-bounce-8ms", "ice-stick-2ms", "restitution-ice"] {
+    for name in ["ice-bounce-8ms", "ice-stick-2ms", "restitution-ice", "experiments-fig-2-11", "material-parameters"] {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;
         write_outputs(&out, &dir.join(name))?;

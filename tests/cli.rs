@@ -70,4 +70,62 @@ fn reproduce_writes_the_table() {
     assert!(md.contains("| Fig. 2.2 |"));
     assert!(dir.path().join("reproduce.csv").exists());
     assert!(dir.path().join("restitution-ice/restitution-velocity.png").exists());
+    assert!(dir.path().join("experiments-fig-2-11/fig-2-11-wall-mica.svg").exists());
+    assert!(dir.path().join("material-parameters/yield-length.csv").exists());
+}
+
+#[test]
+fn fit_command_recovers_the_synthetic_parameters() {
+    let out = grainscope(&[
+        "fit",
+        "assets/examples/wall-mica-synthetic.csv",
+        "--materials",
+        "AF,mica",
+        "--geometry",
+        "wall",
+        "--radius",
+        "2.45e-6",
+        "--grid",
+        "10",
+        "--json",
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    // Truth of the synthetic data: the Wall et al. mica fit of Table 2.3.
+    for (key, truth) in [("gamma", 0.13), ("t_vis", 9.79e-11), ("yield_strength", 1.92e8)] {
+        let lo = v[key]["low"].as_f64().expect("low");
+        let hi = v[key]["high"].as_f64().expect("high");
+        assert!(lo <= truth * 1.1 && truth * 0.9 <= hi, "{key}: {truth} vs [{lo}, {hi}]");
+    }
+}
+
+#[test]
+fn fit_command_rejects_malformed_data_with_the_line() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(&bad, "velocity [m/s],restitution\n3,0.5\n4,oops\n").expect("write");
+    let out = grainscope(&[
+        "fit",
+        bad.to_str().expect("utf8"),
+        "--materials",
+        "AF,mica",
+        "--geometry",
+        "wall",
+        "--radius",
+        "2e-6",
+    ]);
+    assert!(!out.status.success());
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("line 3") && err.contains("oops"), "{err}");
+    let out = grainscope(&[
+        "fit",
+        bad.to_str().expect("utf8"),
+        "--materials",
+        "unobtainium",
+        "--geometry",
+        "wall",
+        "--radius",
+        "2e-6",
+    ]);
+    assert!(!out.status.success());
 }

@@ -117,7 +117,7 @@ enum Job {
 enum Dialog {
     Open(Option<PathBuf>),
     Save(Option<PathBuf>),
-    Export(Option<PathBuf>, Figure),
+    Export(Option<PathBuf>, Box<Figure>),
     ImportData(Option<PathBuf>),
 }
 
@@ -781,7 +781,7 @@ impl GrainscopeApp {
                     .add_filter("PNG, SVG or CSV", &["png", "svg", "csv"])
                     .set_file_name(name)
                     .save_file();
-                Dialog::Export(path, fig)
+                Dialog::Export(path, Box::new(fig))
             });
         }
     }

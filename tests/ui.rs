@@ -55,3 +55,22 @@ fn switching_scene_and_pinning_keeps_the_app_alive() {
     h.run();
     assert!(h.query_all_by_label_contains("pinned: monomer radius r₀").next().is_some());
 }
+
+#[test]
+fn importing_measurements_opens_the_fit_scene_and_bad_files_change_nothing() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let good = dir.path().join("good.csv");
+    std::fs::write(&good, "velocity [m/s],restitution\n5,0.7\n10,0.75\n20,0.77\n").expect("write");
+    let bad = dir.path().join("bad.csv");
+    std::fs::write(&bad, "velocity [m/s],restitution\n5,0.7\n-10,0.75\n").expect("write");
+    let mut app = GrainscopeApp::new(egui::Context::default(), None);
+    let before = app.session.clone();
+    app.import_data(&bad);
+    assert_eq!(app.session, before, "a rejected file changed the session");
+    app.import_data(&good);
+    assert_eq!(app.params().info().id, "fit");
+    match app.params() {
+        grainscope::scene::SceneParams::Fit(p) => assert_eq!(p.data.len(), 3),
+        other => panic!("wrong scene {other:?}"),
+    }
+}

@@ -74,7 +74,10 @@ fn main() {
         scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene")
     });
     println!("  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms", t.as_secs_f64() * 1e3);
-    let adhesion = SceneParams::default_for("adhesion").expect("scene");
-    let t = time(|| scene::compute(&adhesion, &Progress::default()).expect("scene"));
-    println!("  adhesion basics:                                {:>8.2} ms", t.as_secs_f64() * 1e3);
+    println!("  every scene with its default parameters:");
+    for info in scene::SCENES {
+        let p = SceneParams::default_for(info.id).expect("scene");
+        let t = time(|| scene::compute(&p, &Progress::default()).expect("scene"));
+        println!("    {:<24} {:>9.3} ms{}", info.id, t.as_secs_f64() * 1e3, if info.heavy { "  (worker)" } else { "" });
+    }
 }

@@ -114,7 +114,7 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 9] = [
+pub const SHIPPED: [(&str, &str); 14] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -124,6 +124,11 @@ pub const SHIPPED: [(&str, &str); 9] = [
     ("experiments-fig-2-11.ron", include_str!("../presets/experiments-fig-2-11.ron")),
     ("material-parameters.ron", include_str!("../presets/material-parameters.ron")),
     ("fit-wall-mica-synthetic.ron", include_str!("../presets/fit-wall-mica-synthetic.ron")),
+    ("rolling-contact-psl.ron", include_str!("../presets/rolling-contact-psl.ron")),
+    ("rolling-silica-force.ron", include_str!("../presets/rolling-silica-force.ron")),
+    ("rolling-psl-glass-force.ron", include_str!("../presets/rolling-psl-glass-force.ron")),
+    ("rolling-ding-critical.ron", include_str!("../presets/rolling-ding-critical.ron")),
+    ("rolling-psl-aluminium-rocking.ron", include_str!("../presets/rolling-psl-aluminium-rocking.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

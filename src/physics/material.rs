@@ -75,8 +75,8 @@ mod tests {
     fn table_parses_completely() {
         let table: Vec<Material> =
             ron::from_str(include_str!("../../assets/materials.ron")).expect("materials.ron parses");
-        assert_eq!(table.len(), 16);
-        assert_eq!(materials().len(), 16);
+        assert_eq!(table.len(), 17);
+        assert_eq!(materials().len(), 17);
     }
 
     #[test]

@@ -8,6 +8,7 @@ pub mod experiments;
 pub mod fit;
 pub mod material;
 pub mod plasticity;
+pub mod rolling;
 
 /// Error for physically meaningless input to a model function.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]

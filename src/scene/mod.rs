@@ -8,12 +8,17 @@
 
 pub mod adhesion;
 pub mod collision_params;
+pub mod contact_torque;
 pub mod controls;
+pub mod critical_displacement;
 pub mod experiments;
 pub mod fit;
 pub mod hysteresis;
 pub mod material_parameters;
 pub mod restitution;
+pub mod rocking;
+pub mod rolling_force;
+pub mod rolling_params;
 
 pub use controls::{Control, ControlKind, ParamError};
 
@@ -39,8 +44,18 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 6] =
-    [hysteresis::INFO, restitution::INFO, adhesion::INFO, experiments::INFO, material_parameters::INFO, fit::INFO];
+pub const SCENES: [SceneInfo; 10] = [
+    hysteresis::INFO,
+    restitution::INFO,
+    adhesion::INFO,
+    experiments::INFO,
+    material_parameters::INFO,
+    fit::INFO,
+    contact_torque::INFO,
+    rolling_force::INFO,
+    critical_displacement::INFO,
+    rocking::INFO,
+];
 
 /// The parameters of one scene, tagged by scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -57,6 +72,14 @@ pub enum SceneParams {
     MaterialParameters(material_parameters::Params),
     /// Fitting measured restitution.
     Fit(fit::Params),
+    /// The asymmetric contact under torque.
+    ContactTorque(contact_torque::Params),
+    /// Rolling force against radius.
+    RollingForce(rolling_force::Params),
+    /// Critical rolling displacement against radius.
+    CriticalDisplacement(critical_displacement::Params),
+    /// A rocking sphere.
+    Rocking(rocking::Params),
 }
 
 impl SceneParams {
@@ -69,6 +92,10 @@ impl SceneParams {
             "experiments" => Some(SceneParams::Experiments(Default::default())),
             "material-parameters" => Some(SceneParams::MaterialParameters(Default::default())),
             "fit" => Some(SceneParams::Fit(Default::default())),
+            "contact-torque" => Some(SceneParams::ContactTorque(Default::default())),
+            "rolling-force" => Some(SceneParams::RollingForce(Default::default())),
+            "critical-displacement" => Some(SceneParams::CriticalDisplacement(Default::default())),
+            "rocking" => Some(SceneParams::Rocking(Default::default())),
             _ => None,
         }
     }
@@ -76,12 +103,16 @@ impl SceneParams {
     /// The scene's static description.
     pub fn info(&self) -> &'static SceneInfo {
         match self {
-            SceneParams::Hysteresis(_) => &SCENES[0],
-            SceneParams::Restitution(_) => &SCENES[1],
-            SceneParams::Adhesion(_) => &SCENES[2],
-            SceneParams::Experiments(_) => &SCENES[3],
-            SceneParams::MaterialParameters(_) => &SCENES[4],
-            SceneParams::Fit(_) => &SCENES[5],
+            SceneParams::Hysteresis(_) => &hysteresis::INFO,
+            SceneParams::Restitution(_) => &restitution::INFO,
+            SceneParams::Adhesion(_) => &adhesion::INFO,
+            SceneParams::Experiments(_) => &experiments::INFO,
+            SceneParams::MaterialParameters(_) => &material_parameters::INFO,
+            SceneParams::Fit(_) => &fit::INFO,
+            SceneParams::ContactTorque(_) => &contact_torque::INFO,
+            SceneParams::RollingForce(_) => &rolling_force::INFO,
+            SceneParams::CriticalDisplacement(_) => &critical_displacement::INFO,
+            SceneParams::Rocking(_) => &rocking::INFO,
         }
     }
 
@@ -94,6 +125,10 @@ impl SceneParams {
             SceneParams::Experiments(p) => p.controls(),
             SceneParams::MaterialParameters(p) => p.controls(),
             SceneParams::Fit(p) => p.controls(),
+            SceneParams::ContactTorque(p) => p.controls(),
+            SceneParams::RollingForce(p) => p.controls(),
+            SceneParams::CriticalDisplacement(p) => p.controls(),
+            SceneParams::Rocking(p) => p.controls(),
         }
     }
 
@@ -150,6 +185,10 @@ impl SceneParams {
                 p.collision.surface_energy = combined_surface_energy(&p.collision.projectile, &p.collision.target)
             }
             SceneParams::Adhesion(p) => p.surface_energy = combined_surface_energy(&p.material, &p.material),
+            SceneParams::ContactTorque(p) => p.contact.material_changed(),
+            SceneParams::RollingForce(p) => p.contact.material_changed(),
+            SceneParams::CriticalDisplacement(p) => p.contact.material_changed(),
+            SceneParams::Rocking(p) => p.contact.material_changed(),
             // Fitted, not derived from the materials.
             SceneParams::Experiments(_) | SceneParams::MaterialParameters(_) | SceneParams::Fit(_) => {}
         }
@@ -293,6 +332,10 @@ pub fn compute_cached(
         SceneParams::Experiments(p) => experiments::compute(p, progress),
         SceneParams::MaterialParameters(p) => material_parameters::compute(p),
         SceneParams::Fit(p) => fit::compute(p, progress),
+        SceneParams::ContactTorque(p) => contact_torque::compute(p),
+        SceneParams::RollingForce(p) => rolling_force::compute(p),
+        SceneParams::CriticalDisplacement(p) => critical_displacement::compute(p),
+        SceneParams::Rocking(p) => rocking::compute(p),
     }
 }
 

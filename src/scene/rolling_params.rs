@@ -1,0 +1,109 @@
+//! Parameters shared by the rolling scenes (thesis ch. 3): a sphere on a flat
+//! substrate or on an equal sphere.
+
+use super::controls::Control;
+use crate::physics::contact::Pair;
+use crate::physics::material::{Material, combined_modulus};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// The rolling contact. SI units.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct RollingParams {
+    /// Material of the rolling sphere.
+    pub sphere: Material,
+    /// Material of the substrate (or of the other sphere).
+    pub substrate: Material,
+    /// The sphere rests on a flat substrate (true) or on an equal sphere (false).
+    pub wall: bool,
+    /// Sphere radius, m (default 5 µm; 0.1 µm – 1 mm).
+    pub radius: f64,
+    /// Combined surface energy γ, J m⁻² (default 0.05 = 2 × 0.025 for PSL).
+    pub surface_energy: f64,
+}
+
+impl Default for RollingParams {
+    fn default() -> Self {
+        let psl = Material::named("PSL").cloned().unwrap_or_else(Material::water_ice);
+        RollingParams { sphere: psl.clone(), substrate: psl, wall: true, radius: 5e-6, surface_energy: 0.05 }
+    }
+}
+
+impl RollingParams {
+    /// A preset contact.
+    pub fn of(sphere: &str, substrate: &str, wall: bool, radius: f64, surface_energy: f64) -> Self {
+        let d = RollingParams::default();
+        RollingParams {
+            sphere: Material::named(sphere).cloned().unwrap_or(d.sphere),
+            substrate: Material::named(substrate).cloned().unwrap_or(d.substrate),
+            wall,
+            radius,
+            surface_energy,
+        }
+    }
+
+    /// The documented parameters; `with_radius` adds the radius slider.
+    pub fn controls(&mut self, with_radius: bool) -> Vec<Control<'_>> {
+        let mut c = vec![
+            Control::material("sphere", "sphere material", &mut self.sphere, "material of the rolling sphere"),
+            Control::material(
+                "substrate",
+                "substrate material",
+                &mut self.substrate,
+                "flat substrate or second sphere",
+            ),
+            Control::toggle("wall", "sphere on flat", &mut self.wall, "on a flat substrate (else on an equal sphere)"),
+        ];
+        if with_radius {
+            c.push(Control::number(
+                "radius",
+                "sphere radius",
+                &mut self.radius,
+                "m",
+                (1e-7, 1e-3),
+                true,
+                ("µm", 1e6),
+                "radius of the rolling sphere",
+            ));
+        }
+        c.push(Control::number(
+            "surface_energy",
+            "surface energy γ",
+            &mut self.surface_energy,
+            "J m^-2",
+            (1e-3, 10.0),
+            true,
+            ("J/m²", 1.0),
+            "combined surface energy (2γ_L for like materials)",
+        ));
+        c
+    }
+
+    /// After a material changed: γ = 2(γ₁γ₂)^{1/2} of the chosen materials.
+    pub fn material_changed(&mut self) {
+        self.surface_energy = crate::physics::material::combined_surface_energy(&self.sphere, &self.substrate);
+    }
+
+    /// Mass of the sphere of radius `r`, kg.
+    pub fn sphere_mass(&self, r: f64) -> f64 {
+        self.sphere.density * 4.0 / 3.0 * PI * r.powi(3)
+    }
+
+    /// The contact of a sphere of radius `r`: R = r on a flat, r/2 on an equal sphere.
+    pub fn pair(&self, r: f64) -> Pair {
+        let m = self.sphere_mass(r);
+        let (radius, mass) = if self.wall { (r, m) } else { (r / 2.0, m / 2.0) };
+        Pair {
+            modulus: combined_modulus(&self.sphere, &self.substrate),
+            radius,
+            mass,
+            surface_energy: self.surface_energy,
+        }
+    }
+
+    /// Moment of inertia (2/5)mr² of the sphere, kg m² (as in (3.17)).
+    pub fn inertia(&self, r: f64) -> f64 {
+        0.4 * self.sphere_mass(r) * r * r
+    }
+}

@@ -258,6 +258,7 @@ fn reproduce(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let mut checks = crate::reproduce::chapter2()?;
     checks.extend(crate::reproduce::chapter3());
+    checks.extend(crate::reproduce::chapter6()?);
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
     write_atomically(&dir.join("reproduce.csv"), &crate::reproduce::csv(&checks)?)?;
@@ -272,6 +273,10 @@ fn reproduce(dir: &Path) -> Result<()> {
         "rolling-silica-force",
         "rolling-ding-critical",
         "rolling-psl-aluminium-rocking",
+        "debris-fig-6-1-top",
+        "debris-fig-6-1-bottom",
+        "debris-fig-6-2",
+        "debris-fig-6-3",
     ] {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;

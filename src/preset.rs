@@ -114,7 +114,7 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 14] = [
+pub const SHIPPED: [(&str, &str); 18] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -129,6 +129,10 @@ pub const SHIPPED: [(&str, &str); 14] = [
     ("rolling-psl-glass-force.ron", include_str!("../presets/rolling-psl-glass-force.ron")),
     ("rolling-ding-critical.ron", include_str!("../presets/rolling-ding-critical.ron")),
     ("rolling-psl-aluminium-rocking.ron", include_str!("../presets/rolling-psl-aluminium-rocking.ron")),
+    ("debris-fig-6-1-top.ron", include_str!("../presets/debris-fig-6-1-top.ron")),
+    ("debris-fig-6-1-bottom.ron", include_str!("../presets/debris-fig-6-1-bottom.ron")),
+    ("debris-fig-6-2.ron", include_str!("../presets/debris-fig-6-2.ron")),
+    ("debris-fig-6-3.ron", include_str!("../presets/debris-fig-6-3.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

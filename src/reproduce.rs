@@ -155,6 +155,60 @@ pub fn chapter3() -> Vec<Check> {
     ]
 }
 
+/// The checks of chapter 6 (smallest fragments).
+pub fn chapter6() -> Result<Vec<Check>, PhysicsError> {
+    use crate::physics::debris::{AU, TABLE_6_1, ratio_to_blowout, smallest_fragment_64, split_size, splitting_limit};
+    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
+        figure,
+        quantity,
+        thesis,
+        ours,
+        tolerance,
+        note,
+        known: false,
+    };
+    let sil = TABLE_6_1[0];
+    let (eta, v) = (1e-2, 20.0);
+    // (6.4) at s_min = s_max = 2^{-1/3} s₀: solve 2^{-1/3}(ηρs₀v² + 24γ) = 24γ for s₀.
+    let s0 = 24.0 * sil.surface_energy * (2f64.cbrt() - 1.0) / (eta * sil.density * v * v);
+    let s_limit = 2f64.powf(-1.0 / 3.0) * s0;
+    let coefficient = s_limit * eta * sil.density * v * v / sil.surface_energy;
+    let consistent = smallest_fragment_64(&sil, eta, v, s0, s_limit) / s_limit;
+    let p = crate::scene::debris_params::FragmentParams::default();
+    let collider = crate::scene::smallest_fragment::collider_for(&p, 0, 1e-6).unwrap_or(f64::NAN);
+    Ok(vec![
+        check("Eq. 6.6", "coefficient of gamma/(eta rho v^2) from (6.4) at s_min = s_max", 5.0, coefficient, 0.1, ""),
+        check("Eq. 6.4", "(6.4) at that s0 returns s_min = s_max (ratio)", 1.0, consistent, 1e-9, ""),
+        check(
+            "Eqs. 6.5/6.6",
+            "s_split / s_min(6.6)",
+            0.6,
+            split_size(&sil, eta, v) / splitting_limit(&sil, eta, v),
+            1e-12,
+            "(6.5) is 3/5 of (6.6)",
+        ),
+        check(
+            "Fig. 6.1",
+            "collider radius for 1 um silicate fragments at 20 m/s [m] (\"a few cm\")",
+            0.03,
+            collider,
+            0.025,
+            "",
+        ),
+        Check {
+            known: true,
+            ..check(
+                "Eq. 6.8",
+                "s_min/s_blow prefactor (5 AU, f = eta = 1e-2, gamma = 0.1, L = M = 1)",
+                2.4,
+                ratio_to_blowout(0.1, 1e-2, 1e-2, 5.0 * AU, 1.0),
+                0.1,
+                "recomputed from (6.6) and the beta = 1/2 blow-out size; the printed 2.4 matches beta = 1",
+            )
+        },
+    ])
+}
+
 /// A number as printed: plain in a readable range, otherwise scientific.
 fn plain(v: f64) -> String {
     if v == 0.0 || (1e-3..1e4).contains(&v.abs()) { format!("{v}") } else { format!("{v:e}") }

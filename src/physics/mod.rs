@@ -4,6 +4,7 @@
 pub mod collision;
 pub mod contact;
 pub mod crack;
+pub mod debris;
 pub mod experiments;
 pub mod fit;
 pub mod material;

@@ -11,6 +11,9 @@ pub mod collision_params;
 pub mod contact_torque;
 pub mod controls;
 pub mod critical_displacement;
+pub mod critical_energies;
+pub mod debris_disks;
+pub mod debris_params;
 pub mod experiments;
 pub mod fit;
 pub mod hysteresis;
@@ -19,6 +22,8 @@ pub mod restitution;
 pub mod rocking;
 pub mod rolling_force;
 pub mod rolling_params;
+pub mod smallest_fragment;
+pub mod unequal_colliders;
 
 pub use controls::{Control, ControlKind, ParamError};
 
@@ -44,7 +49,7 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 10] = [
+pub const SCENES: [SceneInfo; 14] = [
     hysteresis::INFO,
     restitution::INFO,
     adhesion::INFO,
@@ -55,6 +60,10 @@ pub const SCENES: [SceneInfo; 10] = [
     rolling_force::INFO,
     critical_displacement::INFO,
     rocking::INFO,
+    smallest_fragment::INFO,
+    critical_energies::INFO,
+    debris_disks::INFO,
+    unequal_colliders::INFO,
 ];
 
 /// The parameters of one scene, tagged by scene.
@@ -80,6 +89,14 @@ pub enum SceneParams {
     CriticalDisplacement(critical_displacement::Params),
     /// A rocking sphere.
     Rocking(rocking::Params),
+    /// Smallest fragment against collider size.
+    SmallestFragment(smallest_fragment::Params),
+    /// Splitting and disruption energies.
+    CriticalEnergies(critical_energies::Params),
+    /// Smallest fragment over blow-out size in debris disks.
+    DebrisDisks(debris_disks::Params),
+    /// Unequal colliders.
+    UnequalColliders(unequal_colliders::Params),
 }
 
 impl SceneParams {
@@ -96,6 +113,10 @@ impl SceneParams {
             "rolling-force" => Some(SceneParams::RollingForce(Default::default())),
             "critical-displacement" => Some(SceneParams::CriticalDisplacement(Default::default())),
             "rocking" => Some(SceneParams::Rocking(Default::default())),
+            "smallest-fragment" => Some(SceneParams::SmallestFragment(Default::default())),
+            "critical-energies" => Some(SceneParams::CriticalEnergies(Default::default())),
+            "debris-disks" => Some(SceneParams::DebrisDisks(Default::default())),
+            "unequal-colliders" => Some(SceneParams::UnequalColliders(Default::default())),
             _ => None,
         }
     }
@@ -113,6 +134,10 @@ impl SceneParams {
             SceneParams::RollingForce(_) => &rolling_force::INFO,
             SceneParams::CriticalDisplacement(_) => &critical_displacement::INFO,
             SceneParams::Rocking(_) => &rocking::INFO,
+            SceneParams::SmallestFragment(_) => &smallest_fragment::INFO,
+            SceneParams::CriticalEnergies(_) => &critical_energies::INFO,
+            SceneParams::DebrisDisks(_) => &debris_disks::INFO,
+            SceneParams::UnequalColliders(_) => &unequal_colliders::INFO,
         }
     }
 
@@ -129,6 +154,10 @@ impl SceneParams {
             SceneParams::RollingForce(p) => p.controls(),
             SceneParams::CriticalDisplacement(p) => p.controls(),
             SceneParams::Rocking(p) => p.controls(),
+            SceneParams::SmallestFragment(p) => p.controls(),
+            SceneParams::CriticalEnergies(p) => p.controls(),
+            SceneParams::DebrisDisks(p) => p.controls(),
+            SceneParams::UnequalColliders(p) => p.controls(),
         }
     }
 
@@ -190,7 +219,13 @@ impl SceneParams {
             SceneParams::CriticalDisplacement(p) => p.contact.material_changed(),
             SceneParams::Rocking(p) => p.contact.material_changed(),
             // Fitted, not derived from the materials.
-            SceneParams::Experiments(_) | SceneParams::MaterialParameters(_) | SceneParams::Fit(_) => {}
+            SceneParams::Experiments(_)
+            | SceneParams::MaterialParameters(_)
+            | SceneParams::Fit(_)
+            | SceneParams::SmallestFragment(_)
+            | SceneParams::CriticalEnergies(_)
+            | SceneParams::DebrisDisks(_)
+            | SceneParams::UnequalColliders(_) => {}
         }
     }
 
@@ -336,6 +371,10 @@ pub fn compute_cached(
         SceneParams::RollingForce(p) => rolling_force::compute(p),
         SceneParams::CriticalDisplacement(p) => critical_displacement::compute(p),
         SceneParams::Rocking(p) => rocking::compute(p),
+        SceneParams::SmallestFragment(p) => smallest_fragment::compute(p),
+        SceneParams::CriticalEnergies(p) => critical_energies::compute(p),
+        SceneParams::DebrisDisks(p) => debris_disks::compute(p),
+        SceneParams::UnequalColliders(p) => unequal_colliders::compute(p),
     }
 }
 

@@ -133,5 +133,28 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             ));
         }
     }
-    Ok(SceneOutput { scalars: Vec::new(), figures: vec![fig], notes: Vec::new(), extra: super::Extra::None })
+    let silicate = &materials()[0];
+    let q_split = splitting_energy(silicate, p.eta_high, 1.0);
+    let q_basalt = BENZ_ASPHAUG_3KMS[0].q_star(1.0);
+    let scalars = vec![
+        super::Scalar {
+            key: "q_split_1m",
+            label: "splitting energy, 1 m silicate, high η",
+            value: q_split,
+            unit: "J kg^-1",
+        },
+        super::Scalar {
+            key: "q_basalt_1m",
+            label: "basalt Q*_D at 1 m (Benz & Asphaug)",
+            value: q_basalt,
+            unit: "J kg^-1",
+        },
+        super::Scalar {
+            key: "disruption_over_split",
+            label: "Q*_D / splitting energy at 1 m",
+            value: q_basalt / q_split,
+            unit: "",
+        },
+    ];
+    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: super::Extra::None })
 }

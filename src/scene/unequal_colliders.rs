@@ -119,5 +119,26 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             1 + i,
         ));
     }
-    Ok(SceneOutput { scalars: Vec::new(), figures: vec![fig], notes: Vec::new(), extra: super::Extra::None })
+    let (best_ratio, best) = ratios
+        .iter()
+        .filter(|&&r| r <= p.erosive_ratio)
+        .map(|&r| (r, normalised_catastrophic(x_of(r))))
+        .min_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap_or((1.0, 1.0));
+    let scalars = vec![
+        super::Scalar {
+            key: "best_mass_ratio",
+            label: "catastrophic mass ratio with the smallest s_min",
+            value: best_ratio,
+            unit: "",
+        },
+        super::Scalar { key: "best_normalised", label: "its s_min / s_min(equal)", value: best, unit: "" },
+        super::Scalar {
+            key: "erosion_kappa_min",
+            label: "erosive s_min / s_min(equal) at the smallest κ",
+            value: normalised_erosion(p.kappa_min),
+            unit: "",
+        },
+    ];
+    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: super::Extra::None })
 }

@@ -258,6 +258,7 @@ fn reproduce(dir: &Path) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let mut checks = crate::reproduce::chapter2()?;
     checks.extend(crate::reproduce::chapter3());
+    checks.extend(crate::reproduce::chapter4());
     checks.extend(crate::reproduce::chapter6()?);
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
@@ -277,6 +278,14 @@ fn reproduce(dir: &Path) -> Result<()> {
         "debris-fig-6-1-bottom",
         "debris-fig-6-2",
         "debris-fig-6-3",
+        "disk-fig-4-1",
+        "disk-fig-4-2-compact",
+        "disk-fig-4-2-porous",
+        "disk-fig-4-5",
+        "disk-fig-4-7",
+        "disk-fig-4-8",
+        "disk-fig-4-13",
+        "disk-fig-4-13-erosion",
     ] {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;

@@ -114,7 +114,7 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 18] = [
+pub const SHIPPED: [(&str, &str); 26] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -133,6 +133,14 @@ pub const SHIPPED: [(&str, &str); 18] = [
     ("debris-fig-6-1-bottom.ron", include_str!("../presets/debris-fig-6-1-bottom.ron")),
     ("debris-fig-6-2.ron", include_str!("../presets/debris-fig-6-2.ron")),
     ("debris-fig-6-3.ron", include_str!("../presets/debris-fig-6-3.ron")),
+    ("disk-fig-4-1.ron", include_str!("../presets/disk-fig-4-1.ron")),
+    ("disk-fig-4-2-compact.ron", include_str!("../presets/disk-fig-4-2-compact.ron")),
+    ("disk-fig-4-2-porous.ron", include_str!("../presets/disk-fig-4-2-porous.ron")),
+    ("disk-fig-4-5.ron", include_str!("../presets/disk-fig-4-5.ron")),
+    ("disk-fig-4-7.ron", include_str!("../presets/disk-fig-4-7.ron")),
+    ("disk-fig-4-8.ron", include_str!("../presets/disk-fig-4-8.ron")),
+    ("disk-fig-4-13.ron", include_str!("../presets/disk-fig-4-13.ron")),
+    ("disk-fig-4-13-erosion.ron", include_str!("../presets/disk-fig-4-13-erosion.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

@@ -155,6 +155,65 @@ pub fn chapter3() -> Vec<Check> {
     ]
 }
 
+/// The checks of chapter 4 (disk, aggregates, semi-analytical growth).
+pub fn chapter4() -> Vec<Check> {
+    use crate::physics::aggregate::Monomer;
+    use crate::physics::constants::{AU, YEAR};
+    use crate::physics::disk::GasDisk;
+    use crate::physics::growth::{GrowthModel, Porosity};
+    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
+        figure,
+        quantity,
+        thesis,
+        ours,
+        tolerance,
+        note,
+        known: false,
+    };
+    let d = GasDisk::mmsn(1e-3, 1e-2);
+    let r = 5.0 * AU;
+    let mono = Monomer::ice();
+    let mut model = GrowthModel::chapter4(Porosity::Collisional);
+    model.drift = false;
+    let coll = model.run(r, 1e8 * YEAR);
+    model.porosity = Porosity::Full;
+    let full = model.run(r, 1e8 * YEAR);
+    let log = |x: Option<[f64; 2]>, i: usize| x.map_or(f64::NAN, |v| v[i].log10());
+    vec![
+        check("Eq. 4.3", "sound speed at 5 AU [m/s]", 670.0, d.sound_speed(r), 15.0, ""),
+        check("Eq. 4.4", "Omega at 5 AU [1/s]", 1.8e-8, d.omega(r), 5e-10, ""),
+        check("Sect. 4.2.1", "h_g/R at 5 AU", 0.05, d.scale_height(r) / r, 0.002, ""),
+        check("Sect. 4.2.2", "midplane mean free path at 5 AU [m]", 1.2, d.mean_free_path(r), 0.06, ""),
+        check("Eq. 4.33", "eta at 5 AU", 4e-3, d.eta(r), 4e-4, ""),
+        check("Sect. 4.2.4", "E_roll, 0.1 um ice [J]", 4e-16, mono.rolling_energy(), 2e-17, ""),
+        check("Eq. 4.12", "v_frag, 0.1 um ice [m/s]", 80.0, mono.fragmentation_velocity(), 1e-9, ""),
+        check(
+            "Fig. 4.8",
+            "log10 phi at the end of hit-and-stick (collisional only)",
+            -5.0,
+            log(coll.markers.collisional, 1),
+            1.0,
+            "order of magnitude",
+        ),
+        check(
+            "Sect. 4.4.1",
+            "log10 mass [g] at Omega t_s = 1, porous ice",
+            9.5,
+            log(full.markers.stokes_one, 0) + 3.0,
+            0.5,
+            "",
+        ),
+        check(
+            "Sect. 4.4.1",
+            "log10 mass [g] of first self-gravity compaction",
+            11.0,
+            log(full.markers.gravity, 0) + 3.0,
+            1.0,
+            "1e10-1e12 g",
+        ),
+    ]
+}
+
 /// The checks of chapter 6 (smallest fragments).
 pub fn chapter6() -> Result<Vec<Check>, PhysicsError> {
     use crate::physics::debris::{AU, TABLE_6_1, ratio_to_blowout, smallest_fragment_64, split_size, splitting_limit};

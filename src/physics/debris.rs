@@ -7,12 +7,7 @@
 use super::PhysicsError;
 use std::f64::consts::PI;
 
-/// Gravitational constant, m³ kg⁻¹ s⁻².
-pub const G: f64 = 6.674_30e-11;
-/// Solar mass, kg.
-pub const M_SUN: f64 = 1.988_47e30;
-/// Astronomical unit, m.
-pub const AU: f64 = 1.495_978_707e11;
+pub use super::constants::{AU, G, M_SUN};
 
 /// A material of Table 6.1.
 #[derive(Debug, Clone, Copy, PartialEq)]

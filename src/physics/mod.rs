@@ -1,12 +1,16 @@
 //! The physical models. Nothing here knows about the window: every function
 //! takes and returns plain numbers in SI units.
 
+pub mod aggregate;
 pub mod collision;
+pub mod constants;
 pub mod contact;
 pub mod crack;
 pub mod debris;
+pub mod disk;
 pub mod experiments;
 pub mod fit;
+pub mod growth;
 pub mod material;
 pub mod plasticity;
 pub mod rolling;

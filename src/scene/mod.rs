@@ -8,21 +8,28 @@
 
 pub mod adhesion;
 pub mod collision_params;
+pub mod collision_speeds;
 pub mod contact_torque;
 pub mod controls;
 pub mod critical_displacement;
 pub mod critical_energies;
 pub mod debris_disks;
 pub mod debris_params;
+pub mod disk_params;
 pub mod experiments;
 pub mod fit;
+pub mod growth_params;
+pub mod growth_tracks;
 pub mod hysteresis;
 pub mod material_parameters;
+pub mod porosity_track;
 pub mod restitution;
 pub mod rocking;
 pub mod rolling_force;
 pub mod rolling_params;
 pub mod smallest_fragment;
+pub mod stokes_number;
+pub mod timescales;
 pub mod unequal_colliders;
 
 pub use controls::{Control, ControlKind, ParamError};
@@ -49,7 +56,7 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 14] = [
+pub const SCENES: [SceneInfo; 19] = [
     hysteresis::INFO,
     restitution::INFO,
     adhesion::INFO,
@@ -64,6 +71,11 @@ pub const SCENES: [SceneInfo; 14] = [
     critical_energies::INFO,
     debris_disks::INFO,
     unequal_colliders::INFO,
+    stokes_number::INFO,
+    collision_speeds::INFO,
+    porosity_track::INFO,
+    timescales::INFO,
+    growth_tracks::INFO,
 ];
 
 /// The parameters of one scene, tagged by scene.
@@ -97,6 +109,16 @@ pub enum SceneParams {
     DebrisDisks(debris_disks::Params),
     /// Unequal colliders.
     UnequalColliders(unequal_colliders::Params),
+    /// Stokes number against mass.
+    StokesNumber(stokes_number::Params),
+    /// Relative velocity map.
+    CollisionSpeeds(collision_speeds::Params),
+    /// Mass–porosity track.
+    PorosityTrack(porosity_track::Params),
+    /// Growth and drift timescales.
+    Timescales(timescales::Params),
+    /// Growth and drift tracks.
+    GrowthTracks(growth_tracks::Params),
 }
 
 impl SceneParams {
@@ -117,6 +139,11 @@ impl SceneParams {
             "critical-energies" => Some(SceneParams::CriticalEnergies(Default::default())),
             "debris-disks" => Some(SceneParams::DebrisDisks(Default::default())),
             "unequal-colliders" => Some(SceneParams::UnequalColliders(Default::default())),
+            "stokes-number" => Some(SceneParams::StokesNumber(Default::default())),
+            "collision-speeds" => Some(SceneParams::CollisionSpeeds(Default::default())),
+            "porosity-track" => Some(SceneParams::PorosityTrack(Default::default())),
+            "timescales" => Some(SceneParams::Timescales(Default::default())),
+            "growth-tracks" => Some(SceneParams::GrowthTracks(Default::default())),
             _ => None,
         }
     }
@@ -138,6 +165,11 @@ impl SceneParams {
             SceneParams::CriticalEnergies(_) => &critical_energies::INFO,
             SceneParams::DebrisDisks(_) => &debris_disks::INFO,
             SceneParams::UnequalColliders(_) => &unequal_colliders::INFO,
+            SceneParams::StokesNumber(_) => &stokes_number::INFO,
+            SceneParams::CollisionSpeeds(_) => &collision_speeds::INFO,
+            SceneParams::PorosityTrack(_) => &porosity_track::INFO,
+            SceneParams::Timescales(_) => &timescales::INFO,
+            SceneParams::GrowthTracks(_) => &growth_tracks::INFO,
         }
     }
 
@@ -158,6 +190,11 @@ impl SceneParams {
             SceneParams::CriticalEnergies(p) => p.controls(),
             SceneParams::DebrisDisks(p) => p.controls(),
             SceneParams::UnequalColliders(p) => p.controls(),
+            SceneParams::StokesNumber(p) => p.controls(),
+            SceneParams::CollisionSpeeds(p) => p.controls(),
+            SceneParams::PorosityTrack(p) => p.controls(),
+            SceneParams::Timescales(p) => p.controls(),
+            SceneParams::GrowthTracks(p) => p.controls(),
         }
     }
 
@@ -225,7 +262,12 @@ impl SceneParams {
             | SceneParams::SmallestFragment(_)
             | SceneParams::CriticalEnergies(_)
             | SceneParams::DebrisDisks(_)
-            | SceneParams::UnequalColliders(_) => {}
+            | SceneParams::UnequalColliders(_)
+            | SceneParams::StokesNumber(_)
+            | SceneParams::CollisionSpeeds(_)
+            | SceneParams::PorosityTrack(_)
+            | SceneParams::Timescales(_)
+            | SceneParams::GrowthTracks(_) => {}
         }
     }
 
@@ -375,6 +417,11 @@ pub fn compute_cached(
         SceneParams::CriticalEnergies(p) => critical_energies::compute(p),
         SceneParams::DebrisDisks(p) => debris_disks::compute(p),
         SceneParams::UnequalColliders(p) => unequal_colliders::compute(p),
+        SceneParams::StokesNumber(p) => stokes_number::compute(p),
+        SceneParams::CollisionSpeeds(p) => collision_speeds::compute(p, progress),
+        SceneParams::PorosityTrack(p) => porosity_track::compute(p),
+        SceneParams::Timescales(p) => timescales::compute(p),
+        SceneParams::GrowthTracks(p) => growth_tracks::compute(p, progress),
     }
 }
 

@@ -1,0 +1,226 @@
+//! Gas disks: the minimum-mass solar nebula column of ch. 4 (Eqs. 4.1–4.5) and
+//! the truncated power law of ch. 5 (Eqs. 5.1–5.5). SI units; radii in m.
+
+pub use super::constants::{AU, G, K_B, M_SUN, YEAR};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// Mean molecular mass m_g = 3.9 × 10⁻²⁴ g, kg.
+pub const M_GAS: f64 = 3.9e-27;
+/// Molecular cross section σ_mol = 2 × 10⁻¹⁵ cm², m².
+pub const SIGMA_MOL: f64 = 2e-19;
+
+/// The gas surface density profile.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub enum Profile {
+    /// Σ = 152 g cm⁻² (R/5 AU)^{-3/2} (4.1).
+    Mmsn,
+    /// Σ = Σ₀ (R/R_c)^{-γ} exp[−(R/R_c)^{2−γ}] (5.1) for a disk of `mass` (M☉).
+    TruncatedPowerLaw {
+        /// Disk mass, solar masses.
+        mass: f64,
+        /// Characteristic radius R_c, AU.
+        r_c: f64,
+        /// Slope γ (1 or 3/2 in the thesis).
+        slope: f64,
+    },
+}
+
+/// A protoplanetary gas disk around a solar-mass star.
+#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
+pub struct GasDisk {
+    /// Surface density profile.
+    pub profile: Profile,
+    /// Temperatures halved (the cold disks of ch. 5).
+    pub cold: bool,
+    /// Turbulence strength α.
+    pub alpha: f64,
+    /// Dust-to-gas ratio of the column Z₀ = Σ_d/Σ_g.
+    pub metallicity: f64,
+}
+
+impl GasDisk {
+    /// The MMSN of ch. 4 with α and Z₀.
+    pub fn mmsn(alpha: f64, metallicity: f64) -> GasDisk {
+        GasDisk { profile: Profile::Mmsn, cold: false, alpha, metallicity }
+    }
+
+    /// Gas surface density Σ_g at radius r, kg m⁻².
+    pub fn surface_density(&self, r: f64) -> f64 {
+        match self.profile {
+            Profile::Mmsn => 1520.0 * (r / (5.0 * AU)).powf(-1.5),
+            Profile::TruncatedPowerLaw { mass, r_c, slope } => {
+                let rc = r_c * AU;
+                // Σ₀ from M_D = ∫2πrΣ dr = 2πΣ₀R_c²/(2 − γ).
+                let sigma0 = mass * M_SUN * (2.0 - slope) / (2.0 * PI * rc * rc);
+                let x = r / rc;
+                sigma0 * x.powf(-slope) * (-x.powf(2.0 - slope)).exp()
+            }
+        }
+    }
+
+    /// Temperature T = 125 K (R/5 AU)^{-1/2} (4.2, 5.2), halved for a cold disk, K.
+    pub fn temperature(&self, r: f64) -> f64 {
+        let t = 125.0 * (r / (5.0 * AU)).powf(-0.5);
+        if self.cold { 0.5 * t } else { t }
+    }
+
+    /// Sound speed c_s = (k_B T/m_g)^{1/2} (4.3), m s⁻¹.
+    pub fn sound_speed(&self, r: f64) -> f64 {
+        (K_B * self.temperature(r) / M_GAS).sqrt()
+    }
+
+    /// Kepler frequency Ω = (GM☉/R³)^{1/2} (4.4), s⁻¹.
+    pub fn omega(&self, r: f64) -> f64 {
+        (G * M_SUN / r.powi(3)).sqrt()
+    }
+
+    /// Kepler velocity v_K = RΩ, m s⁻¹.
+    pub fn kepler_velocity(&self, r: f64) -> f64 {
+        r * self.omega(r)
+    }
+
+    /// Gas scale height h_g = c_s/Ω, m.
+    pub fn scale_height(&self, r: f64) -> f64 {
+        self.sound_speed(r) / self.omega(r)
+    }
+
+    /// Midplane gas density ρ_g = Σ_g/((2π)^{1/2} h_g) (4.5), kg m⁻³.
+    pub fn midplane_density(&self, r: f64) -> f64 {
+        self.surface_density(r) / ((2.0 * PI).sqrt() * self.scale_height(r))
+    }
+
+    /// Mean thermal speed v_th = (8/π)^{1/2} c_s, m s⁻¹.
+    pub fn thermal_speed(&self, r: f64) -> f64 {
+        (8.0 / PI).sqrt() * self.sound_speed(r)
+    }
+
+    /// Mean free path λ_mfp = m_g/(σ_mol ρ_g) at the midplane, m.
+    pub fn mean_free_path(&self, r: f64) -> f64 {
+        M_GAS / (SIGMA_MOL * self.midplane_density(r))
+    }
+
+    /// Molecular viscosity ν_mol = v_th λ_mfp/2, m² s⁻¹.
+    pub fn molecular_viscosity(&self, r: f64) -> f64 {
+        0.5 * self.thermal_speed(r) * self.mean_free_path(r)
+    }
+
+    /// Turbulence Reynolds number Re_t = αc_s²/(Ων_mol).
+    pub fn reynolds(&self, r: f64) -> f64 {
+        self.alpha * self.sound_speed(r).powi(2) / (self.omega(r) * self.molecular_viscosity(r))
+    }
+
+    /// Turn-over time of the smallest eddies t_η = Re_t^{-1/2}/Ω, s.
+    pub fn kolmogorov_time(&self, r: f64) -> f64 {
+        self.reynolds(r).powf(-0.5) / self.omega(r)
+    }
+
+    /// Pressure-gradient parameter η = −½(c_s/v_K)² ∂ln(ρ_g c_s²)/∂ln R (5.9),
+    /// with the logarithmic derivative taken numerically.
+    pub fn eta(&self, r: f64) -> f64 {
+        let p = |x: f64| (self.midplane_density(x) * self.sound_speed(x).powi(2)).ln();
+        let h = 1e-4;
+        let dlnp = (p(r * (1.0 + h)) - p(r * (1.0 - h))) / ((1.0 + h).ln() - (1.0 - h).ln());
+        -0.5 * (self.sound_speed(r) / self.kepler_velocity(r)).powi(2) * dlnp
+    }
+
+    /// Dust surface density Z₀Σ_g, kg m⁻².
+    pub fn dust_surface_density(&self, r: f64) -> f64 {
+        self.metallicity * self.surface_density(r)
+    }
+}
+
+/// Midplane quantities at one radius, computed once for repeated use.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Local {
+    /// Radius, m.
+    pub r: f64,
+    /// Temperature, K.
+    pub temperature: f64,
+    /// Sound speed, m s⁻¹.
+    pub sound_speed: f64,
+    /// Kepler frequency, s⁻¹.
+    pub omega: f64,
+    /// Gas scale height, m.
+    pub scale_height: f64,
+    /// Midplane gas density, kg m⁻³.
+    pub density: f64,
+    /// Mean thermal speed, m s⁻¹.
+    pub thermal_speed: f64,
+    /// Mean free path, m.
+    pub mean_free_path: f64,
+    /// Turbulence Reynolds number.
+    pub reynolds: f64,
+    /// ηv_K, m s⁻¹.
+    pub eta_vk: f64,
+    /// Turbulence α.
+    pub alpha: f64,
+    /// Dust surface density, kg m⁻².
+    pub dust_surface_density: f64,
+}
+
+impl GasDisk {
+    /// The midplane quantities at radius r.
+    pub fn local(&self, r: f64) -> Local {
+        Local {
+            r,
+            temperature: self.temperature(r),
+            sound_speed: self.sound_speed(r),
+            omega: self.omega(r),
+            scale_height: self.scale_height(r),
+            density: self.midplane_density(r),
+            thermal_speed: self.thermal_speed(r),
+            mean_free_path: self.mean_free_path(r),
+            reynolds: self.reynolds(r),
+            eta_vk: self.eta(r) * self.kepler_velocity(r),
+            alpha: self.alpha,
+            dust_surface_density: self.dust_surface_density(r),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn mmsn_at_5_au_matches_chapter_4() {
+        let d = GasDisk::mmsn(1e-3, 1e-2);
+        let r = 5.0 * AU;
+        assert!((d.sound_speed(r) / 670.0 - 1.0).abs() < 0.02, "c_s = {}", d.sound_speed(r));
+        assert!((d.omega(r) / 1.8e-8 - 1.0).abs() < 0.02, "Ω = {}", d.omega(r));
+        assert!((d.scale_height(r) / r - 0.05).abs() < 0.002, "h/R = {}", d.scale_height(r) / r);
+        assert!((d.mean_free_path(r) / 1.2 - 1.0).abs() < 0.05, "λ = {} m", d.mean_free_path(r));
+        assert!((d.eta(r) / 4e-3 - 1.0).abs() < 0.1, "η = {}", d.eta(r));
+        assert!(
+            (d.eta(r) * d.kepler_velocity(r) / 50.0 - 1.0).abs() < 0.1,
+            "ηv_K = {}",
+            d.eta(r) * d.kepler_velocity(r)
+        );
+        // λ ∝ R^{11/4}.
+        let ratio = d.mean_free_path(10.0 * AU) / d.mean_free_path(r);
+        assert!((ratio / 2f64.powf(11.0 / 4.0) - 1.0).abs() < 1e-9);
+    }
+
+    #[test]
+    fn truncated_power_law_holds_its_mass() {
+        let d = GasDisk {
+            profile: Profile::TruncatedPowerLaw { mass: 0.01, r_c: 30.0, slope: 1.0 },
+            cold: false,
+            alpha: 1e-3,
+            metallicity: 0.01,
+        };
+        let n = 20000;
+        let (r0, r1) = (0.01 * AU, 3000.0 * AU);
+        let mut m = 0.0;
+        for i in 0..n {
+            let a = (r0.ln() + (r1 / r0).ln() * i as f64 / n as f64).exp();
+            let b = (r0.ln() + (r1 / r0).ln() * (i + 1) as f64 / n as f64).exp();
+            let r = (a * b).sqrt();
+            m += 2.0 * PI * r * d.surface_density(r) * (b - a);
+        }
+        assert!((m / (0.01 * M_SUN) - 1.0).abs() < 1e-3, "{}", m / M_SUN);
+        let cold = GasDisk { cold: true, ..d };
+        assert!((cold.temperature(AU) / d.temperature(AU) - 0.5).abs() < 1e-12);
+    }
+}

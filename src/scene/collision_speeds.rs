@@ -170,7 +170,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     fig_v.heatmap = Some(Heatmap { x: ns.clone(), y: ns.clone(), values: dv.clone(), label: "log10 dv [m/s]".into() });
     let mut fig_s = Figure::new(
         "dominant-source",
-        "Dominant source (0 BrM, 1 Trb, 2 Set, 3 Rad, 4 Azi)",
+        "Dominant source (purple→yellow: Brownian, turbulence, settling, radial, azimuthal drift)",
         axis("m_i / m₀"),
         axis("m_j / m₀"),
     );

@@ -154,165 +154,206 @@ impl GrowthModel {
         }
     }
 
-    /// Runs a track from monomers at radius `r0` (m) for `t_end` seconds.
-    pub fn run(&self, r0: f64, t_end: f64) -> Track {
+    /// A fresh particle state: monomers at radius `r0` (m).
+    pub fn start(&self, r0: f64) -> GrowthState {
+        GrowthState {
+            t: 0.0,
+            r: r0,
+            mass: self.monomer.mass(),
+            filling: 1.0,
+            onset: None,
+            frozen_t_grow: None,
+            markers: Markers::default(),
+            halted_by: None,
+        }
+    }
+
+    /// Evaluates the state, then advances it by one step, never beyond
+    /// `t_until`. `sigma_d` overrides the dust surface density of the disk
+    /// (kg m⁻²; the batch model uses the batches' own). Returns the point
+    /// evaluated before the step and whether the particle left the disk
+    /// (planetesimal reached or inner edge crossed; the state is then final).
+    pub fn step(&self, s: &mut GrowthState, sigma_d: Option<f64>, t_until: f64) -> (TrackPoint, Option<Stop>) {
         let mono = self.monomer;
         let m0 = mono.mass();
         let e_roll = mono.rolling_energy();
-        let (mut t, mut r, mut m) = (0.0, r0, m0);
-        let mut phi: f64 = 1.0;
-        let mut markers = Markers::default();
-        // Collisional compaction: (mass, φ, E/N) at its onset.
-        let mut onset: Option<(f64, f64, f64)> = None;
-        let mut frozen_t_grow: Option<f64> = None;
+        let (m, phi, r) = (s.mass, s.filling, s.r);
+        let env = self.disk.local(r);
+        let agg = Aggregate { mass: m, filling: phi };
+        let stopping = stopping_time(&env, &mono, &agg, self.newton);
+        let st = stopping.time * env.omega;
+        let a = agg.radius(&mono);
+        let me = Particle { mass: m, stokes: st };
+        let mono_particle = Particle {
+            mass: m0,
+            stokes: stopping_time(&env, &mono, &Aggregate { mass: m0, filling: 1.0 }, self.newton).time * env.omega,
+        };
+        let rv = relative_velocity(&env, &me, &me, self.turbulence, self.epsilon);
+        let v = rv.total();
+        let v_mono = relative_velocity(&env, &me, &mono_particle, self.turbulence, self.epsilon).total();
+        let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
+        let sigma = sigma_d.unwrap_or(env.dust_surface_density);
+        let m_dot = sigma / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * v;
+        let mut t_grow = if m_dot > 0.0 { m / m_dot } else { f64::INFINITY };
+        // In the first turbulence regime same-size velocities vanish and the
+        // particles grow by sweeping up smaller ones at a roughly constant
+        // rate (Sect. 4.5): keep t_grow at its value on entering that regime.
+        let st_eta = env.reynolds.powf(-0.5);
+        if rv.dominant() == 1 && st < st_eta && t_grow.is_finite() {
+            t_grow = *s.frozen_t_grow.get_or_insert(t_grow);
+        } else {
+            s.frozen_t_grow = None;
+        }
+        let th = &self.thresholds;
+        let halted = if v >= th.v_frag {
+            s.halted_by = Some("fragmentation");
+            true
+        } else if self.porosity == Porosity::Compact && v >= th.v_bounce {
+            s.halted_by = Some("bouncing");
+            true
+        } else if v_mono > th.v_eros {
+            s.halted_by = Some("erosion");
+            true
+        } else {
+            !t_grow.is_finite()
+        };
+        let v_drift = radial_drift(env.eta_vk, st);
+        let t_drift = r / v_drift;
+        let point = TrackPoint {
+            t: s.t,
+            r,
+            mass: m,
+            filling: phi,
+            radius: a,
+            stokes: st,
+            v_rel: v,
+            v_monomer: v_mono,
+            t_grow: if halted { f64::INFINITY } else { t_grow },
+            t_drift,
+            halted,
+        };
+        let here = [m, phi];
+        let mk = &mut s.markers;
+        if a >= env.mean_free_path && mk.radius_mfp.is_none() {
+            mk.radius_mfp = Some(here);
+        }
+        if stopping.time >= st_eta / env.omega && mk.kolmogorov.is_none() {
+            mk.kolmogorov = Some(here);
+        }
+        if st >= env.alpha && mk.settling.is_none() {
+            mk.settling = Some(here);
+        }
+        if st >= 1.0 && mk.stokes_one.is_none() {
+            mk.stokes_one = Some(here);
+        }
+        if m >= self.planetesimal_mass {
+            return (point, Some(Stop::Planetesimal));
+        }
+        // Time step: a fixed growth in ln m, or a small part of the drift time.
+        let mut dt = (t_until - s.t).max(0.0);
+        if !halted {
+            dt = dt.min(self.dlnm * t_grow);
+        }
+        if self.drift {
+            dt = dt.min(0.05 * t_drift);
+        }
+        s.t += dt;
+        if self.drift {
+            s.r -= v_drift * dt;
+            if s.r <= self.inner_edge {
+                return (point, Some(Stop::InnerEdge));
+            }
+        }
+        if halted {
+            return (point, None);
+        }
+        let m_new = m * (dt / t_grow).exp();
+        let n = m_new / m0;
+        let phi_hs = n.powf(-0.5).min(1.0);
+        s.filling = match self.porosity {
+            Porosity::Compact => 1.0,
+            Porosity::Collisional | Porosity::Full => {
+                let e_per_n = m * v * v / 4.0 / (m / m0);
+                let collisional = match s.onset {
+                    None if m * v * v / 4.0 > 3.0 * 0.15 * e_roll => {
+                        s.onset = Some((m, phi, e_per_n));
+                        s.markers.collisional = Some([m, phi]);
+                        phi
+                    }
+                    None => phi_hs,
+                    Some((mc, phic, ec)) => {
+                        (phic * (e_per_n / ec).powf(0.3) * (n / (mc / m0)).powf(-0.2)).max(phi_hs).min(1.0)
+                    }
+                };
+                if self.porosity == Porosity::Full {
+                    let env2 = if self.drift { self.disk.local(s.r) } else { env };
+                    let gas = {
+                        // Only solve for the gas-compaction φ when the gas can compress.
+                        let trial = Aggregate { mass: m_new, filling: collisional };
+                        let ts = stopping_time(&env2, &mono, &trial, self.newton).time;
+                        let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
+                            / (PI * trial.radius(&mono).powi(2) * ts);
+                        let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
+                        if p_c < p_gas { gas_compaction_filling(&env2, &mono, m_new, self.newton, phi) } else { 0.0 }
+                    };
+                    let grav = gravity_compaction_filling(&mono, m_new);
+                    if gas > collisional && gas >= grav && s.markers.gas.is_none() {
+                        s.markers.gas = Some([m, phi]);
+                    }
+                    if grav > collisional && grav > gas && s.markers.gravity.is_none() {
+                        s.markers.gravity = Some([m, phi]);
+                    }
+                    collisional.max(gas).max(grav).min(1.0)
+                } else {
+                    collisional
+                }
+            }
+        };
+        s.mass = m_new;
+        (point, None)
+    }
+
+    /// Runs a track from monomers at radius `r0` (m) for `t_end` seconds.
+    pub fn run(&self, r0: f64, t_end: f64) -> Track {
+        let mut s = self.start(r0);
         let mut points = Vec::new();
-        let mut halted_by = None;
         let mut stop = Stop::Steps;
         for _ in 0..200_000 {
-            let env = self.disk.local(r);
-            let agg = Aggregate { mass: m, filling: phi };
-            let stopping = stopping_time(&env, &mono, &agg, self.newton);
-            let st = stopping.time * env.omega;
-            let a = agg.radius(&mono);
-            let me = Particle { mass: m, stokes: st };
-            let mono_particle = Particle {
-                mass: m0,
-                stokes: stopping_time(&env, &mono, &Aggregate { mass: m0, filling: 1.0 }, self.newton).time * env.omega,
-            };
-            let rv = relative_velocity(&env, &me, &me, self.turbulence, self.epsilon);
-            let v = rv.total();
-            let v_mono = relative_velocity(&env, &me, &mono_particle, self.turbulence, self.epsilon).total();
-            let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
-            let m_dot = env.dust_surface_density / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * v;
-            let mut t_grow = m / m_dot;
-            // In the first turbulence regime same-size velocities vanish and the
-            // particles grow by sweeping up smaller ones at a roughly constant
-            // rate (Sect. 4.5): keep t_grow at its value on entering that regime.
-            let st_eta = env.reynolds.powf(-0.5);
-            if rv.dominant() == 1 && st < st_eta {
-                t_grow = *frozen_t_grow.get_or_insert(t_grow);
-            } else {
-                frozen_t_grow = None;
-            }
-            let th = &self.thresholds;
-            let halted = if v >= th.v_frag {
-                halted_by = Some("fragmentation");
-                true
-            } else if self.porosity == Porosity::Compact && v >= th.v_bounce {
-                halted_by = Some("bouncing");
-                true
-            } else if v_mono > th.v_eros {
-                halted_by = Some("erosion");
-                true
-            } else {
-                false
-            };
-            let v_drift = radial_drift(env.eta_vk, st);
-            let t_drift = r / v_drift;
-            points.push(TrackPoint {
-                t,
-                r,
-                mass: m,
-                filling: phi,
-                radius: a,
-                stokes: st,
-                v_rel: v,
-                v_monomer: v_mono,
-                t_grow: if halted { f64::INFINITY } else { t_grow },
-                t_drift,
-                halted,
-            });
-            let here = [m, phi];
-            if a >= env.mean_free_path && markers.radius_mfp.is_none() {
-                markers.radius_mfp = Some(here);
-            }
-            if stopping.time >= st_eta / env.omega && markers.kolmogorov.is_none() {
-                markers.kolmogorov = Some(here);
-            }
-            if st >= env.alpha && markers.settling.is_none() {
-                markers.settling = Some(here);
-            }
-            if st >= 1.0 && markers.stokes_one.is_none() {
-                markers.stokes_one = Some(here);
-            }
-            if m >= self.planetesimal_mass {
-                stop = Stop::Planetesimal;
+            let done = s.t >= t_end;
+            let (point, ended) = self.step(&mut s, None, t_end);
+            points.push(point);
+            if let Some(e) = ended {
+                stop = e;
                 break;
             }
-            if t >= t_end {
+            if done {
                 stop = Stop::TimeLimit;
                 break;
             }
-            // Time step: a fixed growth in ln m, or a small part of the drift time.
-            let mut dt = t_end - t;
-            if !halted {
-                dt = dt.min(self.dlnm * t_grow);
-            }
-            if self.drift {
-                dt = dt.min(0.05 * t_drift);
-            }
-            t += dt;
-            if self.drift {
-                r -= v_drift * dt;
-                if r <= self.inner_edge {
-                    stop = Stop::InnerEdge;
-                    break;
-                }
-            }
-            if halted {
-                continue;
-            }
-            let m_new = m * (dt / t_grow).exp();
-            // Filling factor of the new mass.
-            let n = m_new / m0;
-            let phi_hs = n.powf(-0.5).min(1.0);
-            phi = match self.porosity {
-                Porosity::Compact => 1.0,
-                Porosity::Collisional | Porosity::Full => {
-                    let e_per_n = m * v * v / 4.0 / (m / m0);
-                    let collisional = match onset {
-                        None if m * v * v / 4.0 > 3.0 * 0.15 * e_roll => {
-                            onset = Some((m, phi, e_per_n));
-                            markers.collisional = Some([m, phi]);
-                            phi
-                        }
-                        None => phi_hs,
-                        Some((mc, phic, ec)) => {
-                            (phic * (e_per_n / ec).powf(0.3) * (n / (mc / m0)).powf(-0.2)).max(phi_hs).min(1.0)
-                        }
-                    };
-                    if self.porosity == Porosity::Full {
-                        let env2 = self.disk.local(r);
-                        let gas = {
-                            // Only solve for the gas-compaction φ when the gas can compress.
-                            let trial = Aggregate { mass: m_new, filling: collisional };
-                            let ts = stopping_time(&env2, &mono, &trial, self.newton).time;
-                            let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
-                                / (PI * trial.radius(&mono).powi(2) * ts);
-                            let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
-                            if p_c < p_gas {
-                                gas_compaction_filling(&env2, &mono, m_new, self.newton, phi)
-                            } else {
-                                0.0
-                            }
-                        };
-                        let grav = gravity_compaction_filling(&mono, m_new);
-                        if gas > collisional && gas >= grav && markers.gas.is_none() {
-                            markers.gas = Some([m, phi]);
-                        }
-                        if grav > collisional && grav > gas && markers.gravity.is_none() {
-                            markers.gravity = Some([m, phi]);
-                        }
-                        collisional.max(gas).max(grav).min(1.0)
-                    } else {
-                        collisional
-                    }
-                }
-            };
-            m = m_new;
         }
-        Track { points, stop, markers, halted_by }
+        Track { points, stop, markers: s.markers, halted_by: s.halted_by }
     }
+}
+
+/// The evolving state of one particle (or batch) of the growth model.
+#[derive(Debug, Clone, PartialEq)]
+pub struct GrowthState {
+    /// Time, s.
+    pub t: f64,
+    /// Radius, m.
+    pub r: f64,
+    /// Particle mass, kg.
+    pub mass: f64,
+    /// Filling factor.
+    pub filling: f64,
+    /// Collisional compaction onset: (mass, φ, E/N).
+    onset: Option<(f64, f64, f64)>,
+    /// Growth time held in the first turbulence regime, s.
+    frozen_t_grow: Option<f64>,
+    /// Turning points reached so far.
+    pub markers: Markers,
+    /// Why growth was last halted.
+    pub halted_by: Option<&'static str>,
 }
 
 #[cfg(test)]

@@ -259,6 +259,7 @@ fn reproduce(dir: &Path) -> Result<()> {
     let mut checks = crate::reproduce::chapter2()?;
     checks.extend(crate::reproduce::chapter3());
     checks.extend(crate::reproduce::chapter4());
+    checks.extend(crate::reproduce::chapter5()?);
     checks.extend(crate::reproduce::chapter6()?);
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
@@ -286,6 +287,21 @@ fn reproduce(dir: &Path) -> Result<()> {
         "disk-fig-4-8",
         "disk-fig-4-13",
         "disk-fig-4-13-erosion",
+        "batch-fig-5-1",
+        "batch-fig-5-3",
+        "batch-fig-5-4",
+        "batch-fig-5-5",
+        "batch-fig-5-6",
+        "batch-fig-5-7",
+        "batch-fig-5-8-extended",
+        "batch-fig-5-8-weak",
+        "batch-fig-5-9",
+        "batch-fig-5-10",
+        "batch-fig-5-11",
+        "batch-fig-5-12",
+        "batch-fig-5-13",
+        "batch-fig-5-14",
+        "batch-fig-5-15",
     ] {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;

@@ -114,7 +114,7 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 26] = [
+pub const SHIPPED: [(&str, &str); 41] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -141,6 +141,21 @@ pub const SHIPPED: [(&str, &str); 26] = [
     ("disk-fig-4-8.ron", include_str!("../presets/disk-fig-4-8.ron")),
     ("disk-fig-4-13.ron", include_str!("../presets/disk-fig-4-13.ron")),
     ("disk-fig-4-13-erosion.ron", include_str!("../presets/disk-fig-4-13-erosion.ron")),
+    ("batch-fig-5-1.ron", include_str!("../presets/batch-fig-5-1.ron")),
+    ("batch-fig-5-3.ron", include_str!("../presets/batch-fig-5-3.ron")),
+    ("batch-fig-5-4.ron", include_str!("../presets/batch-fig-5-4.ron")),
+    ("batch-fig-5-5.ron", include_str!("../presets/batch-fig-5-5.ron")),
+    ("batch-fig-5-6.ron", include_str!("../presets/batch-fig-5-6.ron")),
+    ("batch-fig-5-7.ron", include_str!("../presets/batch-fig-5-7.ron")),
+    ("batch-fig-5-8-extended.ron", include_str!("../presets/batch-fig-5-8-extended.ron")),
+    ("batch-fig-5-8-weak.ron", include_str!("../presets/batch-fig-5-8-weak.ron")),
+    ("batch-fig-5-9.ron", include_str!("../presets/batch-fig-5-9.ron")),
+    ("batch-fig-5-10.ron", include_str!("../presets/batch-fig-5-10.ron")),
+    ("batch-fig-5-11.ron", include_str!("../presets/batch-fig-5-11.ron")),
+    ("batch-fig-5-12.ron", include_str!("../presets/batch-fig-5-12.ron")),
+    ("batch-fig-5-13.ron", include_str!("../presets/batch-fig-5-13.ron")),
+    ("batch-fig-5-14.ron", include_str!("../presets/batch-fig-5-14.ron")),
+    ("batch-fig-5-15.ron", include_str!("../presets/batch-fig-5-15.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

@@ -2,6 +2,7 @@
 //! takes and returns plain numbers in SI units.
 
 pub mod aggregate;
+pub mod batches;
 pub mod collision;
 pub mod constants;
 pub mod contact;

@@ -7,6 +7,8 @@
 //! it in [`SceneParams`] and [`SCENES`].
 
 pub mod adhesion;
+pub mod batch_lifelines;
+pub mod batch_params;
 pub mod collision_params;
 pub mod collision_speeds;
 pub mod contact_torque;
@@ -15,13 +17,17 @@ pub mod critical_displacement;
 pub mod critical_energies;
 pub mod debris_disks;
 pub mod debris_params;
+pub mod disk_map;
 pub mod disk_params;
 pub mod experiments;
 pub mod fit;
+pub mod formation_zone;
 pub mod growth_params;
 pub mod growth_tracks;
 pub mod hysteresis;
 pub mod material_parameters;
+pub mod midplane_loading;
+pub mod planetesimal_yield;
 pub mod porosity_track;
 pub mod restitution;
 pub mod rocking;
@@ -29,6 +35,7 @@ pub mod rolling_force;
 pub mod rolling_params;
 pub mod smallest_fragment;
 pub mod stokes_number;
+pub mod surface_density;
 pub mod timescales;
 pub mod unequal_colliders;
 
@@ -56,7 +63,7 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 19] = [
+pub const SCENES: [SceneInfo; 25] = [
     hysteresis::INFO,
     restitution::INFO,
     adhesion::INFO,
@@ -76,6 +83,12 @@ pub const SCENES: [SceneInfo; 19] = [
     porosity_track::INFO,
     timescales::INFO,
     growth_tracks::INFO,
+    surface_density::INFO,
+    batch_lifelines::INFO,
+    disk_map::INFO,
+    planetesimal_yield::INFO,
+    formation_zone::INFO,
+    midplane_loading::INFO,
 ];
 
 /// The parameters of one scene, tagged by scene.
@@ -119,6 +132,18 @@ pub enum SceneParams {
     Timescales(timescales::Params),
     /// Growth and drift tracks.
     GrowthTracks(growth_tracks::Params),
+    /// Surface densities of the batch model.
+    SurfaceDensity(surface_density::Params),
+    /// Batch lifelines.
+    BatchLifelines(batch_lifelines::Params),
+    /// Disk map.
+    DiskMap(disk_map::Params),
+    /// Planetesimal yield.
+    PlanetesimalYield(planetesimal_yield::Params),
+    /// Planetesimal formation zone.
+    FormationZone(formation_zone::Params),
+    /// Midplane loading.
+    MidplaneLoading(midplane_loading::Params),
 }
 
 impl SceneParams {
@@ -144,6 +169,12 @@ impl SceneParams {
             "porosity-track" => Some(SceneParams::PorosityTrack(Default::default())),
             "timescales" => Some(SceneParams::Timescales(Default::default())),
             "growth-tracks" => Some(SceneParams::GrowthTracks(Default::default())),
+            "surface-density" => Some(SceneParams::SurfaceDensity(Default::default())),
+            "batch-lifelines" => Some(SceneParams::BatchLifelines(Default::default())),
+            "disk-map" => Some(SceneParams::DiskMap(Default::default())),
+            "planetesimal-yield" => Some(SceneParams::PlanetesimalYield(Default::default())),
+            "formation-zone" => Some(SceneParams::FormationZone(Default::default())),
+            "midplane-loading" => Some(SceneParams::MidplaneLoading(Default::default())),
             _ => None,
         }
     }
@@ -170,6 +201,12 @@ impl SceneParams {
             SceneParams::PorosityTrack(_) => &porosity_track::INFO,
             SceneParams::Timescales(_) => &timescales::INFO,
             SceneParams::GrowthTracks(_) => &growth_tracks::INFO,
+            SceneParams::SurfaceDensity(_) => &surface_density::INFO,
+            SceneParams::BatchLifelines(_) => &batch_lifelines::INFO,
+            SceneParams::DiskMap(_) => &disk_map::INFO,
+            SceneParams::PlanetesimalYield(_) => &planetesimal_yield::INFO,
+            SceneParams::FormationZone(_) => &formation_zone::INFO,
+            SceneParams::MidplaneLoading(_) => &midplane_loading::INFO,
         }
     }
 
@@ -195,6 +232,12 @@ impl SceneParams {
             SceneParams::PorosityTrack(p) => p.controls(),
             SceneParams::Timescales(p) => p.controls(),
             SceneParams::GrowthTracks(p) => p.controls(),
+            SceneParams::SurfaceDensity(p) => p.controls(),
+            SceneParams::BatchLifelines(p) => p.controls(),
+            SceneParams::DiskMap(p) => p.controls(),
+            SceneParams::PlanetesimalYield(p) => p.controls(),
+            SceneParams::FormationZone(p) => p.controls(),
+            SceneParams::MidplaneLoading(p) => p.controls(),
         }
     }
 
@@ -267,7 +310,13 @@ impl SceneParams {
             | SceneParams::CollisionSpeeds(_)
             | SceneParams::PorosityTrack(_)
             | SceneParams::Timescales(_)
-            | SceneParams::GrowthTracks(_) => {}
+            | SceneParams::GrowthTracks(_)
+            | SceneParams::SurfaceDensity(_)
+            | SceneParams::BatchLifelines(_)
+            | SceneParams::DiskMap(_)
+            | SceneParams::PlanetesimalYield(_)
+            | SceneParams::FormationZone(_)
+            | SceneParams::MidplaneLoading(_) => {}
         }
     }
 
@@ -422,6 +471,12 @@ pub fn compute_cached(
         SceneParams::PorosityTrack(p) => porosity_track::compute(p),
         SceneParams::Timescales(p) => timescales::compute(p),
         SceneParams::GrowthTracks(p) => growth_tracks::compute(p, progress),
+        SceneParams::SurfaceDensity(p) => surface_density::compute(p, progress),
+        SceneParams::BatchLifelines(p) => batch_lifelines::compute(p, progress),
+        SceneParams::DiskMap(p) => disk_map::compute(p, progress),
+        SceneParams::PlanetesimalYield(p) => planetesimal_yield::compute(p, progress),
+        SceneParams::FormationZone(p) => formation_zone::compute(p, progress),
+        SceneParams::MidplaneLoading(p) => midplane_loading::compute(p),
     }
 }
 

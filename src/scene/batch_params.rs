@@ -1,0 +1,160 @@
+//! Parameters shared by the global dust-batch scenes (thesis ch. 5).
+
+use super::controls::Control;
+use super::disk_params::DiskParams;
+use super::{Progress, SceneError};
+use crate::physics::batches::{BatchConfig, BatchRun, run};
+use crate::physics::constants::{AU, YEAR};
+use crate::physics::growth::{GrowthModel, Porosity};
+use serde::{Deserialize, Serialize};
+
+/// A batch-model run. SI units except where stated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BatchParams {
+    /// Disk and monomers (default: the truncated power law, 0.01 M☉, R_c = 30 AU, γ = 1, Z₀ = 0.02).
+    pub disk: DiskParams,
+    /// "porous" or "compact" growth.
+    pub growth: String,
+    /// Let particles grow (off: the drift-only test of Fig. 5.1).
+    pub coagulation: bool,
+    /// Fragmentation/bouncing threshold, m s⁻¹ (default 10⁴: none; 5 for compact silicates).
+    pub v_frag: f64,
+    /// Erosion threshold, m s⁻¹ (default 10⁴: none).
+    pub v_eros: f64,
+    /// Innermost initial radius, AU (default 3).
+    pub r_in_au: f64,
+    /// Outermost initial radius, AU (default 200).
+    pub r_out_au: f64,
+    /// Number of batches (default 250).
+    pub batches: usize,
+    /// Duration, yr (default 10⁶).
+    pub duration_yr: f64,
+}
+
+impl Default for BatchParams {
+    fn default() -> Self {
+        BatchParams {
+            disk: DiskParams { profile: "power-law".into(), metallicity: 0.02, ..DiskParams::default() },
+            growth: "porous".into(),
+            coagulation: true,
+            v_frag: 1e4,
+            v_eros: 1e4,
+            r_in_au: 3.0,
+            r_out_au: 200.0,
+            batches: 250,
+            duration_yr: 1e6,
+        }
+    }
+}
+
+impl BatchParams {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let mut c = self.disk.controls();
+        c.push(Control::choice(
+            "growth",
+            "growth",
+            &mut self.growth,
+            vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")],
+            "porosity treatment",
+        ));
+        c.push(Control::toggle("coagulation", "coagulation", &mut self.coagulation, "off: drift only (Fig. 5.1)"));
+        let v = ("m/s", 1.0);
+        c.push(Control::number(
+            "v_frag",
+            "fragmentation/bouncing threshold",
+            &mut self.v_frag,
+            "m s^-1",
+            (0.1, 1e4),
+            true,
+            v,
+            "same-size collisions above it stop growth (1e4: none)",
+        ));
+        c.push(Control::number(
+            "v_eros",
+            "erosion threshold",
+            &mut self.v_eros,
+            "m s^-1",
+            (0.1, 1e4),
+            true,
+            v,
+            "collisions with monomers above it stop growth (1e4: none)",
+        ));
+        c.push(Control::number(
+            "r_in_au",
+            "innermost batch",
+            &mut self.r_in_au,
+            "AU",
+            (1.1, 100.0),
+            true,
+            ("AU", 1.0),
+            "initial radius of the first batch",
+        ));
+        c.push(Control::number(
+            "r_out_au",
+            "outermost batch",
+            &mut self.r_out_au,
+            "AU",
+            (2.0, 1000.0),
+            true,
+            ("AU", 1.0),
+            "initial radius of the last batch",
+        ));
+        c.push(Control::count(
+            "batches",
+            "batches",
+            &mut self.batches,
+            (10, 2000),
+            "number of batches (10²–10³ in the thesis)",
+        ));
+        c.push(Control::number(
+            "duration_yr",
+            "duration",
+            &mut self.duration_yr,
+            "yr",
+            (1e2, 1e7),
+            true,
+            ("yr", 1.0),
+            "time followed",
+        ));
+        c
+    }
+
+    /// The run configuration.
+    pub fn config(&self) -> BatchConfig {
+        let porosity = if self.growth == "compact" { Porosity::Compact } else { Porosity::Full };
+        let mut model = GrowthModel::chapter4(porosity);
+        model.disk = self.disk.disk();
+        model.monomer = self.disk.monomer();
+        model.thresholds.v_frag = self.v_frag;
+        model.thresholds.v_bounce = self.v_frag;
+        model.thresholds.v_eros = self.v_eros;
+        model.dlnm = 0.2;
+        BatchConfig {
+            model,
+            r_in: self.r_in_au * AU,
+            r_out: self.r_out_au * AU,
+            batches: self.batches,
+            t_end: self.duration_yr * YEAR,
+            coagulation: self.coagulation,
+            syncs_per_decade: 40,
+            smoothing: 2,
+            frame_every: 4,
+        }
+    }
+
+    /// Runs the model with progress and cancellation.
+    pub fn run(&self, progress: &Progress) -> Result<BatchRun, SceneError> {
+        let cfg = self.config();
+        let keep = |f: f64| {
+            progress.set(f);
+            progress.cancelled()
+        };
+        match run(&cfg, &keep) {
+            Ok(r) => Ok(r),
+            Err(_) if progress.cancelled() => Err(SceneError::Cancelled),
+            Err(e) => Err(e.into()),
+        }
+    }
+}

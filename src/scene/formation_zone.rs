@@ -1,0 +1,204 @@
+//! Scene "Formation zone" (thesis Figs. 5.9, 5.10): the outer edge of the
+//! region where planetesimals form directly, against disk mass and metallicity.
+
+use super::batch_params::BatchParams;
+use super::controls::Control;
+use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::constants::AU;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// Scene description.
+pub const INFO: SceneInfo = SceneInfo {
+    id: "formation-zone",
+    title: "Formation zone",
+    source: "Sect. 5.3.2; Figs. 5.9, 5.10",
+    explanation: "The outermost radius at which batches become planetesimals within the run, against \
+disk mass, for several metallicities and two characteristic radii R_c (solid and dashed). Massive, \
+dust-rich disks form planetesimals further out; a cold disk (temperature halved, option) nearly \
+doubles the zone. All disks run in parallel.",
+    heavy: true,
+};
+
+/// Parameters of the formation-zone scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The base run (disk mass, metallicity and R_c are swept).
+    pub run: BatchParams,
+    /// Smallest disk mass, M☉.
+    pub mass_min: f64,
+    /// Largest disk mass, M☉.
+    pub mass_max: f64,
+    /// Disk masses.
+    pub n_mass: usize,
+    /// Metallicities to compare: smallest.
+    pub z_min: f64,
+    /// Largest metallicity.
+    pub z_max: f64,
+    /// Metallicities.
+    pub n_z: usize,
+    /// First characteristic radius, AU.
+    pub r_c_1: f64,
+    /// Second characteristic radius, AU.
+    pub r_c_2: f64,
+    /// What the dashed lines change: "r_c" (R_c = r_c_2), "cold" (temperature
+    /// halved) or "slope" (γ = 3/2); "cold" and "slope" keep R_c = r_c_1 (Fig. 5.10).
+    pub contrast: String,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            run: BatchParams { batches: 120, ..BatchParams::default() },
+            mass_min: 0.01,
+            mass_max: 0.2,
+            n_mass: 5,
+            z_min: 0.01,
+            z_max: 0.05,
+            n_z: 3,
+            r_c_1: 30.0,
+            r_c_2: 100.0,
+            contrast: "r_c".into(),
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let mut c = self.run.controls();
+        let msun = ("M_sun", 1.0);
+        c.push(Control::number(
+            "mass_min",
+            "smallest disk mass",
+            &mut self.mass_min,
+            "M_sun",
+            (1e-3, 0.5),
+            true,
+            msun,
+            "first disk mass",
+        ));
+        c.push(Control::number(
+            "mass_max",
+            "largest disk mass",
+            &mut self.mass_max,
+            "M_sun",
+            (1e-3, 0.5),
+            true,
+            msun,
+            "last disk mass",
+        ));
+        c.push(Control::count("n_mass", "disk masses", &mut self.n_mass, (1, 12), "log-spaced"));
+        c.push(Control::number(
+            "z_min",
+            "smallest Z₀",
+            &mut self.z_min,
+            "",
+            (1e-3, 0.1),
+            true,
+            ("", 1.0),
+            "first metallicity",
+        ));
+        c.push(Control::number(
+            "z_max",
+            "largest Z₀",
+            &mut self.z_max,
+            "",
+            (1e-3, 0.1),
+            true,
+            ("", 1.0),
+            "last metallicity",
+        ));
+        c.push(Control::count("n_z", "metallicities", &mut self.n_z, (1, 6), "log-spaced"));
+        c.push(Control::number(
+            "r_c_1",
+            "R_c (solid)",
+            &mut self.r_c_1,
+            "AU",
+            (5.0, 300.0),
+            true,
+            ("AU", 1.0),
+            "first characteristic radius",
+        ));
+        c.push(Control::number(
+            "r_c_2",
+            "R_c (dashed)",
+            &mut self.r_c_2,
+            "AU",
+            (5.0, 300.0),
+            true,
+            ("AU", 1.0),
+            "second characteristic radius",
+        ));
+        c.push(Control::choice(
+            "contrast",
+            "dashed lines",
+            &mut self.contrast,
+            vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2")],
+            "what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope)",
+        ));
+        c
+    }
+}
+
+fn grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n <= 1 { vec![lo] } else { logspace(lo, hi.max(lo * 1.000001), n) }
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    let masses = grid(p.mass_min, p.mass_max, p.n_mass);
+    let zs = grid(p.z_min, p.z_max, p.n_z);
+    let (nz, nm) = (zs.len(), masses.len());
+    let combos: Vec<(usize, usize, usize)> =
+        (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
+    let edges: Vec<f64> = combos
+        .par_iter()
+        .map(|&(c, zi, mi)| {
+            let mut b = p.run.clone();
+            b.disk.profile = "power-law".into();
+            b.disk.disk_mass = masses[mi];
+            b.disk.metallicity = zs[zi];
+            b.disk.r_c = p.r_c_1;
+            if c == 1 {
+                match p.contrast.as_str() {
+                    "cold" => b.disk.cold = !b.disk.cold,
+                    "slope" => b.disk.slope = 1.5,
+                    _ => b.disk.r_c = p.r_c_2,
+                }
+            }
+            b.run(progress).map(|r| r.outermost_planetesimals() / AU)
+        })
+        .collect::<Result<_, _>>()?;
+    let mut fig = Figure::new(
+        "formation-zone",
+        "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
+        Axis::log("disk mass", "M_sun"),
+        Axis::linear("outer edge", "AU"),
+    );
+    let mut scalars = Vec::new();
+    for c in 0..2 {
+        for (zi, z) in zs.iter().enumerate() {
+            let pts: Vec<[f64; 2]> =
+                masses.iter().enumerate().map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]]).collect();
+            let label = match (c, p.contrast.as_str()) {
+                (1, "cold") => format!("R_c = {} AU, cold", crate::figure::tick_label(p.r_c_1)),
+                (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::tick_label(p.r_c_1)),
+                (1, _) => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_2)),
+                _ => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_1)),
+            };
+            fig = fig.with(Series::new(
+                format!("Z₀ = {}, {label}", crate::figure::tick_label(*z)),
+                pts,
+                if c == 0 { Style::Line } else { Style::Dashed },
+                zi,
+            ));
+        }
+    }
+    let widest = edges.iter().copied().fold(0.0, f64::max);
+    scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
+    scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
+    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: super::Extra::None })
+}

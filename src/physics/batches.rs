@@ -85,7 +85,7 @@ impl BatchConfig {
             batches,
             t_end: 1e6 * YEAR,
             coagulation: true,
-            syncs_per_decade: 40,
+            syncs_per_decade: 160,
             smoothing: 2,
             frame_every: 4,
         }
@@ -201,6 +201,41 @@ impl BatchRun {
     }
 }
 
+/// A surface-density profile known at sorted radii, interpolated linearly in
+/// (ln R, ln Σ) and held constant beyond its ends.
+struct Profile1d {
+    ln_r: Vec<f64>,
+    ln_sigma: Vec<f64>,
+}
+
+impl Profile1d {
+    fn new(points: &[(f64, f64)], sigma: &[f64]) -> Profile1d {
+        let mut pairs: Vec<(f64, f64)> =
+            points.iter().zip(sigma).filter(|(_, s)| **s > 0.0).map(|((r, _), s)| (r.ln(), s.ln())).collect();
+        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let (ln_r, ln_sigma) = pairs.into_iter().unzip();
+        Profile1d { ln_r, ln_sigma }
+    }
+
+    fn at(&self, r: f64) -> f64 {
+        let x = r.ln();
+        let n = self.ln_r.len();
+        if n == 0 {
+            return 0.0;
+        }
+        let j = self.ln_r.partition_point(|&v| v < x);
+        if j == 0 {
+            return self.ln_sigma[0].exp();
+        }
+        if j == n {
+            return self.ln_sigma[n - 1].exp();
+        }
+        let (x0, x1) = (self.ln_r[j - 1], self.ln_r[j]);
+        let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
+        (self.ln_sigma[j - 1] + w * (self.ln_sigma[j] - self.ln_sigma[j - 1])).exp()
+    }
+}
+
 /// Annulus edges of sorted radii: geometric midpoints, extended at both ends.
 fn edges(radii: &[f64]) -> Vec<f64> {
     let n = radii.len();
@@ -216,9 +251,18 @@ fn edges(radii: &[f64]) -> Vec<f64> {
     e
 }
 
-/// Surface density at each of the given (radius, mass) points, kg m⁻², smoothed
-/// over `k` neighbours each side; returned in the input order.
-pub fn surface_density(points: &[(f64, f64)], k: usize) -> Vec<f64> {
+/// Smallest half-width, in ln R, of the annulus over which Σ_d is averaged
+/// (±5 % in radius, about one gas scale height): batches that converge in
+/// radius do not produce an unbounded surface density.
+pub const MIN_HALF_WIDTH: f64 = 0.05;
+
+/// Surface density at each of the given (radius, mass) points, kg m⁻²; returned
+/// in the input order. Each point's value is the mass of the batches from `k`
+/// neighbours inside to `k` outside, divided by the area between their outer
+/// cell edges (geometric midpoints to the next batches). Where that annulus is
+/// narrower than 2·`half_width` in ln R, it takes one more neighbour on each
+/// side until it is not, so converging batches give a bounded density.
+pub fn surface_density(points: &[(f64, f64)], k: usize, half_width: f64) -> Vec<f64> {
     let n = points.len();
     if n == 0 {
         return Vec::new();
@@ -227,13 +271,22 @@ pub fn surface_density(points: &[(f64, f64)], k: usize) -> Vec<f64> {
     order.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
     let radii: Vec<f64> = order.iter().map(|&i| points[i].0).collect();
     let e = edges(&radii);
+    let mut cumulative = Vec::with_capacity(n + 1);
+    cumulative.push(0.0);
+    for &i in &order {
+        cumulative.push(cumulative[cumulative.len() - 1] + points[i].1);
+    }
+    let min_ratio = (2.0 * half_width.max(0.0)).exp();
     let mut out = vec![0.0; n];
     for (pos, &i) in order.iter().enumerate() {
-        let lo = pos.saturating_sub(k);
-        let hi = (pos + k).min(n - 1);
-        let mass: f64 = order[lo..=hi].iter().map(|&j| points[j].1).sum();
-        let area = PI * (e[hi + 1].powi(2) - e[lo].powi(2));
-        out[i] = mass / area;
+        let mut lo = pos.saturating_sub(k);
+        let mut hi = (pos + k).min(n - 1);
+        while e[hi + 1] < min_ratio * e[lo] && (lo > 0 || hi < n - 1) {
+            lo = lo.saturating_sub(1);
+            hi = (hi + 1).min(n - 1);
+        }
+        let mass = cumulative[hi + 1] - cumulative[lo];
+        out[i] = mass / (PI * (e[hi + 1].powi(2) - e[lo].powi(2)));
     }
     out
 }
@@ -307,30 +360,38 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
         }
         let dust: Vec<usize> = (0..n).filter(|&i| fates[i] == Fate::Dust).collect();
         let sigma_points: Vec<(f64, f64)> = dust.iter().map(|&i| (states[i].r, masses[i])).collect();
-        let sigma = surface_density(&sigma_points, cfg.smoothing);
-        // Advance every dust batch to t_next in the Σ_d of this synchronisation.
-        let results: Vec<(usize, GrowthState, Option<Stop>, super::growth::TrackPoint)> = dust
-            .par_iter()
-            .zip(sigma.par_iter())
-            .map(|(&i, &sd)| {
-                let mut s = states[i].clone();
-                let mut last = None;
-                let mut ended = None;
-                for _ in 0..100_000 {
-                    let (p, e) = model.step(&mut s, Some(sd), t_next);
-                    last = Some(p);
-                    if e.is_some() {
-                        ended = e;
-                        break;
-                    }
-                    if s.t >= t_next {
-                        break;
-                    }
-                }
-                let point = last.unwrap_or_else(|| model.step(&mut s.clone(), Some(sd), s.t).0);
-                (i, s, ended, point)
-            })
-            .collect();
+        let sigma = surface_density(&sigma_points, cfg.smoothing, MIN_HALF_WIDTH);
+        let start = Profile1d::new(&sigma_points, &sigma);
+        // Advance every dust batch to t_next with Σ_d of this synchronisation
+        // read at its current radius.
+        let advance =
+            |sd: &(dyn Fn(f64) -> f64 + Sync)| -> Vec<(usize, GrowthState, Option<Stop>, super::growth::TrackPoint)> {
+                dust.par_iter()
+                    .map(|&i| {
+                        let mut s = states[i].clone();
+                        let mut last = None;
+                        let mut ended = None;
+                        for _ in 0..100_000 {
+                            let here = sd(s.r);
+                            let (p, e) = model.step(&mut s, Some(here), t_next);
+                            last = Some(p);
+                            if e.is_some() {
+                                ended = e;
+                                break;
+                            }
+                            if s.t >= t_next {
+                                break;
+                            }
+                        }
+                        let point = last.unwrap_or_else(|| {
+                            let here = sd(s.r);
+                            model.step(&mut s.clone(), Some(here), s.t).0
+                        });
+                        (i, s, ended, point)
+                    })
+                    .collect()
+            };
+        let results = advance(&|r| start.at(r));
         for (i, s, ended, p) in results {
             match ended {
                 Some(Stop::Planetesimal) => fates[i] = Fate::Planetesimals { t: s.t, r: s.r },
@@ -358,7 +419,7 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
                 (latest[i].r, if (1e-2..=1.0).contains(&st) { masses[i] } else { 0.0 })
             })
             .collect();
-        let sigma_star = surface_density(&star, cfg.smoothing);
+        let sigma_star = surface_density(&star, cfg.smoothing, MIN_HALF_WIDTH);
         for (j, &i) in dust_now.iter().enumerate() {
             let b = &mut latest[i];
             let z_star = sigma_star[j] / disk.surface_density(b.r);
@@ -394,7 +455,7 @@ mod tests {
         let e = edges(&radii);
         let sigma = |r: f64| 10.0 * AU / r;
         let points: Vec<(f64, f64)> = (0..n).map(|i| (radii[i], 2.0 * PI * 10.0 * AU * (e[i + 1] - e[i]))).collect();
-        let s = surface_density(&points, 2);
+        let s = surface_density(&points, 2, MIN_HALF_WIDTH);
         for i in 5..n - 5 {
             assert!((s[i] / sigma(radii[i]) - 1.0).abs() < 0.02, "{i}: {} vs {}", s[i], sigma(radii[i]));
         }

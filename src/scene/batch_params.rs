@@ -138,7 +138,7 @@ impl BatchParams {
             batches: self.batches,
             t_end: self.duration_yr * YEAR,
             coagulation: self.coagulation,
-            syncs_per_decade: 40,
+            syncs_per_decade: 160,
             smoothing: 2,
             frame_every: 4,
         }

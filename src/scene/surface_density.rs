@@ -5,7 +5,7 @@ use super::batch_params::BatchParams;
 use super::controls::Control;
 use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
-use crate::physics::batches::{Fate, surface_density};
+use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
 use crate::physics::constants::{AU, YEAR};
 use serde::{Deserialize, Serialize};
 
@@ -73,7 +73,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         shown.push(f.t);
         let dust: Vec<(f64, f64)> =
             f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
-        let sd = surface_density(&dust, 2);
+        let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
         let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
         pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
         fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::tick_label(f.t / YEAR)), pts, Style::Line, k));
@@ -86,7 +86,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
         .collect();
     if !formed.is_empty() {
-        let sp = surface_density(&formed, 2);
+        let sp = surface_density(&formed, 2, MIN_HALF_WIDTH);
         let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
         pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
         fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));

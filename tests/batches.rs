@@ -1,0 +1,200 @@
+//! The global dust-batch model of thesis ch. 5: conservation, the published
+//! checks, convergence with the batch count and parameter errors.
+
+use grainscope::physics::batches::{BatchConfig, BatchRun, Fate, MIN_HALF_WIDTH, alpha_midplane, run, surface_density};
+use grainscope::physics::constants::AU;
+use grainscope::scene::batch_params::BatchParams;
+use grainscope::scene::{self, Progress, SceneParams};
+
+fn go(cfg: &BatchConfig) -> BatchRun {
+    run(cfg, &|_| false).expect("valid configuration")
+}
+
+fn params_run(p: &BatchParams) -> BatchRun {
+    p.run(&Progress::default()).expect("valid parameters")
+}
+
+fn assert_conserved(r: &BatchRun) {
+    assert!(r.total_mass > 0.0);
+    for f in &r.frames {
+        let sum: f64 = f.budget.iter().sum();
+        assert!(
+            ((sum - r.total_mass) / r.total_mass).abs() <= 1e-12,
+            "t = {:e} s: budget {:?} sums to {sum:e}, total {:e}",
+            f.t,
+            f.budget,
+            r.total_mass
+        );
+        assert!(f.budget.iter().all(|m| *m >= 0.0));
+    }
+}
+
+#[test]
+fn initial_batches_reproduce_the_dust_surface_density() {
+    // (5.6)-(5.7): the batch positions and masses give back Z₀ Σ_g.
+    let cfg = BatchConfig::figure_5_6(500);
+    let r = go(&BatchConfig { t_end: 1e-6 * cfg.t_end, ..cfg.clone() });
+    let points: Vec<(f64, f64)> = r.initial_radii.iter().copied().zip(r.masses.iter().copied()).collect();
+    let sigma = surface_density(&points, cfg.smoothing, MIN_HALF_WIDTH);
+    for (i, (radius, _)) in points.iter().enumerate() {
+        if *radius > 5.0 * AU && *radius < 150.0 * AU {
+            let expected = cfg.model.disk.dust_surface_density(*radius);
+            assert!(
+                (sigma[i] / expected - 1.0).abs() < 0.02,
+                "R = {:.1} AU: {:e} against {expected:e}",
+                radius / AU,
+                sigma[i]
+            );
+        }
+    }
+}
+
+#[test]
+fn mass_is_conserved_to_1e_12_in_every_frame() {
+    assert_conserved(&go(&BatchConfig::figure_5_6(300)));
+    let mut compact = BatchParams { growth: "compact".into(), v_frag: 5.0, ..BatchParams::default() };
+    compact.disk.icy = false;
+    assert_conserved(&params_run(&compact));
+    assert_conserved(&params_run(&BatchParams { coagulation: false, duration_yr: 1e7, ..BatchParams::default() }));
+}
+
+#[test]
+fn figure_5_3_compact_silicates_empty_the_disk_within_a_million_years() {
+    let mut p = BatchParams { growth: "compact".into(), v_frag: 5.0, ..BatchParams::default() };
+    p.disk.icy = false;
+    p.disk.metallicity = 0.01;
+    let r = params_run(&p);
+    let end = r.frames.last().expect("frames");
+    assert!(end.budget[0] / r.total_mass < 0.01, "dust left {:.3}", end.budget[0] / r.total_mass);
+    assert_eq!(end.budget[1], 0.0, "fragmentation-limited compact growth forms no planetesimals");
+}
+
+#[test]
+fn figure_5_6_planetesimals_form_out_to_about_5_au() {
+    let r = go(&BatchConfig::figure_5_6(250));
+    let edge = r.outermost_planetesimals() / AU;
+    assert!((4.0..6.0).contains(&edge), "edge {edge:.2} AU");
+    // Inside-out: batches that start further in turn into planetesimals earlier.
+    let formed: Vec<(f64, f64)> = r
+        .fates
+        .iter()
+        .zip(&r.initial_radii)
+        .filter_map(|(f, r0)| if let Fate::Planetesimals { t, .. } = f { Some((*r0, *t)) } else { None })
+        .collect();
+    assert!(formed.len() > 10);
+    assert!(formed.first().expect("some").1 < formed.last().expect("some").1);
+    assert!(r.converted_fraction() > 0.3);
+}
+
+#[test]
+fn planetesimal_zone_converges_as_the_batch_count_doubles() {
+    let e250 = go(&BatchConfig::figure_5_6(250)).outermost_planetesimals();
+    let e500 = go(&BatchConfig::figure_5_6(500)).outermost_planetesimals();
+    assert!((e500 / e250 - 1.0).abs() < 0.2, "250: {:.2} AU, 500: {:.2} AU", e250 / AU, e500 / AU);
+}
+
+#[test]
+fn erosion_at_20_m_s_prevents_direct_planetesimal_formation() {
+    let r = params_run(&BatchParams { v_eros: 20.0, ..BatchParams::default() });
+    assert_eq!(r.outermost_planetesimals(), 0.0);
+    assert!(r.fates.iter().all(|f| !matches!(f, Fate::Planetesimals { .. })));
+    assert_conserved(&r);
+}
+
+#[test]
+fn without_coagulation_micron_grains_barely_drift() {
+    // Fig. 5.1: compact 1 µm silicates have Ωt_s ~ 1e-6 and drift little in 1e7 yr.
+    let mut p =
+        BatchParams { coagulation: false, growth: "compact".into(), duration_yr: 1e7, ..BatchParams::default() };
+    p.disk.monomer_radius = 1e-6;
+    p.disk.icy = false;
+    let r = params_run(&p);
+    let end = r.frames.last().expect("frames");
+    assert_eq!(end.budget[1], 0.0);
+    for (s, r0) in end.batches.iter().zip(&r.initial_radii) {
+        assert!(s.r <= *r0 * (1.0 + 1e-12), "a batch moved outward");
+        assert_eq!(s.mass, end.batches[0].mass, "no growth without coagulation");
+    }
+    assert!(end.budget[0] / r.total_mass > 0.9);
+}
+
+#[test]
+fn cold_disk_widens_the_zone_and_richer_disks_reach_further() {
+    let base = BatchParams { batches: 150, ..BatchParams::default() };
+    let warm = params_run(&base).outermost_planetesimals();
+    let mut c = base.clone();
+    c.disk.cold = true;
+    let cold = params_run(&c).outermost_planetesimals();
+    assert!(cold / warm > 1.5 && cold / warm < 2.5, "cold/warm {:.2}", cold / warm);
+    let mut rich = base.clone();
+    rich.disk.disk_mass = 0.2;
+    rich.disk.metallicity = 0.05;
+    let rich_edge = params_run(&rich).outermost_planetesimals() / AU;
+    assert!((16.0..25.0).contains(&rich_edge), "0.2 M_sun, Z0 = 0.05: {rich_edge:.1} AU");
+}
+
+#[test]
+fn midplane_turbulence_matches_the_quoted_magnitudes() {
+    let eta = BatchParams::default().disk.disk().eta(AU);
+    let low = alpha_midplane(eta, 0.01, 1e-2);
+    let high = alpha_midplane(eta, 0.01, 1.0);
+    assert!((low.log10() + 6.0).abs() < 0.5, "{low:e}");
+    assert!((high.log10() + 4.0).abs() < 0.5, "{high:e}");
+    assert!((high / low - 100.0).abs() < 1e-9, "alpha_mp scales with the Stokes number");
+}
+
+#[test]
+fn runs_stay_finite_and_conservative_over_the_documented_ranges() {
+    for mass in [1e-4, 0.5] {
+        for alpha in [1e-6, 1e-1] {
+            for z in [1e-4, 0.1] {
+                let mut p = BatchParams { batches: 40, ..BatchParams::default() };
+                p.disk.disk_mass = mass;
+                p.disk.alpha = alpha;
+                p.disk.metallicity = z;
+                let r = params_run(&p);
+                assert_conserved(&r);
+                for f in &r.frames {
+                    for b in f.batches.iter().filter(|b| b.dust) {
+                        assert!(
+                            b.r.is_finite() && b.mass.is_finite() && b.stokes.is_finite() && b.filling > 0.0,
+                            "M = {mass}, alpha = {alpha}, Z = {z}: {b:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+}
+
+#[test]
+fn bad_parameters_are_refused_with_a_clear_message() {
+    let p = BatchParams { r_in_au: 50.0, r_out_au: 20.0, ..BatchParams::default() };
+    let e = p.run(&Progress::default()).expect_err("r_in > r_out").to_string();
+    assert!(e.contains("r_in"), "{e}");
+
+    let mut p = BatchParams::default();
+    p.disk.disk_mass = -0.01;
+    let e = p.run(&Progress::default()).expect_err("negative mass").to_string();
+    assert!(e.contains("mass"), "{e}");
+
+    let mut s = SceneParams::default_for("planetesimal-yield").expect("scene");
+    let e = s.set("n_mass", "0").expect_err("empty sweep").to_string();
+    assert!(e.contains("n_mass"), "{e}");
+    let e = s.set("disk_mass", "-1").expect_err("negative mass").to_string();
+    assert!(e.contains("disk_mass"), "{e}");
+    let e = s.set("r_in_au", "NaN").expect_err("non-finite").to_string();
+    assert!(e.contains("r_in_au"), "{e}");
+
+    let mut z = SceneParams::default_for("formation-zone").expect("scene");
+    let e = z.set("contrast", "hotter").expect_err("unknown choice").to_string();
+    assert!(e.contains("contrast"), "{e}");
+}
+
+#[test]
+fn cancelling_stops_a_run() {
+    let progress = Progress::default();
+    progress.cancel();
+    let s = SceneParams::default_for("disk-map").expect("scene");
+    assert!(matches!(scene::compute(&s, &progress), Err(scene::SceneError::Cancelled)));
+}

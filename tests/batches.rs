@@ -198,3 +198,15 @@ fn cancelling_stops_a_run() {
     let s = SceneParams::default_for("disk-map").expect("scene");
     assert!(matches!(scene::compute(&s, &progress), Err(scene::SceneError::Cancelled)));
 }
+
+#[test]
+fn sweeps_report_progress_by_finished_disks() {
+    let mut s = SceneParams::default_for("planetesimal-yield").expect("scene");
+    for (k, v) in [("n_mass", "2"), ("n_z", "2"), ("batches", "40")] {
+        s.set(k, v).expect("in range");
+    }
+    let progress = Progress::default();
+    let out = scene::compute(&s, &progress).expect("sweep");
+    assert_eq!(out.scalars.iter().find(|x| x.key == "runs").map(|x| x.value), Some(4.0));
+    assert!((progress.fraction() - 1.0).abs() < 1e-9, "{}", progress.fraction());
+}

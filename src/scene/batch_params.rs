@@ -7,6 +7,7 @@ use crate::physics::batches::{BatchConfig, BatchRun, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use serde::{Deserialize, Serialize};
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// A batch-model run. SI units except where stated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -146,9 +147,22 @@ impl BatchParams {
 
     /// Runs the model with progress and cancellation.
     pub fn run(&self, progress: &Progress) -> Result<BatchRun, SceneError> {
+        self.run_reporting(progress, &|f| progress.set(f))
+    }
+
+    /// Runs the model as one of `total` runs of a sweep: progress counts the
+    /// finished runs (in `done`), so parallel runs report one monotonic figure.
+    pub fn run_in_sweep(&self, progress: &Progress, done: &AtomicUsize, total: usize) -> Result<BatchRun, SceneError> {
+        let r = self.run_reporting(progress, &|_| {})?;
+        let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+        progress.set(finished as f64 / total.max(1) as f64);
+        Ok(r)
+    }
+
+    fn run_reporting(&self, progress: &Progress, report: &(dyn Fn(f64) + Sync)) -> Result<BatchRun, SceneError> {
         let cfg = self.config();
         let keep = |f: f64| {
-            progress.set(f);
+            report(f);
             progress.cancelled()
         };
         match run(&cfg, &keep) {

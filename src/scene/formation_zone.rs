@@ -15,9 +15,10 @@ pub const INFO: SceneInfo = SceneInfo {
     title: "Formation zone",
     source: "Sect. 5.3.2; Figs. 5.9, 5.10",
     explanation: "The outermost radius at which batches become planetesimals within the run, against \
-disk mass, for several metallicities and two characteristic radii R_c (solid and dashed). Massive, \
-dust-rich disks form planetesimals further out; a cold disk (temperature halved, option) nearly \
-doubles the zone. All disks run in parallel.",
+disk mass, for several metallicities. Solid lines use R_c; the dashed set changes one thing: a second \
+R_c (Fig. 5.9), a cold disk with the temperature halved, the slope 3/2 or α = 1e-5 (Fig. 5.10). \
+Massive, dust-rich disks form planetesimals further out; a cold disk nearly doubles the zone. All \
+disks run in parallel.",
     heavy: true,
 };
 
@@ -44,7 +45,8 @@ pub struct Params {
     /// Second characteristic radius, AU.
     pub r_c_2: f64,
     /// What the dashed lines change: "r_c" (R_c = r_c_2), "cold" (temperature
-    /// halved) or "slope" (γ = 3/2); "cold" and "slope" keep R_c = r_c_1 (Fig. 5.10).
+    /// halved), "slope" (γ = 3/2) or "alpha" (α = 10⁻⁵); the last three keep
+    /// R_c = r_c_1 (Fig. 5.10).
     pub contrast: String,
 }
 
@@ -136,8 +138,8 @@ impl Params {
             "contrast",
             "dashed lines",
             &mut self.contrast,
-            vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2")],
-            "what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope)",
+            vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 1e-5")],
+            "what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)",
         ));
         c
     }
@@ -154,6 +156,8 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let (nz, nm) = (zs.len(), masses.len());
     let combos: Vec<(usize, usize, usize)> =
         (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = combos.len();
     let edges: Vec<f64> = combos
         .par_iter()
         .map(|&(c, zi, mi)| {
@@ -166,10 +170,11 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
                 match p.contrast.as_str() {
                     "cold" => b.disk.cold = !b.disk.cold,
                     "slope" => b.disk.slope = 1.5,
+                    "alpha" => b.disk.alpha = 1e-5,
                     _ => b.disk.r_c = p.r_c_2,
                 }
             }
-            b.run(progress).map(|r| r.outermost_planetesimals() / AU)
+            b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
         })
         .collect::<Result<_, _>>()?;
     let mut fig = Figure::new(
@@ -186,6 +191,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             let label = match (c, p.contrast.as_str()) {
                 (1, "cold") => format!("R_c = {} AU, cold", crate::figure::tick_label(p.r_c_1)),
                 (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::tick_label(p.r_c_1)),
+                (1, "alpha") => format!("R_c = {} AU, α = 1e-5", crate::figure::tick_label(p.r_c_1)),
                 (1, _) => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_2)),
                 _ => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_1)),
             };

@@ -118,6 +118,8 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     if combos.is_empty() {
         return Err(super::ParamError::Inconsistent("the sweep is empty".into()).into());
     }
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = combos.len();
     let runs: Vec<_> = combos
         .par_iter()
         .map(|&(m, z)| {
@@ -125,7 +127,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             b.disk.profile = "power-law".into();
             b.disk.disk_mass = m;
             b.disk.metallicity = z;
-            b.run(progress).map(|r| (m, z, r))
+            b.run_in_sweep(progress, &done, total).map(|r| (m, z, r))
         })
         .collect::<Result<_, _>>()?;
     let mut fig_m = Figure::new(

@@ -71,6 +71,8 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let mut c = self.run.controls();
+        // The sweep sets these for every disk.
+        c.retain(|c| !["profile", "disk_mass", "metallicity", "r_c"].contains(&c.key));
         let msun = ("M_sun", 1.0);
         c.push(Control::number(
             "mass_min",

@@ -172,3 +172,26 @@ impl BatchParams {
         }
     }
 }
+
+/// `n` log-spaced values from `lo` to `hi` (just `lo` when n ≤ 1).
+pub fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n <= 1 { vec![lo] } else { super::logspace(lo, hi.max(lo * 1.000001), n) }
+}
+
+/// Controls of a sweep over disk mass (M_sun) and metallicity, each given as
+/// (smallest, largest, count).
+pub fn sweep_controls<'a>(
+    mass: (&'a mut f64, &'a mut f64, &'a mut usize),
+    metallicity: (&'a mut f64, &'a mut f64, &'a mut usize),
+) -> Vec<Control<'a>> {
+    let msun = ("M_sun", 1.0);
+    let unit = ("", 1.0);
+    vec![
+        Control::number("mass_min", "smallest disk mass", mass.0, "M_sun", (1e-3, 0.5), true, msun, "first disk mass"),
+        Control::number("mass_max", "largest disk mass", mass.1, "M_sun", (1e-3, 0.5), true, msun, "last disk mass"),
+        Control::count("n_mass", "disk masses", mass.2, (1, 12), "log-spaced"),
+        Control::number("z_min", "smallest Z₀", metallicity.0, "", (1e-3, 0.1), true, unit, "first metallicity"),
+        Control::number("z_max", "largest Z₀", metallicity.1, "", (1e-3, 0.1), true, unit, "last metallicity"),
+        Control::count("n_z", "metallicities", metallicity.2, (1, 6), "log-spaced"),
+    ]
+}

@@ -1,9 +1,9 @@
 //! Scene "Formation zone" (thesis Figs. 5.9, 5.10): the outer edge of the
 //! region where planetesimals form directly, against disk mass and metallicity.
 
-use super::batch_params::BatchParams;
+use super::batch_params::{BatchParams, log_grid, sweep_controls};
 use super::controls::Control;
-use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
+use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::AU;
 use rayon::prelude::*;
@@ -73,49 +73,10 @@ impl Params {
         let mut c = self.run.controls();
         // The sweep sets these for every disk.
         c.retain(|c| !["profile", "disk_mass", "metallicity", "r_c"].contains(&c.key));
-        let msun = ("M_sun", 1.0);
-        c.push(Control::number(
-            "mass_min",
-            "smallest disk mass",
-            &mut self.mass_min,
-            "M_sun",
-            (1e-3, 0.5),
-            true,
-            msun,
-            "first disk mass",
+        c.extend(sweep_controls(
+            (&mut self.mass_min, &mut self.mass_max, &mut self.n_mass),
+            (&mut self.z_min, &mut self.z_max, &mut self.n_z),
         ));
-        c.push(Control::number(
-            "mass_max",
-            "largest disk mass",
-            &mut self.mass_max,
-            "M_sun",
-            (1e-3, 0.5),
-            true,
-            msun,
-            "last disk mass",
-        ));
-        c.push(Control::count("n_mass", "disk masses", &mut self.n_mass, (1, 12), "log-spaced"));
-        c.push(Control::number(
-            "z_min",
-            "smallest Z₀",
-            &mut self.z_min,
-            "",
-            (1e-3, 0.1),
-            true,
-            ("", 1.0),
-            "first metallicity",
-        ));
-        c.push(Control::number(
-            "z_max",
-            "largest Z₀",
-            &mut self.z_max,
-            "",
-            (1e-3, 0.1),
-            true,
-            ("", 1.0),
-            "last metallicity",
-        ));
-        c.push(Control::count("n_z", "metallicities", &mut self.n_z, (1, 6), "log-spaced"));
         c.push(Control::number(
             "r_c_1",
             "R_c (solid)",
@@ -147,14 +108,10 @@ impl Params {
     }
 }
 
-fn grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    if n <= 1 { vec![lo] } else { logspace(lo, hi.max(lo * 1.000001), n) }
-}
-
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let masses = grid(p.mass_min, p.mass_max, p.n_mass);
-    let zs = grid(p.z_min, p.z_max, p.n_z);
+    let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
+    let zs = log_grid(p.z_min, p.z_max, p.n_z);
     let (nz, nm) = (zs.len(), masses.len());
     let combos: Vec<(usize, usize, usize)> =
         (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();

@@ -1,9 +1,9 @@
 //! Scene "Planetesimal yield" (thesis Figs. 5.7, 5.8): planetesimal mass and
 //! converted fraction against time for a grid of disks.
 
-use super::batch_params::BatchParams;
+use super::batch_params::{BatchParams, log_grid, sweep_controls};
 use super::controls::Control;
-use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
+use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::YEAR;
 use rayon::prelude::*;
@@ -60,62 +60,19 @@ impl Params {
         let mut c = self.run.controls();
         // The sweep sets these for every disk.
         c.retain(|c| !["profile", "disk_mass", "metallicity"].contains(&c.key));
-        let msun = ("M_sun", 1.0);
-        c.push(Control::number(
-            "mass_min",
-            "smallest disk mass",
-            &mut self.mass_min,
-            "M_sun",
-            (1e-3, 0.5),
-            true,
-            msun,
-            "first disk mass",
+        c.extend(sweep_controls(
+            (&mut self.mass_min, &mut self.mass_max, &mut self.n_mass),
+            (&mut self.z_min, &mut self.z_max, &mut self.n_z),
         ));
-        c.push(Control::number(
-            "mass_max",
-            "largest disk mass",
-            &mut self.mass_max,
-            "M_sun",
-            (1e-3, 0.5),
-            true,
-            msun,
-            "last disk mass",
-        ));
-        c.push(Control::count("n_mass", "disk masses", &mut self.n_mass, (1, 10), "log-spaced"));
-        c.push(Control::number(
-            "z_min",
-            "smallest Z₀",
-            &mut self.z_min,
-            "",
-            (1e-3, 0.1),
-            true,
-            ("", 1.0),
-            "first metallicity",
-        ));
-        c.push(Control::number(
-            "z_max",
-            "largest Z₀",
-            &mut self.z_max,
-            "",
-            (1e-3, 0.1),
-            true,
-            ("", 1.0),
-            "last metallicity",
-        ));
-        c.push(Control::count("n_z", "metallicities", &mut self.n_z, (1, 10), "log-spaced"));
         c
     }
 }
 
-fn grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    if n <= 1 { vec![lo] } else { logspace(lo, hi.max(lo * 1.000001), n) }
-}
-
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let combos: Vec<(f64, f64)> = grid(p.mass_min, p.mass_max, p.n_mass)
+    let combos: Vec<(f64, f64)> = log_grid(p.mass_min, p.mass_max, p.n_mass)
         .into_iter()
-        .flat_map(|m| grid(p.z_min, p.z_max, p.n_z).into_iter().map(move |z| (m, z)))
+        .flat_map(|m| log_grid(p.z_min, p.z_max, p.n_z).into_iter().map(move |z| (m, z)))
         .collect();
     if combos.is_empty() {
         return Err(super::ParamError::Inconsistent("the sweep is empty".into()).into());

@@ -210,3 +210,28 @@ fn sweeps_report_progress_by_finished_disks() {
     assert_eq!(out.scalars.iter().find(|x| x.key == "runs").map(|x| x.value), Some(4.0));
     assert!((progress.fraction() - 1.0).abs() < 1e-9, "{}", progress.fraction());
 }
+
+#[test]
+fn display_changes_reuse_the_cached_run() {
+    use grainscope::scene::batch_params::RunCache;
+    let mut cache = RunCache::default();
+    let p = BatchParams { batches: 30, ..BatchParams::default() };
+    let progress = Progress::default();
+    let first = cache.get(&p, &progress).expect("run");
+    let again = cache.get(&p, &progress).expect("run");
+    assert!(std::sync::Arc::ptr_eq(&first, &again), "same run parameters must not rerun the model");
+    let other = cache.get(&BatchParams { v_eros: 20.0, ..p.clone() }, &progress).expect("run");
+    assert!(!std::sync::Arc::ptr_eq(&first, &other), "a changed run parameter must rerun the model");
+    // The cached result equals a fresh run.
+    let fresh = cache.get(&p, &progress).expect("run");
+    assert_eq!(fresh.frames, params_run(&p).frames);
+
+    // Scenes: changing only the thinning or colouring keeps the output of the same run.
+    let mut caches = scene::Caches::default();
+    let mut s = SceneParams::default_for("batch-lifelines").expect("scene");
+    s.set("batches", "30").expect("in range");
+    let a = scene::compute_cached(&s, &progress, &mut caches).expect("scene");
+    s.set("colour_by_filling", "true").expect("toggle");
+    let b = scene::compute_cached(&s, &progress, &mut caches).expect("scene");
+    assert_eq!(a.scalars, b.scalars);
+}

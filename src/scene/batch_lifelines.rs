@@ -1,7 +1,7 @@
 //! Scene "Batch lifelines" (thesis Figs. 5.3, 5.5): particle mass against
 //! radius for every batch, coloured by Stokes number.
 
-use super::batch_params::BatchParams;
+use super::batch_params::{BatchParams, RunCache};
 use super::controls::Control;
 use super::{Progress, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -53,8 +53,8 @@ impl Params {
 }
 
 /// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let run = p.run.run(progress)?;
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let run = cache.get(&p.run, progress)?;
     let mut fig = Figure::new(
         "batch-lifelines",
         "Particle mass against radius, every batch",

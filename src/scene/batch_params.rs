@@ -7,6 +7,7 @@ use crate::physics::batches::{BatchConfig, BatchRun, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use serde::{Deserialize, Serialize};
+use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// A batch-model run. SI units except where stated.
@@ -194,4 +195,26 @@ pub fn sweep_controls<'a>(
         Control::number("z_max", "largest Z₀", metallicity.1, "", (1e-3, 0.1), true, unit, "last metallicity"),
         Control::count("n_z", "metallicities", metallicity.2, (1, 6), "log-spaced"),
     ]
+}
+
+/// The last batch run, shared by the batch scenes: a change of a display
+/// parameter (colouring, thinning) or a switch between them reuses it.
+#[derive(Debug, Default)]
+pub struct RunCache {
+    last: Option<(BatchParams, Arc<BatchRun>)>,
+}
+
+impl RunCache {
+    /// The run for `p`, computed only if `p` differs from the cached one.
+    pub fn get(&mut self, p: &BatchParams, progress: &Progress) -> Result<Arc<BatchRun>, SceneError> {
+        if let Some((key, run)) = &self.last {
+            if key == p {
+                progress.set(1.0);
+                return Ok(Arc::clone(run));
+            }
+        }
+        let run = Arc::new(p.run(progress)?);
+        self.last = Some((p.clone(), Arc::clone(&run)));
+        Ok(run)
+    }
 }

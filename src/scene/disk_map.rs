@@ -2,7 +2,7 @@
 //! time with the Stokes-number window, planetesimal formation and the
 //! midplane mass loading.
 
-use super::batch_params::BatchParams;
+use super::batch_params::{BatchParams, RunCache};
 use super::controls::Control;
 use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -50,8 +50,8 @@ impl Params {
 }
 
 /// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let run = p.run.run(progress)?;
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let run = cache.get(&p.run, progress)?;
     let mut fig =
         Figure::new("disk-map", "Batch radius against time", Axis::log("time", "yr"), Axis::log("radius R", "AU"));
     let n = run.masses.len();

@@ -437,6 +437,7 @@ impl Progress {
 #[derive(Debug, Default)]
 pub struct Caches {
     restitution: restitution::Cache,
+    batches: batch_params::RunCache,
 }
 
 /// Computes a scene. Pure: the same parameters give the same output.
@@ -471,9 +472,9 @@ pub fn compute_cached(
         SceneParams::PorosityTrack(p) => porosity_track::compute(p),
         SceneParams::Timescales(p) => timescales::compute(p),
         SceneParams::GrowthTracks(p) => growth_tracks::compute(p, progress),
-        SceneParams::SurfaceDensity(p) => surface_density::compute(p, progress),
-        SceneParams::BatchLifelines(p) => batch_lifelines::compute(p, progress),
-        SceneParams::DiskMap(p) => disk_map::compute(p, progress),
+        SceneParams::SurfaceDensity(p) => surface_density::compute(p, progress, &mut caches.batches),
+        SceneParams::BatchLifelines(p) => batch_lifelines::compute(p, progress, &mut caches.batches),
+        SceneParams::DiskMap(p) => disk_map::compute(p, progress, &mut caches.batches),
         SceneParams::PlanetesimalYield(p) => planetesimal_yield::compute(p, progress),
         SceneParams::FormationZone(p) => formation_zone::compute(p, progress),
         SceneParams::MidplaneLoading(p) => midplane_loading::compute(p),

@@ -1,7 +1,7 @@
 //! Scene "Surface density" (thesis Figs. 5.1, 5.3 top, 5.5 top, 5.11): gas,
 //! dust and planetesimal surface densities of the batch model at chosen times.
 
-use super::batch_params::BatchParams;
+use super::batch_params::{BatchParams, RunCache};
 use super::controls::Control;
 use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -41,8 +41,8 @@ impl Params {
 }
 
 /// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let run = p.run.run(progress)?;
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let run = cache.get(&p.run, progress)?;
     let disk = p.run.config().model.disk;
     let rs = logspace(1.0, p.run.r_out_au * 1.5, 120);
     let mut fig = Figure::new(

@@ -207,11 +207,11 @@ pub struct RunCache {
 impl RunCache {
     /// The run for `p`, computed only if `p` differs from the cached one.
     pub fn get(&mut self, p: &BatchParams, progress: &Progress) -> Result<Arc<BatchRun>, SceneError> {
-        if let Some((key, run)) = &self.last {
-            if key == p {
-                progress.set(1.0);
-                return Ok(Arc::clone(run));
-            }
+        if let Some((key, run)) = &self.last
+            && key == p
+        {
+            progress.set(1.0);
+            return Ok(Arc::clone(run));
         }
         let run = Arc::new(p.run(progress)?);
         self.last = Some((p.clone(), Arc::clone(&run)));

@@ -27,6 +27,18 @@ pub struct Check {
 }
 
 impl Check {
+    /// A comparison that must hold (not a known difference).
+    pub fn new(
+        figure: &'static str,
+        quantity: &'static str,
+        thesis: f64,
+        ours: f64,
+        tolerance: f64,
+        note: &'static str,
+    ) -> Check {
+        Check { figure, quantity, thesis, ours, tolerance, note, known: false }
+    }
+
     /// Whether our value lies within the tolerance.
     pub fn pass(&self) -> bool {
         (self.ours - self.thesis).abs() <= self.tolerance
@@ -40,15 +52,7 @@ pub fn chapter5() -> Result<Vec<Check>, crate::scene::SceneError> {
     use crate::scene::Progress;
     use crate::scene::batch_params::BatchParams;
     use rayon::prelude::*;
-    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
-        figure,
-        quantity,
-        thesis,
-        ours,
-        tolerance,
-        note,
-        known: false,
-    };
+    let check = Check::new;
     let progress = Progress::default();
     let base = BatchParams::default();
     let with = |mass: f64, z: f64, r_c: f64, cold: bool| {
@@ -170,15 +174,7 @@ pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
     let c4q = collide(&quasi, 4.0, &opts)?;
     let e_jkr8 = p.e_jkr(8.0);
     let e_d8 = p.e_viscous(s.dissipation_time(), 8.0);
-    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
-        figure,
-        quantity,
-        thesis,
-        ours,
-        tolerance,
-        note,
-        known: false,
-    };
+    let check = Check::new;
     Ok(vec![
         check("Eq. 2.22", "Hertz time t_H at 8 m/s [s]", 1.4e-8, c8.hertz_time, 0.05 * 1.4e-8, ""),
         check("Fig. 2.2", "contact time t_c at 8 m/s [s]", 1.7e-8, c8.contact_time, 0.05 * 1.7e-8, ""),
@@ -215,15 +211,7 @@ pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
 pub fn chapter3() -> Vec<Check> {
     use crate::physics::rolling::{critical_displacement, rolling_force, rolling_torque, small_asymmetry_torque};
     use crate::scene::rolling_params::RollingParams;
-    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
-        figure,
-        quantity,
-        thesis,
-        ours,
-        tolerance,
-        note,
-        known: false,
-    };
+    let check = Check::new;
     // Peri & Cetinkaya: 21.4 µm PSL on aluminium, γ = 0.1 J/m².
     let peri = RollingParams::of("PSL", "aluminium alloy", true, 10.7e-6, 0.1);
     let pair = peri.pair(10.7e-6);
@@ -286,15 +274,7 @@ pub fn chapter4() -> Vec<Check> {
     use crate::physics::constants::{AU, YEAR};
     use crate::physics::disk::GasDisk;
     use crate::physics::growth::{GrowthModel, Porosity};
-    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
-        figure,
-        quantity,
-        thesis,
-        ours,
-        tolerance,
-        note,
-        known: false,
-    };
+    let check = Check::new;
     let d = GasDisk::mmsn(1e-3, 1e-2);
     let r = 5.0 * AU;
     let mono = Monomer::ice();
@@ -342,15 +322,7 @@ pub fn chapter4() -> Vec<Check> {
 /// The checks of chapter 6 (smallest fragments).
 pub fn chapter6() -> Result<Vec<Check>, PhysicsError> {
     use crate::physics::debris::{AU, TABLE_6_1, ratio_to_blowout, smallest_fragment_64, split_size, splitting_limit};
-    let check = |figure, quantity, thesis: f64, ours, tolerance, note| Check {
-        figure,
-        quantity,
-        thesis,
-        ours,
-        tolerance,
-        note,
-        known: false,
-    };
+    let check = Check::new;
     let sil = TABLE_6_1[0];
     let (eta, v) = (1e-2, 20.0);
     // (6.4) at s_min = s_max = 2^{-1/3} s₀: solve 2^{-1/3}(ηρs₀v² + 24γ) = 24γ for s₀.

@@ -3,7 +3,7 @@
 //! Tielens and bulk-loss lines and the measured silica forces.
 
 use super::controls::Control;
-use super::rolling_params::RollingParams;
+use super::rolling_params::{RollingParams, family_controls};
 use super::{Scalar, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::rolling::{bulk_torque, rolling_force, rolling_torque, small_asymmetry_torque};
@@ -84,48 +84,10 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let mut c = self.contact.controls(false);
-        let um = ("µm", 1e6);
-        c.push(Control::number(
-            "r_min",
-            "smallest radius",
-            &mut self.r_min,
-            "m",
-            (1e-8, 1e-2),
-            true,
-            um,
-            "smallest sphere radius",
+        c.extend(family_controls(
+            (&mut self.r_min, &mut self.r_max),
+            (&mut self.h_min, &mut self.h_max, &mut self.n_h),
         ));
-        c.push(Control::number(
-            "r_max",
-            "largest radius",
-            &mut self.r_max,
-            "m",
-            (1e-8, 1e-2),
-            true,
-            um,
-            "largest sphere radius",
-        ));
-        c.push(Control::number(
-            "h_min",
-            "smallest Δγ/γ",
-            &mut self.h_min,
-            "",
-            (1e-3, 100.0),
-            true,
-            ("", 1.0),
-            "first curve of the family",
-        ));
-        c.push(Control::number(
-            "h_max",
-            "largest Δγ/γ",
-            &mut self.h_max,
-            "",
-            (1e-3, 100.0),
-            true,
-            ("", 1.0),
-            "last curve of the family",
-        ));
-        c.push(Control::count("n_h", "Δγ/γ curves", &mut self.n_h, (1, 8), "curves in the family"));
         c.push(Control::number(
             "xi_dt",
             "DT displacement ξ",

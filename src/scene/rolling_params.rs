@@ -107,3 +107,38 @@ impl RollingParams {
         0.4 * self.sphere_mass(r) * r * r
     }
 }
+
+/// Controls of a radius range (m) and a family of Δγ/γ curves, shared by the
+/// rolling scenes: (r_min, r_max) and (h_min, h_max, n_h).
+pub fn family_controls<'a>(
+    radius: (&'a mut f64, &'a mut f64),
+    hysteresis: (&'a mut f64, &'a mut f64, &'a mut usize),
+) -> Vec<Control<'a>> {
+    let um = ("µm", 1e6);
+    let unit = ("", 1.0);
+    vec![
+        Control::number("r_min", "smallest radius", radius.0, "m", (1e-8, 1e-2), true, um, "smallest sphere radius"),
+        Control::number("r_max", "largest radius", radius.1, "m", (1e-8, 1e-2), true, um, "largest sphere radius"),
+        Control::number(
+            "h_min",
+            "smallest Δγ/γ",
+            hysteresis.0,
+            "",
+            (1e-3, 100.0),
+            true,
+            unit,
+            "first curve of the family",
+        ),
+        Control::number(
+            "h_max",
+            "largest Δγ/γ",
+            hysteresis.1,
+            "",
+            (1e-3, 100.0),
+            true,
+            unit,
+            "last curve of the family",
+        ),
+        Control::count("n_h", "Δγ/γ curves", hysteresis.2, (1, 8), "curves in the family"),
+    ]
+}

@@ -2,7 +2,7 @@
 //! particles over both masses, and its dominant source.
 
 use super::controls::Control;
-use super::disk_params::DiskParams;
+use super::disk_params::{DiskParams, radius_control};
 use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Heatmap, Series, Style};
 use crate::physics::aggregate::{Aggregate, Particle, TurbulenceModel, relative_velocity, stopping_time};
@@ -63,16 +63,7 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let mut c = self.disk.controls();
-        c.push(Control::number(
-            "radius_au",
-            "disk radius",
-            &mut self.radius_au,
-            "AU",
-            (0.5, 300.0),
-            true,
-            ("AU", 1.0),
-            "where the particles are",
-        ));
+        c.push(radius_control(&mut self.radius_au, "where the particles are"));
         c.push(Control::number(
             "filling",
             "filling factor φ",

@@ -128,3 +128,9 @@ impl DiskParams {
         Monomer { radius: self.monomer_radius, density: if self.icy { 1400.0 } else { 2600.0 }, icy: self.icy }
     }
 }
+
+/// The control of a local scene's disk radius, AU (0.5–300 AU); `meaning`
+/// says what sits there.
+pub fn radius_control<'a>(value: &'a mut f64, meaning: &'static str) -> Control<'a> {
+    Control::number("radius_au", "disk radius", value, "AU", (0.5, 300.0), true, ("AU", 1.0), meaning)
+}

@@ -2,6 +2,7 @@
 //! the mass-dominating particle against its mass.
 
 use super::controls::Control;
+use super::disk_params::radius_control;
 use super::growth_params::GrowthParams;
 use super::{Scalar, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -45,16 +46,7 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let mut c = self.growth.controls();
-        c.push(Control::number(
-            "radius_au",
-            "disk radius",
-            &mut self.radius_au,
-            "AU",
-            (0.5, 300.0),
-            true,
-            ("AU", 1.0),
-            "where the dust grows",
-        ));
+        c.push(radius_control(&mut self.radius_au, "where the dust grows"));
         c
     }
 

@@ -134,25 +134,22 @@ impl<'a> Control<'a> {
         (min, max): (usize, usize),
         doc: &'static str,
     ) -> Self {
-        Control {
-            key,
-            label,
-            unit: "",
-            si_unit: "",
-            doc,
-            style_only: false,
-            kind: ControlKind::Count { value, min, max },
-        }
+        Control::unitless(key, label, doc, ControlKind::Count { value, min, max })
+    }
+
+    /// A control without a unit.
+    fn unitless(key: &'static str, label: &'static str, doc: &'static str, kind: ControlKind<'a>) -> Self {
+        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind }
     }
 
     /// A switch.
     pub fn toggle(key: &'static str, label: &'static str, value: &'a mut bool, doc: &'static str) -> Self {
-        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind: ControlKind::Toggle(value) }
+        Control::unitless(key, label, doc, ControlKind::Toggle(value))
     }
 
     /// A material picker.
     pub fn material(key: &'static str, label: &'static str, value: &'a mut Material, doc: &'static str) -> Self {
-        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind: ControlKind::Material(value) }
+        Control::unitless(key, label, doc, ControlKind::Material(value))
     }
 
     /// A choice among fixed options (stored by key).
@@ -163,15 +160,7 @@ impl<'a> Control<'a> {
         options: Vec<(&'static str, &'static str)>,
         doc: &'static str,
     ) -> Self {
-        Control {
-            key,
-            label,
-            unit: "",
-            si_unit: "",
-            doc,
-            style_only: false,
-            kind: ControlKind::Choice { value, options },
-        }
+        Control::unitless(key, label, doc, ControlKind::Choice { value, options })
     }
 
     /// Marks the control as styling only.

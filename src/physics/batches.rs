@@ -361,37 +361,31 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
         let dust: Vec<usize> = (0..n).filter(|&i| fates[i] == Fate::Dust).collect();
         let sigma_points: Vec<(f64, f64)> = dust.iter().map(|&i| (states[i].r, masses[i])).collect();
         let sigma = surface_density(&sigma_points, cfg.smoothing, MIN_HALF_WIDTH);
-        let start = Profile1d::new(&sigma_points, &sigma);
+        let profile = Profile1d::new(&sigma_points, &sigma);
         // Advance every dust batch to t_next with Σ_d of this synchronisation
         // read at its current radius.
-        let advance =
-            |sd: &(dyn Fn(f64) -> f64 + Sync)| -> Vec<(usize, GrowthState, Option<Stop>, super::growth::TrackPoint)> {
-                dust.par_iter()
-                    .map(|&i| {
-                        let mut s = states[i].clone();
-                        let mut last = None;
-                        let mut ended = None;
-                        for _ in 0..100_000 {
-                            let here = sd(s.r);
-                            let (p, e) = model.step(&mut s, Some(here), t_next);
-                            last = Some(p);
-                            if e.is_some() {
-                                ended = e;
-                                break;
-                            }
-                            if s.t >= t_next {
-                                break;
-                            }
-                        }
-                        let point = last.unwrap_or_else(|| {
-                            let here = sd(s.r);
-                            model.step(&mut s.clone(), Some(here), s.t).0
-                        });
-                        (i, s, ended, point)
-                    })
-                    .collect()
-            };
-        let results = advance(&|r| start.at(r));
+        let results: Vec<(usize, GrowthState, Option<Stop>, super::growth::TrackPoint)> = dust
+            .par_iter()
+            .map(|&i| {
+                let mut s = states[i].clone();
+                let mut last = None;
+                let mut ended = None;
+                for _ in 0..100_000 {
+                    let here = profile.at(s.r);
+                    let (p, e) = model.step(&mut s, Some(here), t_next);
+                    last = Some(p);
+                    if e.is_some() {
+                        ended = e;
+                        break;
+                    }
+                    if s.t >= t_next {
+                        break;
+                    }
+                }
+                let point = last.unwrap_or_else(|| model.step(&mut s.clone(), Some(profile.at(s.r)), s.t).0);
+                (i, s, ended, point)
+            })
+            .collect();
         for (i, s, ended, p) in results {
             match ended {
                 Some(Stop::Planetesimal) => fates[i] = Fate::Planetesimals { t: s.t, r: s.r },

@@ -3,6 +3,7 @@
 
 pub mod aggregate;
 pub mod batches;
+pub mod coagulation;
 pub mod collision;
 pub mod constants;
 pub mod contact;
@@ -13,6 +14,7 @@ pub mod experiments;
 pub mod fit;
 pub mod growth;
 pub mod material;
+pub mod monte_carlo;
 pub mod plasticity;
 pub mod rolling;
 
@@ -29,6 +31,9 @@ pub enum PhysicsError {
         /// What is wrong with it.
         reason: &'static str,
     },
+    /// A run configuration is inconsistent.
+    #[error("{0}")]
+    Invalid(String),
     /// The integrator failed.
     #[error("integration failed: {0}")]
     Solver(#[from] crate::solver::SolverError),

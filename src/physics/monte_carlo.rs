@@ -1,0 +1,895 @@
+//! Monte Carlo coagulation by the distribution method of Ormel & Spaans
+//! (2008), as used in thesis Sect. 4.3: families of identical particles, each
+//! made of w groups of 2^z particles; group collisions (4.20)/(4.25) with the
+//! sequential-collision limit N_ε (4.21)–(4.24); zoom factors chosen per mass
+//! decade (4.26) so that every decade holds about w* groups; merging of
+//! families too small for their zoom factor (4.27).
+//!
+//! The engine is generic in the collision model ([`Model`]): the rate
+//! coefficient of a pair and the outcome of one collision. This module
+//! provides the analytic test kernels (constant, linear, product) with their
+//! exact solutions; the porous-ice column of ch. 4 lives in
+//! [`super::coagulation`].
+//!
+//! Cost per event: O(F) for F families. For every pair of families the rate
+//! coefficient and the single-collision changes δm, δφ (which set N_ε) are
+//! cached and recomputed only for families that changed; group rates follow
+//! from the cache and the zoom factors, so re-zooming costs O(F²) cheap
+//! multiplications. Event selection uses the row sums of the group-rate
+//! matrix.
+
+use rand::{Rng, SeedableRng};
+
+/// Mass and filling factor of a particle.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Body {
+    /// Mass (in the model's unit).
+    pub mass: f64,
+    /// Filling factor φ (1 for compact particles and the analytic kernels).
+    pub filling: f64,
+}
+
+/// One family of identical particles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Family<P> {
+    /// Particle mass (in the model's unit).
+    pub mass: f64,
+    /// Filling factor φ.
+    pub filling: f64,
+    /// Number of groups w (may be fractional, ≥ 1 while the family lives).
+    pub groups: f64,
+    /// Zoom factor z: each group holds 2^z particles.
+    pub zoom: i32,
+    /// Derived properties the model caches (stopping time, size, ...).
+    pub props: P,
+}
+
+impl<P> Family<P> {
+    /// Number of particles g = w 2^z.
+    pub fn particles(&self) -> f64 {
+        self.groups * 2f64.powi(self.zoom)
+    }
+
+    /// The particle.
+    pub fn body(&self) -> Body {
+        Body { mass: self.mass, filling: self.filling }
+    }
+}
+
+/// The outcome of one collision of a target with a projectile (the target is
+/// the more massive particle).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Collision {
+    /// The particles merge into one of mass m_t + m_p and this filling factor.
+    Stick {
+        /// Filling factor of the product.
+        filling: f64,
+    },
+    /// The target loses mass `loss` (its filling factor unchanged); the lost
+    /// mass and the projectile leave as `count` fragments `fragment` (count
+    /// may be fractional).
+    Erode {
+        /// Mass the target loses.
+        loss: f64,
+        /// One fragment.
+        fragment: Body,
+        /// Fragments per collision.
+        count: f64,
+    },
+    /// Both particles break into `count` fragments `fragment`.
+    Shatter {
+        /// One fragment.
+        fragment: Body,
+        /// Fragments per collision.
+        count: f64,
+    },
+    /// Nothing changes (bouncing).
+    Bounce,
+}
+
+/// A collision model: rate coefficients and outcomes.
+pub trait Model: Sync {
+    /// Properties cached per family.
+    type Props: Copy + Send + Sync + std::fmt::Debug;
+
+    /// The cached properties of a particle.
+    fn props(&self, body: Body) -> Self::Props;
+
+    /// Rate coefficient K of a pair; the pair collision rate is K/V for the
+    /// simulated volume (or column area) V.
+    fn rate(&self, a: &Family<Self::Props>, b: &Family<Self::Props>) -> f64;
+
+    /// The outcome of one collision; `target` is the more massive particle.
+    fn collide(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision;
+}
+
+/// The analytic Smoluchowski kernels in units m₀ = 1, N₀ = 1.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Analytic {
+    /// K = 1.
+    Constant,
+    /// K = m + m′.
+    Linear,
+    /// K = m m′ (gels at t = 1).
+    Product,
+}
+
+impl Model for Analytic {
+    type Props = ();
+
+    fn props(&self, _: Body) -> Self::Props {}
+
+    fn rate(&self, a: &Family<()>, b: &Family<()>) -> f64 {
+        match self {
+            Analytic::Constant => 1.0,
+            Analytic::Linear => a.mass + b.mass,
+            Analytic::Product => a.mass * b.mass,
+        }
+    }
+
+    fn collide(&self, target: &Family<()>, projectile: &Family<()>) -> Collision {
+        let _ = (target, projectile);
+        Collision::Stick { filling: 1.0 }
+    }
+}
+
+impl Analytic {
+    /// Exact number density N_k(t) of k-mers from monomers with N₀ = 1 at t = 0.
+    pub fn exact(&self, k: u64, t: f64) -> f64 {
+        let kf = k as f64;
+        let ln_fact = ln_factorial(k);
+        match self {
+            Analytic::Constant => {
+                let x = t / 2.0;
+                ((kf - 1.0) * x.ln() - (kf + 1.0) * (1.0 + x).ln()).exp()
+            }
+            Analytic::Linear => {
+                let g = (-t).exp();
+                let y = kf * (1.0 - g);
+                (g.ln() + (kf - 1.0) * y.ln() - y - ln_fact).exp()
+            }
+            Analytic::Product => ((kf - 1.0) * (kf * t).ln() - kf * t - kf.ln() - ln_fact).exp(),
+        }
+    }
+
+    /// Exact mass per unit volume between masses `lo` and `hi` (k-mers with
+    /// lo ≤ k < hi).
+    /// Summed term by term below k = 10⁴; above, k N_k is smooth and the sum is
+    /// integrated over ln k (Simpson, 400 intervals).
+    pub fn exact_mass_between(&self, lo: f64, hi: f64, t: f64) -> f64 {
+        const DIRECT: f64 = 1e4;
+        let k0 = lo.ceil().max(1.0);
+        let k1 = hi.ceil();
+        let mut sum: f64 = (k0 as u64..k1.min(DIRECT) as u64).map(|k| k as f64 * self.exact(k, t)).sum();
+        let (a, b) = (k0.max(DIRECT), k1);
+        if b > a {
+            let n = 400;
+            let (la, lb) = ((a - 0.5).ln(), (b - 0.5).ln());
+            let h = (lb - la) / n as f64;
+            let f = |x: f64| {
+                let k = x.exp();
+                k * k * self.exact_continuous(k, t)
+            };
+            let inner: f64 = (1..n).map(|i| f(la + i as f64 * h) * if i % 2 == 1 { 4.0 } else { 2.0 }).sum();
+            sum += h / 3.0 * (f(la) + inner + f(lb));
+        }
+        sum
+    }
+
+    /// N_k for real k (Stirling's ln Γ(k + 1)).
+    fn exact_continuous(&self, k: f64, t: f64) -> f64 {
+        let ln_fact = k * k.ln() - k + 0.5 * (2.0 * std::f64::consts::PI * k).ln() + 1.0 / (12.0 * k);
+        match self {
+            Analytic::Constant => {
+                let x = t / 2.0;
+                ((k - 1.0) * x.ln() - (k + 1.0) * (1.0 + x).ln()).exp()
+            }
+            Analytic::Linear => {
+                let g = (-t).exp();
+                let y = k * (1.0 - g);
+                (g.ln() + (k - 1.0) * y.ln() - y - ln_fact).exp()
+            }
+            Analytic::Product => ((k - 1.0) * (k * t).ln() - k * t - k.ln() - ln_fact).exp(),
+        }
+    }
+}
+
+/// ln k! (exact sum below 30, Stirling series above).
+fn ln_factorial(k: u64) -> f64 {
+    if k < 30 {
+        (1..=k).map(|i| (i as f64).ln()).sum()
+    } else {
+        let x = k as f64;
+        x * x.ln() - x + 0.5 * (2.0 * std::f64::consts::PI * x).ln() + 1.0 / (12.0 * x) - 1.0 / (360.0 * x.powi(3))
+    }
+}
+
+/// Settings of the distribution method.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Settings {
+    /// Desired groups per mass decade, w* (60 for perfect sticking, 40 with erosion in the thesis).
+    pub groups_per_decade: f64,
+    /// Largest fractional mass change of a particle in one group event, f_m (0.1).
+    pub f_m: f64,
+    /// Largest fractional filling-factor change in one group event, f_φ (0.1).
+    pub f_phi: f64,
+    /// Re-zoom at least every this many events (100); also when m_a or m_p
+    /// changed by 5 % or m_max by 50 % since the last re-zoom.
+    pub rezoom_every: usize,
+    /// Random seed.
+    pub seed: u64,
+}
+
+impl Default for Settings {
+    fn default() -> Self {
+        Settings { groups_per_decade: 60.0, f_m: 0.1, f_phi: 0.1, rezoom_every: 100, seed: 1 }
+    }
+}
+
+/// Why a run cannot start.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum EngineError {
+    /// A setting or initial condition is out of range.
+    #[error("{0}")]
+    Invalid(&'static str),
+}
+
+/// Cached data of a pair of families: rate coefficient per volume and the
+/// change of the target (the more massive) in one collision.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+struct Pair {
+    /// K/V, s⁻¹ (pair collision rate).
+    c: f64,
+    /// |δm| of the target in one collision.
+    dm: f64,
+    /// |δφ| of the target in one collision.
+    dphi: f64,
+}
+
+/// Counts of what the events did.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Tally {
+    /// Group events that stuck.
+    pub stick: u64,
+    /// Group events that eroded.
+    pub erode: u64,
+    /// Group events that shattered.
+    pub shatter: u64,
+    /// Group events that bounced.
+    pub bounce: u64,
+    /// Families merged (4.27).
+    pub merges: u64,
+    /// Re-zooms.
+    pub rezooms: u64,
+}
+
+/// The state of a Monte Carlo coagulation run.
+#[derive(Debug, Clone)]
+pub struct Engine<M: Model> {
+    model: M,
+    settings: Settings,
+    families: Vec<Family<M::Props>>,
+    /// Simulated volume (or column area): the pair rate is K/V.
+    volume: f64,
+    /// Simulated time.
+    time: f64,
+    /// Group events so far.
+    events: u64,
+    initial_mass: f64,
+    pairs: Vec<Vec<Pair>>,
+    /// Group event rates; the diagonal holds twice the in-group rate so that
+    /// the row sums add up to twice the total rate.
+    rates: Vec<Vec<f64>>,
+    row: Vec<f64>,
+    /// (m_a, m_p, m_max) at the last re-zoom.
+    zoomed_at: (f64, f64, f64),
+    since_zoom: usize,
+    tally: Tally,
+    rng: rand::rngs::StdRng,
+}
+
+impl<M: Model> Engine<M> {
+    /// Starts from `particles` identical particles `first` in volume `volume`.
+    pub fn new(model: M, first: Body, particles: f64, volume: f64, settings: Settings) -> Result<Self, EngineError> {
+        if !(first.mass > 0.0 && first.mass.is_finite()) {
+            return Err(EngineError::Invalid("the initial particle mass must be finite and > 0"));
+        }
+        if !(first.filling > 0.0 && first.filling <= 1.0) {
+            return Err(EngineError::Invalid("the initial filling factor must be in (0, 1]"));
+        }
+        if !(particles >= 2.0 && particles.is_finite()) {
+            return Err(EngineError::Invalid("need at least 2 particles"));
+        }
+        if !(volume > 0.0 && volume.is_finite()) {
+            return Err(EngineError::Invalid("the simulated volume must be finite and > 0"));
+        }
+        let s = settings;
+        if !(s.groups_per_decade >= 2.0 && s.groups_per_decade <= 1e4) {
+            return Err(EngineError::Invalid("groups per decade w* must be in [2, 10⁴]"));
+        }
+        if !(s.f_m > 0.0 && s.f_m <= 1.0 && s.f_phi > 0.0 && s.f_phi <= 1.0 && s.rezoom_every >= 1) {
+            return Err(EngineError::Invalid("need 0 < f_m, f_φ ≤ 1 and a re-zoom interval ≥ 1"));
+        }
+        let zoom = zoom_for(particles, s.groups_per_decade);
+        let props = model.props(first);
+        let family = Family { mass: first.mass, filling: first.filling, groups: particles / 2f64.powi(zoom), zoom, props };
+        let mut e = Engine {
+            model,
+            settings,
+            families: vec![family],
+            volume,
+            time: 0.0,
+            events: 0,
+            initial_mass: first.mass * particles,
+            pairs: vec![vec![Pair::default()]],
+            rates: vec![vec![0.0]],
+            row: vec![0.0],
+            zoomed_at: (first.mass, first.mass, first.mass),
+            since_zoom: 0,
+            tally: Tally::default(),
+            rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
+        };
+        e.refresh_pairs(0);
+        Ok(e)
+    }
+
+    /// The collision model.
+    pub fn model(&self) -> &M {
+        &self.model
+    }
+
+    /// The families.
+    pub fn families(&self) -> &[Family<M::Props>] {
+        &self.families
+    }
+
+    /// Simulated volume (or column area).
+    pub fn volume(&self) -> f64 {
+        self.volume
+    }
+
+    /// Simulated time.
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    /// Group events so far.
+    pub fn events(&self) -> u64 {
+        self.events
+    }
+
+    /// What the events did.
+    pub fn tally(&self) -> Tally {
+        self.tally
+    }
+
+    /// Total mass now, Σ m g.
+    pub fn mass(&self) -> f64 {
+        self.families.iter().map(|f| f.mass * f.particles()).sum()
+    }
+
+    /// Total mass at the start.
+    pub fn initial_mass(&self) -> f64 {
+        self.initial_mass
+    }
+
+    /// Total group event rate.
+    pub fn total_rate(&self) -> f64 {
+        0.5 * self.row.iter().sum::<f64>()
+    }
+
+    /// Average mass m_a, peak mass m_p (4.28)–(4.29) and largest mass.
+    pub fn moments(&self) -> (f64, f64, f64) {
+        let (mut n, mut m1, mut m2, mut max) = (0.0, 0.0, 0.0, 0.0f64);
+        for f in &self.families {
+            let g = f.particles();
+            n += g;
+            m1 += g * f.mass;
+            m2 += g * f.mass * f.mass;
+            max = max.max(f.mass);
+        }
+        (m1 / n, m2 / m1, max)
+    }
+
+    /// Average and peak filling factors φ_a = ⟨φ⟩, φ_p = ⟨mφ⟩/⟨m⟩ (4.28)–(4.29).
+    pub fn filling_moments(&self) -> (f64, f64) {
+        let (mut n, mut m1, mut phi, mut mphi) = (0.0, 0.0, 0.0, 0.0);
+        for f in &self.families {
+            let g = f.particles();
+            n += g;
+            m1 += g * f.mass;
+            phi += g * f.filling;
+            mphi += g * f.mass * f.filling;
+        }
+        (phi / n, mphi / m1)
+    }
+
+    /// Index of the family with the largest particles.
+    pub fn largest(&self) -> usize {
+        (0..self.families.len()).max_by(|&a, &b| self.families[a].mass.total_cmp(&self.families[b].mass)).unwrap_or(0)
+    }
+
+    /// The projectile distribution of family `t` (Okuzumi et al. 2009, thesis
+    /// Fig. 4.10): for every family j with m_j ≤ m_t, the rate of change of
+    /// m_t from collisions with j-particles, (m_j, Σ K n_j δm_t) — positive
+    /// for sticking, negative for erosion.
+    pub fn projectile_distribution(&self, t: usize) -> Vec<(f64, f64)> {
+        let target = &self.families[t];
+        let mut out = Vec::new();
+        for (j, f) in self.families.iter().enumerate() {
+            if f.mass > target.mass {
+                continue;
+            }
+            let partners = if j == t { (f.particles() - 1.0).max(0.0) } else { f.particles() };
+            let c = self.pairs[t][j].c;
+            let dm = match self.model.collide(target, f) {
+                Collision::Stick { .. } => f.mass,
+                Collision::Erode { loss, .. } => -loss,
+                Collision::Shatter { .. } => -target.mass,
+                Collision::Bounce => 0.0,
+            };
+            out.push((f.mass, c * partners * dm));
+        }
+        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        out
+    }
+
+    /// N_ε and the order (lo, hi) of a pair: lo has the lower zoom factor
+    /// (ties: the more massive). 2^{z_lo} lo-particles each meet
+    /// 2^{z_hi − z_lo − N_ε} hi-particles in one event (4.21)–(4.24).
+    fn order(&self, i: usize, j: usize) -> (usize, usize, i32) {
+        let (a, b) = (&self.families[i], &self.families[j]);
+        let lo_first = a.zoom < b.zoom || (a.zoom == b.zoom && (a.mass > b.mass || (a.mass == b.mass && i < j)));
+        let (lo, hi) = if lo_first { (i, j) } else { (j, i) };
+        let (l, h) = (&self.families[lo], &self.families[hi]);
+        let span = h.zoom - l.zoom;
+        if span == 0 {
+            return (lo, hi, 0);
+        }
+        if l.mass < h.mass {
+            // The lo-particles are the projectiles: one on one.
+            return (lo, hi, span);
+        }
+        let p = self.pairs[lo][hi];
+        let scale = 2f64.powi(l.zoom - h.zoom);
+        let need = |f: f64, x: f64, dx: f64| if dx > 0.0 { -(f * x * scale / dx).log2() } else { f64::NEG_INFINITY };
+        let n = need(self.settings.f_m, l.mass, p.dm).max(need(self.settings.f_phi, l.filling, p.dphi));
+        let n_eps = if n.is_finite() { (n.ceil().max(0.0) as i32).min(span) } else { 0 };
+        (lo, hi, n_eps)
+    }
+
+    /// Group event rate (4.25) of the pair (i, j); in-group (i = j): two groups
+    /// meet particle by particle, 2^z pair collisions per event, so the rate is
+    /// the family's pair rate g(g − 1)/2 · K/V divided by 2^z.
+    fn group_rate(&self, i: usize, j: usize) -> f64 {
+        let c = self.pairs[i][j].c;
+        if c <= 0.0 {
+            return 0.0;
+        }
+        if i == j {
+            let f = &self.families[i];
+            return if f.groups >= 2.0 {
+                0.5 * f.groups * (f.particles() - 1.0) * c
+            } else if f.zoom >= 1 {
+                // One group pairs up internally: 2^{z−1} pair collisions per event.
+                f.groups * (f.particles() - 1.0) * c
+            } else {
+                0.0
+            };
+        }
+        let (lo, hi, n_eps) = self.order(i, j);
+        let (l, h) = (&self.families[lo], &self.families[hi]);
+        l.groups * h.groups * 2f64.powi(l.zoom + n_eps) * c
+    }
+
+    /// Recomputes the cached pair data of family k (its body changed), then its rates.
+    fn refresh_pairs(&mut self, k: usize) {
+        for j in 0..self.families.len() {
+            let p = self.pair(k, j);
+            self.pairs[k][j] = p;
+            self.pairs[j][k] = p;
+        }
+        self.refresh_rates(k);
+    }
+
+    fn pair(&self, i: usize, j: usize) -> Pair {
+        let (a, b) = (&self.families[i], &self.families[j]);
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        let c = self.model.rate(a, b) / self.volume;
+        match self.model.collide(t, p) {
+            Collision::Stick { filling } => Pair { c, dm: p.mass, dphi: (filling - t.filling).abs() },
+            Collision::Erode { loss, .. } => Pair { c, dm: loss, dphi: 0.0 },
+            Collision::Shatter { .. } => Pair { c, dm: t.mass, dphi: t.filling },
+            // Nothing happens: such events are left out.
+            Collision::Bounce => Pair { c: 0.0, dm: 0.0, dphi: 0.0 },
+        }
+    }
+
+    /// Recomputes the group rates of family k (its groups or zoom changed).
+    fn refresh_rates(&mut self, k: usize) {
+        for j in 0..self.families.len() {
+            let r = self.group_rate(k, j);
+            let w = if j == k { 2.0 * r } else { r };
+            let old = self.rates[k][j];
+            self.rates[k][j] = w;
+            self.rates[j][k] = w;
+            if j != k {
+                self.row[j] += w - old;
+            }
+        }
+        self.row[k] = self.rates[k].iter().sum();
+    }
+
+    fn rebuild_rates(&mut self) {
+        let n = self.families.len();
+        for i in 0..n {
+            for j in i..n {
+                let r = self.group_rate(i, j);
+                let w = if i == j { 2.0 * r } else { r };
+                self.rates[i][j] = w;
+                self.rates[j][i] = w;
+            }
+        }
+        self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
+    }
+
+    /// Adds a family of `particles` particles `body` at zoom `zoom`; returns its index.
+    fn add_family(&mut self, body: Body, particles: f64, zoom: i32) -> usize {
+        assert!(body.mass.is_finite() && body.filling.is_finite() && particles.is_finite(), "add {body:?} {particles}");
+        let props = self.model.props(body);
+        let family =
+            Family { mass: body.mass, filling: body.filling, groups: particles / 2f64.powi(zoom), zoom, props };
+        self.families.push(family);
+        for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
+            p.push(Pair::default());
+            r.push(0.0);
+        }
+        let n = self.families.len();
+        self.pairs.push(vec![Pair::default(); n]);
+        self.rates.push(vec![0.0; n]);
+        self.row.push(0.0);
+        self.refresh_pairs(n - 1);
+        n - 1
+    }
+
+    fn remove_family(&mut self, k: usize) {
+        for j in 0..self.families.len() {
+            if j != k {
+                self.row[j] -= self.rates[j][k];
+            }
+        }
+        for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
+            p.swap_remove(k);
+            r.swap_remove(k);
+        }
+        self.pairs.swap_remove(k);
+        self.rates.swap_remove(k);
+        self.row.swap_remove(k);
+        self.families.swap_remove(k);
+    }
+
+    /// Performs one group event; returns false if no event is possible.
+    pub fn step(&mut self) -> bool {
+        let mut total2: f64 = self.row.iter().sum();
+        if !(total2 > 0.0) {
+            // Families may hold too few groups for their zoom factors.
+            self.rezoom();
+            total2 = self.row.iter().sum();
+        }
+        if !(total2 > 0.0 && total2.is_finite()) {
+            if std::env::var("MC_DEBUG").is_ok() {
+                for i in 0..self.families.len() {
+                    for j in 0..self.families.len() {
+                        let r = self.group_rate(i, j);
+                        if !r.is_finite() {
+                            eprintln!("{i} {j}: {:?} {:?} {:?} {:?}", self.pairs[i][j], self.order(i, j), self.families[i], self.families[j]);
+                        }
+                    }
+                }
+            }
+            return false;
+        }
+        let u: f64 = self.rng.random::<f64>();
+        self.time += -(1.0 - u).ln() / (0.5 * total2);
+        let i = pick(&self.row, self.rng.random::<f64>() * total2);
+        let j = pick(&self.rates[i], self.rng.random::<f64>() * self.row[i]);
+        let debug = std::env::var("MC_DEBUG").is_ok();
+        let m_before = if debug { self.mass() } else { 0.0 };
+        let (fi, fj) = (self.families[i], self.families[j]);
+        let order = if i != j { Some(self.order(i, j)) } else { None };
+        self.event(i, j);
+        if debug {
+            let m_after = self.mass();
+            if ((m_after - m_before) / self.initial_mass).abs() > 1e-13 {
+                eprintln!("event {}: dM {:e} {fi:?} {fj:?} {order:?}", self.events, (m_after - m_before) / self.initial_mass);
+            }
+        }
+        self.events += 1;
+        self.since_zoom += 1;
+        let (m_a, m_p, m_max) = self.moments();
+        let moved = |now: f64, then: f64, by: f64| (now / then - 1.0).abs() > by;
+        if self.since_zoom >= self.settings.rezoom_every
+            || moved(m_a, self.zoomed_at.0, 0.05)
+            || moved(m_p, self.zoomed_at.1, 0.05)
+            || moved(m_max, self.zoomed_at.2, 0.5)
+        {
+            self.rezoom();
+        }
+        true
+    }
+
+    /// Runs until time `t_end` or until `max_events` more events; returns
+    /// false if no event was possible.
+    pub fn run_until(&mut self, t_end: f64, max_events: u64) -> bool {
+        let stop = self.events + max_events;
+        while self.time < t_end && self.events < stop {
+            if !self.step() {
+                return false;
+            }
+        }
+        true
+    }
+
+    fn event(&mut self, i: usize, j: usize) {
+        let mut made: Vec<(Body, f64, i32)> = Vec::with_capacity(2);
+        if i == j {
+            let f = self.families[i];
+            if f.groups >= 2.0 {
+                self.families[i].groups -= 2.0;
+                self.outcome(&f, &f, 1.0, 2f64.powi(f.zoom), f.zoom, &mut made);
+            } else {
+                self.families[i].groups -= 1.0;
+                self.outcome(&f, &f, 1.0, 2f64.powi(f.zoom - 1), f.zoom - 1, &mut made);
+            }
+        } else {
+            let (lo, hi, n_eps) = self.order(i, j);
+            let (l, h) = (self.families[lo], self.families[hi]);
+            let per = 2f64.powi(h.zoom - l.zoom - n_eps);
+            self.families[lo].groups -= 1.0;
+            self.families[hi].groups -= 2f64.powi(-n_eps);
+            self.outcome(&l, &h, per, 2f64.powi(l.zoom), l.zoom, &mut made);
+        }
+        self.refresh_rates(i);
+        if j != i {
+            self.refresh_rates(j);
+        }
+        for (body, count, zoom) in made {
+            if count > 0.0 && body.mass > 0.0 {
+                self.add_family(body, count, zoom);
+            }
+        }
+        self.tidy();
+    }
+
+    /// The products of `units` lo-particles each meeting `per` hi-particles;
+    /// `per` > 1 only when lo is the target and extrapolates one collision (4.21).
+    fn outcome(
+        &mut self,
+        lo: &Family<M::Props>,
+        hi: &Family<M::Props>,
+        per: f64,
+        units: f64,
+        zoom: i32,
+        made: &mut Vec<(Body, f64, i32)>,
+    ) {
+        let lo_is_target = lo.mass >= hi.mass;
+        let single = if lo_is_target { self.model.collide(lo, hi) } else { self.model.collide(hi, lo) };
+        let target = if lo_is_target { lo } else { hi };
+        let projectile = if lo_is_target { hi } else { lo };
+        let grown = |dm: f64, filling: f64| Body {
+            mass: target.mass + per * dm,
+            filling: (target.filling + per * (filling - target.filling)).clamp(1e-300, 1.0),
+        };
+        let fragment_zoom = |count: f64| count.log2().floor().max(0.0) as i32;
+        match single {
+            Collision::Stick { filling } => {
+                self.tally.stick += 1;
+                made.push((grown(projectile.mass, filling), units, zoom));
+            }
+            Collision::Erode { loss, fragment, count } => {
+                self.tally.erode += 1;
+                let remnant = grown(-loss, target.filling);
+                let lost = units * per * count;
+                if remnant.mass > 0.0 {
+                    made.push((remnant, units, zoom));
+                    made.push((fragment, lost, fragment_zoom(lost)));
+                } else {
+                    // Cannot happen within the f_m limit; keep the mass anyway.
+                    let all = units * (target.mass + per * projectile.mass);
+                    let n = all / fragment.mass;
+                    made.push((fragment, n, fragment_zoom(n)));
+                }
+            }
+            Collision::Shatter { fragment, count } => {
+                self.tally.shatter += 1;
+                let n = units * count;
+                made.push((fragment, n, fragment_zoom(n)));
+            }
+            Collision::Bounce => {
+                // Left out by the rates; if reached, the particles are returned unchanged.
+                self.tally.bounce += 1;
+                made.push((lo.body(), units, zoom));
+                made.push((hi.body(), units * per, zoom));
+            }
+        }
+    }
+
+    /// Merges families with fewer than one group into their most similar
+    /// family (4.27); an empty family's rounding remainder goes the same way,
+    /// so mass is conserved to rounding.
+    fn tidy(&mut self) {
+        while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
+            if self.families[k].groups.abs() < 1e-6 {
+                self.absorb_residue(k);
+                self.remove_family(k);
+                continue;
+            }
+            match self.merge_partner(k) {
+                Some(t) => {
+                    self.merge_into(k, t);
+                    self.refresh_pairs(t);
+                    self.remove_family(k);
+                }
+                None => {
+                    // Nothing similar: fewer particles per group instead.
+                    if !self.magnify(k) {
+                        break;
+                    }
+                    self.refresh_rates(k);
+                }
+            }
+        }
+    }
+
+    /// The rounding residue of an emptied family (|w| < 10⁻⁶ groups, either
+    /// sign) goes to the family holding the most mass, as extra particles of
+    /// that family's mass: mass stays conserved and the particle number
+    /// changes by a negligible fraction.
+    fn absorb_residue(&mut self, k: usize) {
+        let f = self.families[k];
+        let residue = f.mass * f.particles();
+        let t = (0..self.families.len())
+            .filter(|&i| i != k)
+            .max_by(|&a, &b| {
+                let (x, y) = (&self.families[a], &self.families[b]);
+                (x.mass * x.particles()).total_cmp(&(y.mass * y.particles()))
+            });
+        if let Some(t) = t {
+            let g = &mut self.families[t];
+            g.groups += residue / g.mass / 2f64.powi(g.zoom);
+            self.refresh_rates(t);
+        }
+    }
+
+    /// The family k merges into: the most similar healthy family if its
+    /// particles are within a factor `MERGE_RATIO` in mass, or when family k
+    /// holds less than one particle; otherwise none (merging would move mass
+    /// across the distribution).
+    fn merge_partner(&self, k: usize) -> Option<usize> {
+        let t = self.most_similar(k)?;
+        let (a, b) = (self.families[k].mass, self.families[t].mass);
+        if a.max(b) / a.min(b) <= MERGE_RATIO || self.families[k].particles() < 1.0 { Some(t) } else { None }
+    }
+
+    /// Lowers the zoom factor of family k so that it holds at least one
+    /// group; false if it holds less than one particle.
+    fn magnify(&mut self, k: usize) -> bool {
+        let f = self.families[k];
+        if f.particles() < 1.0 {
+            return false;
+        }
+        let z = f.particles().log2().floor().max(0.0) as i32;
+        self.families[k].zoom = z;
+        self.families[k].groups = f.particles() / 2f64.powi(z);
+        true
+    }
+
+    /// The healthy family most like family k: largest R^(m)(R^(φ))³ (Sect. 4.3.4).
+    fn most_similar(&self, k: usize) -> Option<usize> {
+        let f = &self.families[k];
+        let score = |g: &Family<M::Props>| {
+            let rm = (f.mass / g.mass).min(g.mass / f.mass);
+            let rp = (f.filling / g.filling).min(g.filling / f.filling);
+            rm.ln() + 3.0 * rp.ln()
+        };
+        self.families
+            .iter()
+            .enumerate()
+            .filter(|(i, g)| *i != k && g.groups >= 1.0)
+            .max_by(|a, b| score(a.1).total_cmp(&score(b.1)))
+            .map(|(i, _)| i)
+    }
+
+    /// (4.27): adds family k to family t, conserving particles and mass.
+    fn merge_into(&mut self, k: usize, t: usize) {
+        let (a, b) = (self.families[k], self.families[t]);
+        let g = a.particles() + b.particles();
+        let mass = (a.mass * a.particles() + b.mass * b.particles()) / g;
+        let filling = (a.filling * a.particles() + b.filling * b.particles()) / g;
+        assert!(mass.is_finite(), "merge {a:?} {b:?}");
+        let props = self.model.props(Body { mass, filling });
+        self.families[t] = Family { mass, filling, groups: g / 2f64.powi(b.zoom), zoom: b.zoom, props };
+        self.tally.merges += 1;
+    }
+
+    /// Sets every family's zoom factor to z*(m) (4.26) and merges families
+    /// that cannot fill one group at their zoom factor (4.27).
+    pub fn rezoom(&mut self) {
+        let w_star = self.settings.groups_per_decade;
+        let mut decades: std::collections::BTreeMap<i64, f64> = std::collections::BTreeMap::new();
+        for f in &self.families {
+            *decades.entry(f.mass.log10().floor() as i64).or_default() += f.particles();
+        }
+        for f in &mut self.families {
+            let n10 = decades.get(&(f.mass.log10().floor() as i64)).copied().unwrap_or(0.0);
+            let z = zoom_for(n10, w_star);
+            f.groups = f.particles() / 2f64.powi(z);
+            f.zoom = z;
+        }
+        while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
+            if self.families[k].groups.abs() < 1e-6 {
+                self.absorb_residue(k);
+                self.remove_family(k);
+                continue;
+            }
+            match self.merge_partner(k) {
+                Some(t) => {
+                    self.merge_into(k, t);
+                    self.refresh_pairs(t);
+                    self.remove_family(k);
+                }
+                None => {
+                    if !self.magnify(k) {
+                        break;
+                    }
+                }
+            }
+        }
+        self.rebuild_rates();
+        self.zoomed_at = self.moments();
+        self.since_zoom = 0;
+        self.tally.rezooms += 1;
+    }
+
+    /// Mass per unit volume per ln m in logarithmic bins, `per_decade` bins
+    /// per decade: (bin centre, mass density per ln m).
+    pub fn mass_spectrum(&self, per_decade: usize) -> Vec<(f64, f64)> {
+        spectrum(self.families.iter().map(|f| (f.mass, f.mass * f.particles())), per_decade, self.volume)
+    }
+}
+
+/// Mass per volume per ln m in logarithmic bins from (mass, total mass) pairs.
+pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volume: f64) -> Vec<(f64, f64)> {
+    let mut bins: std::collections::BTreeMap<i64, f64> = std::collections::BTreeMap::new();
+    let n = per_decade.max(1) as f64;
+    for (m, total) in items {
+        *bins.entry((m.log10() * n).floor() as i64).or_default() += total;
+    }
+    let width = std::f64::consts::LN_10 / n;
+    bins.into_iter().map(|(b, m)| (10f64.powf((b as f64 + 0.5) / n), m / volume / width)).collect()
+}
+
+/// Families with fewer than one group merge only into a family within this
+/// mass factor; otherwise they are magnified.
+const MERGE_RATIO: f64 = f64::INFINITY;
+
+/// z* = [log₂(N₁₀/w*)] ≥ 0 (4.26).
+fn zoom_for(n10: f64, w_star: f64) -> i32 {
+    if n10 <= w_star { 0 } else { (n10 / w_star).log2().floor() as i32 }
+}
+
+/// Index whose cumulative weight first exceeds `target` (the last positive one otherwise).
+fn pick(weights: &[f64], target: f64) -> usize {
+    let mut acc = 0.0;
+    let mut last = 0;
+    for (k, w) in weights.iter().enumerate() {
+        if *w > 0.0 {
+            acc += w;
+            last = k;
+            if acc > target {
+                return k;
+            }
+        }
+    }
+    last
+}

@@ -92,6 +92,12 @@ impl Column {
 
     /// Filling factor of the product of a sticking collision.
     pub fn stuck_filling(&self, t: Body, p: Body, v: f64) -> f64 {
+        self.filling_after(t, p, v, self.compaction == Compaction::Full)
+    }
+
+    /// Filling factor after hit-and-stick and collisional compaction, and,
+    /// if `external`, gas and self-gravity compaction.
+    fn filling_after(&self, t: Body, p: Body, v: f64, external: bool) -> f64 {
         let mono = &self.monomer;
         let rho0 = mono.density;
         let m0 = mono.mass();
@@ -108,7 +114,7 @@ impl Column {
             0.0
         };
         let mut phi = phi_hs.max(phi_c).min(1.0);
-        if self.compaction == Compaction::Full {
+        if external {
             // Gas ram pressure: solve only if it exceeds the strength P_c = E_roll φ³/a₀³ (4.15).
             let agg = Aggregate { mass: m, filling: phi };
             let ts = stopping_time(&self.env, mono, &agg, self.newton).time;
@@ -157,12 +163,27 @@ impl Model for Column {
     }
 
     fn collide(&self, target: &Family<Props>, projectile: &Family<Props>) -> Collision {
+        self.outcome_of(target, projectile, true)
+    }
+
+    /// Without gas and self-gravity compaction: these set the product's
+    /// filling factor as a whole rather than per collision, so they do not
+    /// limit sequences.
+    fn estimate(&self, target: &Family<Props>, projectile: &Family<Props>) -> Collision {
+        self.outcome_of(target, projectile, false)
+    }
+}
+
+impl Column {
+    fn outcome_of(&self, target: &Family<Props>, projectile: &Family<Props>, external: bool) -> Collision {
         let v = self.velocity(target, projectile);
         let (t, p) = (target.body(), projectile.body());
         let m0 = self.monomer.mass();
         let fragments_of = |mass: f64| (projectile.mass / 10.0).max(m0).min(mass);
         match outcome(t.mass, p.mass, v, &self.thresholds) {
-            Outcome::Stick => Collision::Stick { filling: self.stuck_filling(t, p, v) },
+            Outcome::Stick => Collision::Stick {
+                filling: self.filling_after(t, p, v, external && self.compaction == Compaction::Full),
+            },
             Outcome::Erode { efficiency } => {
                 let eps = self.c1 * efficiency;
                 let lost = eps * p.mass;

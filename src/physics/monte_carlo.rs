@@ -47,7 +47,7 @@ pub struct Family<P> {
 impl<P> Family<P> {
     /// Number of particles g = w 2^z.
     pub fn particles(&self) -> f64 {
-        self.groups * 2f64.powi(self.zoom)
+        self.groups * exp2i(self.zoom)
     }
 
     /// The particle.
@@ -101,6 +101,12 @@ pub trait Model: Sync {
 
     /// The outcome of one collision; `target` is the more massive particle.
     fn collide(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision;
+
+    /// A cheaper estimate of [`Model::collide`] used only to size sequences
+    /// (N_ε) and projectile distributions; by default the outcome itself.
+    fn estimate(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision {
+        self.collide(target, projectile)
+    }
 }
 
 /// The analytic Smoluchowski kernels in units m₀ = 1, N₀ = 1.
@@ -244,6 +250,9 @@ struct Pair {
     dm: f64,
     /// |δφ| of the target in one collision.
     dphi: f64,
+    /// log₂(f_m m_t/|δm|) and log₂(f_φ φ_t/|δφ|) of the target (+∞ without change):
+    /// N_ε = ⌈max(z_hi − z_lo − these)⌉ (4.22)–(4.24).
+    headroom: f64,
 }
 
 /// Counts of what the events did.
@@ -284,6 +293,10 @@ pub struct Engine<M: Model> {
     /// (m_a, m_p, m_max) at the last re-zoom.
     zoomed_at: (f64, f64, f64),
     since_zoom: usize,
+    /// Largest row-sum total since the row sums were last summed afresh.
+    row_scale: f64,
+    /// Families whose zoom factor changed in the re-zoom under way.
+    dirty: Vec<bool>,
     tally: Tally,
     rng: rand::rngs::StdRng,
 }
@@ -312,7 +325,7 @@ impl<M: Model> Engine<M> {
         }
         let zoom = zoom_for(particles, s.groups_per_decade);
         let props = model.props(first);
-        let family = Family { mass: first.mass, filling: first.filling, groups: particles / 2f64.powi(zoom), zoom, props };
+        let family = Family { mass: first.mass, filling: first.filling, groups: particles / exp2i(zoom), zoom, props };
         let mut e = Engine {
             model,
             settings,
@@ -326,6 +339,8 @@ impl<M: Model> Engine<M> {
             row: vec![0.0],
             zoomed_at: (first.mass, first.mass, first.mass),
             since_zoom: 0,
+            dirty: vec![false],
+            row_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
         };
@@ -422,7 +437,7 @@ impl<M: Model> Engine<M> {
             }
             let partners = if j == t { (f.particles() - 1.0).max(0.0) } else { f.particles() };
             let c = self.pairs[t][j].c;
-            let dm = match self.model.collide(target, f) {
+            let dm = match self.model.estimate(target, f) {
                 Collision::Stick { .. } => f.mass,
                 Collision::Erode { loss, .. } => -loss,
                 Collision::Shatter { .. } => -target.mass,
@@ -450,10 +465,7 @@ impl<M: Model> Engine<M> {
             // The lo-particles are the projectiles: one on one.
             return (lo, hi, span);
         }
-        let p = self.pairs[lo][hi];
-        let scale = 2f64.powi(l.zoom - h.zoom);
-        let need = |f: f64, x: f64, dx: f64| if dx > 0.0 { -(f * x * scale / dx).log2() } else { f64::NEG_INFINITY };
-        let n = need(self.settings.f_m, l.mass, p.dm).max(need(self.settings.f_phi, l.filling, p.dphi));
+        let n = f64::from(span) - self.pairs[lo][hi].headroom;
         let n_eps = if n.is_finite() { (n.ceil().max(0.0) as i32).min(span) } else { 0 };
         (lo, hi, n_eps)
     }
@@ -479,7 +491,7 @@ impl<M: Model> Engine<M> {
         }
         let (lo, hi, n_eps) = self.order(i, j);
         let (l, h) = (&self.families[lo], &self.families[hi]);
-        l.groups * h.groups * 2f64.powi(l.zoom + n_eps) * c
+        l.groups * h.groups * exp2i(l.zoom + n_eps) * c
     }
 
     /// Recomputes the cached pair data of family k (its body changed), then its rates.
@@ -496,13 +508,16 @@ impl<M: Model> Engine<M> {
         let (a, b) = (&self.families[i], &self.families[j]);
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
         let c = self.model.rate(a, b) / self.volume;
-        match self.model.collide(t, p) {
-            Collision::Stick { filling } => Pair { c, dm: p.mass, dphi: (filling - t.filling).abs() },
-            Collision::Erode { loss, .. } => Pair { c, dm: loss, dphi: 0.0 },
-            Collision::Shatter { .. } => Pair { c, dm: t.mass, dphi: t.filling },
+        let (dm, dphi, c) = match self.model.estimate(t, p) {
+            Collision::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
+            Collision::Erode { loss, .. } => (loss, 0.0, c),
+            Collision::Shatter { .. } => (t.mass, t.filling, c),
             // Nothing happens: such events are left out.
-            Collision::Bounce => Pair { c: 0.0, dm: 0.0, dphi: 0.0 },
-        }
+            Collision::Bounce => (0.0, 0.0, 0.0),
+        };
+        let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { (f * x / dx).log2() } else { f64::INFINITY };
+        let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
+        Pair { c, dm, dphi, headroom }
     }
 
     /// Recomputes the group rates of family k (its groups or zoom changed).
@@ -531,14 +546,14 @@ impl<M: Model> Engine<M> {
             }
         }
         self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
+        self.row_scale = self.row.iter().sum();
     }
 
     /// Adds a family of `particles` particles `body` at zoom `zoom`; returns its index.
     fn add_family(&mut self, body: Body, particles: f64, zoom: i32) -> usize {
-        assert!(body.mass.is_finite() && body.filling.is_finite() && particles.is_finite(), "add {body:?} {particles}");
         let props = self.model.props(body);
         let family =
-            Family { mass: body.mass, filling: body.filling, groups: particles / 2f64.powi(zoom), zoom, props };
+            Family { mass: body.mass, filling: body.filling, groups: particles / exp2i(zoom), zoom, props };
         self.families.push(family);
         for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
             p.push(Pair::default());
@@ -548,6 +563,7 @@ impl<M: Model> Engine<M> {
         self.pairs.push(vec![Pair::default(); n]);
         self.rates.push(vec![0.0; n]);
         self.row.push(0.0);
+        self.dirty.push(false);
         self.refresh_pairs(n - 1);
         n - 1
     }
@@ -565,45 +581,34 @@ impl<M: Model> Engine<M> {
         self.pairs.swap_remove(k);
         self.rates.swap_remove(k);
         self.row.swap_remove(k);
+        self.dirty.swap_remove(k);
         self.families.swap_remove(k);
     }
 
     /// Performs one group event; returns false if no event is possible.
     pub fn step(&mut self) -> bool {
         let mut total2: f64 = self.row.iter().sum();
+        // Row sums are updated incrementally; when the total falls far below
+        // the largest it had, their rounding could matter: recompute them.
+        if !(total2 > 1e-9 * self.row_scale) {
+            self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
+            total2 = self.row.iter().sum();
+            self.row_scale = total2;
+        }
+        self.row_scale = self.row_scale.max(total2);
         if !(total2 > 0.0) {
             // Families may hold too few groups for their zoom factors.
             self.rezoom();
             total2 = self.row.iter().sum();
         }
         if !(total2 > 0.0 && total2.is_finite()) {
-            if std::env::var("MC_DEBUG").is_ok() {
-                for i in 0..self.families.len() {
-                    for j in 0..self.families.len() {
-                        let r = self.group_rate(i, j);
-                        if !r.is_finite() {
-                            eprintln!("{i} {j}: {:?} {:?} {:?} {:?}", self.pairs[i][j], self.order(i, j), self.families[i], self.families[j]);
-                        }
-                    }
-                }
-            }
             return false;
         }
         let u: f64 = self.rng.random::<f64>();
         self.time += -(1.0 - u).ln() / (0.5 * total2);
         let i = pick(&self.row, self.rng.random::<f64>() * total2);
         let j = pick(&self.rates[i], self.rng.random::<f64>() * self.row[i]);
-        let debug = std::env::var("MC_DEBUG").is_ok();
-        let m_before = if debug { self.mass() } else { 0.0 };
-        let (fi, fj) = (self.families[i], self.families[j]);
-        let order = if i != j { Some(self.order(i, j)) } else { None };
         self.event(i, j);
-        if debug {
-            let m_after = self.mass();
-            if ((m_after - m_before) / self.initial_mass).abs() > 1e-13 {
-                eprintln!("event {}: dM {:e} {fi:?} {fj:?} {order:?}", self.events, (m_after - m_before) / self.initial_mass);
-            }
-        }
         self.events += 1;
         self.since_zoom += 1;
         let (m_a, m_p, m_max) = self.moments();
@@ -636,18 +641,18 @@ impl<M: Model> Engine<M> {
             let f = self.families[i];
             if f.groups >= 2.0 {
                 self.families[i].groups -= 2.0;
-                self.outcome(&f, &f, 1.0, 2f64.powi(f.zoom), f.zoom, &mut made);
+                self.outcome(&f, &f, 1.0, exp2i(f.zoom), f.zoom, &mut made);
             } else {
                 self.families[i].groups -= 1.0;
-                self.outcome(&f, &f, 1.0, 2f64.powi(f.zoom - 1), f.zoom - 1, &mut made);
+                self.outcome(&f, &f, 1.0, exp2i(f.zoom - 1), f.zoom - 1, &mut made);
             }
         } else {
             let (lo, hi, n_eps) = self.order(i, j);
             let (l, h) = (self.families[lo], self.families[hi]);
-            let per = 2f64.powi(h.zoom - l.zoom - n_eps);
+            let per = exp2i(h.zoom - l.zoom - n_eps);
             self.families[lo].groups -= 1.0;
-            self.families[hi].groups -= 2f64.powi(-n_eps);
-            self.outcome(&l, &h, per, 2f64.powi(l.zoom), l.zoom, &mut made);
+            self.families[hi].groups -= exp2i(-n_eps);
+            self.outcome(&l, &h, per, exp2i(l.zoom), l.zoom, &mut made);
         }
         self.refresh_rates(i);
         if j != i {
@@ -756,7 +761,7 @@ impl<M: Model> Engine<M> {
             });
         if let Some(t) = t {
             let g = &mut self.families[t];
-            g.groups += residue / g.mass / 2f64.powi(g.zoom);
+            g.groups += residue / g.mass / exp2i(g.zoom);
             self.refresh_rates(t);
         }
     }
@@ -780,7 +785,8 @@ impl<M: Model> Engine<M> {
         }
         let z = f.particles().log2().floor().max(0.0) as i32;
         self.families[k].zoom = z;
-        self.families[k].groups = f.particles() / 2f64.powi(z);
+        self.dirty[k] = true;
+        self.families[k].groups = f.particles() / exp2i(z);
         true
     }
 
@@ -806,9 +812,8 @@ impl<M: Model> Engine<M> {
         let g = a.particles() + b.particles();
         let mass = (a.mass * a.particles() + b.mass * b.particles()) / g;
         let filling = (a.filling * a.particles() + b.filling * b.particles()) / g;
-        assert!(mass.is_finite(), "merge {a:?} {b:?}");
         let props = self.model.props(Body { mass, filling });
-        self.families[t] = Family { mass, filling, groups: g / 2f64.powi(b.zoom), zoom: b.zoom, props };
+        self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
         self.tally.merges += 1;
     }
 
@@ -820,11 +825,14 @@ impl<M: Model> Engine<M> {
         for f in &self.families {
             *decades.entry(f.mass.log10().floor() as i64).or_default() += f.particles();
         }
-        for f in &mut self.families {
+        for (f, dirty) in self.families.iter_mut().zip(self.dirty.iter_mut()) {
             let n10 = decades.get(&(f.mass.log10().floor() as i64)).copied().unwrap_or(0.0);
             let z = zoom_for(n10, w_star);
-            f.groups = f.particles() / 2f64.powi(z);
-            f.zoom = z;
+            *dirty = z != f.zoom;
+            if *dirty {
+                f.groups = f.particles() / exp2i(z);
+                f.zoom = z;
+            }
         }
         while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
             if self.families[k].groups.abs() < 1e-6 {
@@ -845,10 +853,23 @@ impl<M: Model> Engine<M> {
                 }
             }
         }
-        self.rebuild_rates();
+        // Rates change only for families whose zoom changed (merged ones were
+        // refreshed as they merged); now and then all rates are rebuilt so
+        // that the row sums carry no accumulated rounding.
+        self.tally.rezooms += 1;
+        let changed = self.dirty.iter().filter(|d| **d).count();
+        if self.tally.rezooms % 32 == 0 || 4 * changed > self.families.len() {
+            self.rebuild_rates();
+        } else {
+            for k in 0..self.families.len() {
+                if self.dirty[k] {
+                    self.refresh_rates(k);
+                }
+            }
+        }
+        self.dirty.iter_mut().for_each(|d| *d = false);
         self.zoomed_at = self.moments();
         self.since_zoom = 0;
-        self.tally.rezooms += 1;
     }
 
     /// Mass per unit volume per ln m in logarithmic bins, `per_decade` bins
@@ -872,6 +893,17 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
 /// Families with fewer than one group merge only into a family within this
 /// mass factor; otherwise they are magnified.
 const MERGE_RATIO: f64 = f64::INFINITY;
+
+/// 2^k for an integer k, exactly (0 below the smallest normal, ∞ above the largest).
+fn exp2i(k: i32) -> f64 {
+    if k < -1022 {
+        0.0
+    } else if k > 1023 {
+        f64::INFINITY
+    } else {
+        f64::from_bits(((1023 + k) as u64) << 52)
+    }
+}
 
 /// z* = [log₂(N₁₀/w*)] ≥ 0 (4.26).
 fn zoom_for(n10: f64, w_star: f64) -> i32 {

@@ -83,6 +83,10 @@ pub enum Command {
         /// Output folder.
         #[arg(long, value_name = "DIR", default_value = "reproduce")]
         out: PathBuf,
+        /// Monte Carlo figures with fewer groups per decade, one run each and
+        /// capped events: minutes instead of an hour, looser agreement.
+        #[arg(long)]
+        quick: bool,
     },
 }
 
@@ -175,7 +179,7 @@ pub fn run(command: Command) -> Result<()> {
         Command::Fit { data, materials, geometry, radius, radius2, grid, set, out, json } => {
             fit_command(&data, &materials, geometry, radius, radius2, grid, &set, out.as_deref(), json)
         }
-        Command::Reproduce { out } => reproduce(&out),
+        Command::Reproduce { out, quick } => reproduce(&out, quick),
     }
 }
 
@@ -254,13 +258,15 @@ fn fit_command(
     Ok(())
 }
 
-fn reproduce(dir: &Path) -> Result<()> {
+fn reproduce(dir: &Path, quick: bool) -> Result<()> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let mut checks = crate::reproduce::chapter2()?;
     checks.extend(crate::reproduce::chapter3());
     checks.extend(crate::reproduce::chapter4());
     checks.extend(crate::reproduce::chapter5()?);
     checks.extend(crate::reproduce::chapter6()?);
+    let monte_carlo = crate::reproduce::monte_carlo(quick)?;
+    checks.extend(monte_carlo.checks);
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
     write_atomically(&dir.join("reproduce.csv"), &crate::reproduce::csv(&checks)?)?;
@@ -306,6 +312,9 @@ fn reproduce(dir: &Path) -> Result<()> {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;
         write_outputs(&out, &dir.join(name))?;
+    }
+    for (name, out) in &monte_carlo.figures {
+        write_outputs(out, &dir.join(name))?;
     }
     print!("{md}");
     let failures = checks.iter().filter(|c| !c.pass() && !c.known).count();

@@ -239,7 +239,7 @@ pub const SOURCES: [&str; 5] = ["Brownian", "turbulence", "settling", "radial dr
 
 /// Relative dust scale height h_d/h_g (4.6).
 pub fn dust_scale_height(alpha: f64, st: f64) -> f64 {
-    (1.0 + st / alpha * (1.0 + 2.0 * st) / (1.0 + st)).powf(-0.5)
+    1.0 / (1.0 + st / alpha * (1.0 + 2.0 * st) / (1.0 + st)).sqrt()
 }
 
 /// Radial drift velocity magnitude 2St ηv_K/(1 + St²) (5.8), m s⁻¹.
@@ -280,9 +280,9 @@ pub fn relative_velocity(
     let turbulence = match model {
         TurbulenceModel::Thesis => {
             let re = env.reynolds;
-            let st_eta = re.powf(-0.5);
+            let st_eta = 1.0 / re.sqrt();
             if s1 < st_eta {
-                vg * re.powf(0.25) * diff
+                vg * re.sqrt().sqrt() * diff
             } else if s1 < 1.0 {
                 vg * 1.55 * s1.sqrt()
             } else {
@@ -303,9 +303,9 @@ pub fn relative_velocity(
 /// y_a = 1.6 (notes §3).
 fn ormel_cuzzi(vg: f64, re: f64, s1: f64, s2: f64) -> f64 {
     let ya = 1.6;
-    let st_eta = re.powf(-0.5);
+    let st_eta = 1.0 / re.sqrt();
     let v2 = if s1 < st_eta / ya {
-        let q = re.powf(-0.5);
+        let q = st_eta;
         vg * vg * (s1 - s2) / (s1 + s2).max(1e-300) * (s1 * s1 / (s1 + q) - s2 * s2 / (s2 + q))
     } else if s1 < 1.0 {
         let eps = s2 / s1;

@@ -109,7 +109,7 @@ impl Column {
         let e_roll = mono.rolling_energy();
         let n = m / m0;
         let phi_c = if e > 3.0 * B_COMPACT * e_roll {
-            (e / (3.0 * B_COMPACT * n * e_roll)).powf(0.3) * n.powf(-0.2)
+            (0.3 * (e / (3.0 * B_COMPACT * n * e_roll)).ln() - 0.2 * n.ln()).exp()
         } else {
             0.0
         };

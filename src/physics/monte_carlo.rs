@@ -731,8 +731,11 @@ impl<M: Model> Engine<M> {
             }
             match self.merge_partner(k) {
                 Some(t) => {
-                    self.merge_into(k, t);
-                    self.refresh_pairs(t);
+                    if self.merge_into(k, t) {
+                        self.refresh_pairs(t);
+                    } else {
+                        self.refresh_rates(t);
+                    }
                     self.remove_family(k);
                 }
                 None => {
@@ -807,14 +810,19 @@ impl<M: Model> Engine<M> {
     }
 
     /// (4.27): adds family k to family t, conserving particles and mass.
-    fn merge_into(&mut self, k: usize, t: usize) {
+    /// Returns whether t's particles changed enough (10⁻³ in mass or φ) for
+    /// its cached pair data to be recomputed; otherwise only its group count
+    /// changes and the cached rates per pair are kept.
+    fn merge_into(&mut self, k: usize, t: usize) -> bool {
         let (a, b) = (self.families[k], self.families[t]);
         let g = a.particles() + b.particles();
         let mass = (a.mass * a.particles() + b.mass * b.particles()) / g;
         let filling = (a.filling * a.particles() + b.filling * b.particles()) / g;
-        let props = self.model.props(Body { mass, filling });
-        self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
         self.tally.merges += 1;
+        let moved = (mass / b.mass - 1.0).abs() > MERGE_REFRESH || (filling / b.filling - 1.0).abs() > MERGE_REFRESH;
+        let props = if moved { self.model.props(Body { mass, filling }) } else { b.props };
+        self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
+        moved
     }
 
     /// Sets every family's zoom factor to z*(m) (4.26) and merges families
@@ -842,8 +850,11 @@ impl<M: Model> Engine<M> {
             }
             match self.merge_partner(k) {
                 Some(t) => {
-                    self.merge_into(k, t);
-                    self.refresh_pairs(t);
+                    if self.merge_into(k, t) {
+                        self.refresh_pairs(t);
+                    } else {
+                        self.refresh_rates(t);
+                    }
                     self.remove_family(k);
                 }
                 None => {
@@ -889,6 +900,10 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
     let width = std::f64::consts::LN_10 / n;
     bins.into_iter().map(|(b, m)| (10f64.powf((b as f64 + 0.5) / n), m / volume / width)).collect()
 }
+
+/// A merge that moves a family's mass or filling factor by less than this
+/// keeps its cached properties and pair data.
+const MERGE_REFRESH: f64 = 1e-3;
 
 /// Families with fewer than one group merge only into a family within this
 /// mass factor; otherwise they are magnified.

@@ -9,6 +9,7 @@
 pub mod adhesion;
 pub mod batch_lifelines;
 pub mod batch_params;
+pub mod coagulation_params;
 pub mod collision_params;
 pub mod collision_speeds;
 pub mod contact_torque;
@@ -19,11 +20,15 @@ pub mod debris_disks;
 pub mod debris_params;
 pub mod disk_map;
 pub mod disk_params;
+pub mod erosion_balance;
 pub mod experiments;
+pub mod families;
 pub mod fit;
 pub mod formation_zone;
 pub mod growth_params;
 pub mod growth_tracks;
+pub mod kernel_tests;
+pub mod mass_distribution;
 pub mod hysteresis;
 pub mod material_parameters;
 pub mod midplane_loading;
@@ -63,7 +68,7 @@ pub struct SceneInfo {
 }
 
 /// All scenes, in the order of the scene list.
-pub const SCENES: [SceneInfo; 25] = [
+pub const SCENES: [SceneInfo; 29] = [
     hysteresis::INFO,
     restitution::INFO,
     adhesion::INFO,
@@ -83,6 +88,10 @@ pub const SCENES: [SceneInfo; 25] = [
     porosity_track::INFO,
     timescales::INFO,
     growth_tracks::INFO,
+    mass_distribution::INFO,
+    families::INFO,
+    erosion_balance::INFO,
+    kernel_tests::INFO,
     surface_density::INFO,
     batch_lifelines::INFO,
     disk_map::INFO,
@@ -132,6 +141,14 @@ pub enum SceneParams {
     Timescales(timescales::Params),
     /// Growth and drift tracks.
     GrowthTracks(growth_tracks::Params),
+    /// Monte Carlo mass distribution.
+    MassDistribution(mass_distribution::Params),
+    /// Monte Carlo families.
+    Families(families::Params),
+    /// Erosion balance of the largest bodies.
+    ErosionBalance(erosion_balance::Params),
+    /// The Monte Carlo engine on analytic kernels.
+    KernelTests(kernel_tests::Params),
     /// Surface densities of the batch model.
     SurfaceDensity(surface_density::Params),
     /// Batch lifelines.
@@ -169,6 +186,10 @@ impl SceneParams {
             "porosity-track" => Some(SceneParams::PorosityTrack(Default::default())),
             "timescales" => Some(SceneParams::Timescales(Default::default())),
             "growth-tracks" => Some(SceneParams::GrowthTracks(Default::default())),
+            "mass-distribution" => Some(SceneParams::MassDistribution(Default::default())),
+            "families" => Some(SceneParams::Families(Default::default())),
+            "erosion-balance" => Some(SceneParams::ErosionBalance(Default::default())),
+            "kernel-tests" => Some(SceneParams::KernelTests(Default::default())),
             "surface-density" => Some(SceneParams::SurfaceDensity(Default::default())),
             "batch-lifelines" => Some(SceneParams::BatchLifelines(Default::default())),
             "disk-map" => Some(SceneParams::DiskMap(Default::default())),
@@ -201,6 +222,10 @@ impl SceneParams {
             SceneParams::PorosityTrack(_) => &porosity_track::INFO,
             SceneParams::Timescales(_) => &timescales::INFO,
             SceneParams::GrowthTracks(_) => &growth_tracks::INFO,
+            SceneParams::MassDistribution(_) => &mass_distribution::INFO,
+            SceneParams::Families(_) => &families::INFO,
+            SceneParams::ErosionBalance(_) => &erosion_balance::INFO,
+            SceneParams::KernelTests(_) => &kernel_tests::INFO,
             SceneParams::SurfaceDensity(_) => &surface_density::INFO,
             SceneParams::BatchLifelines(_) => &batch_lifelines::INFO,
             SceneParams::DiskMap(_) => &disk_map::INFO,
@@ -232,6 +257,10 @@ impl SceneParams {
             SceneParams::PorosityTrack(p) => p.controls(),
             SceneParams::Timescales(p) => p.controls(),
             SceneParams::GrowthTracks(p) => p.controls(),
+            SceneParams::MassDistribution(p) => p.controls(),
+            SceneParams::Families(p) => p.controls(),
+            SceneParams::ErosionBalance(p) => p.controls(),
+            SceneParams::KernelTests(p) => p.controls(),
             SceneParams::SurfaceDensity(p) => p.controls(),
             SceneParams::BatchLifelines(p) => p.controls(),
             SceneParams::DiskMap(p) => p.controls(),
@@ -311,6 +340,10 @@ impl SceneParams {
             | SceneParams::PorosityTrack(_)
             | SceneParams::Timescales(_)
             | SceneParams::GrowthTracks(_)
+            | SceneParams::MassDistribution(_)
+            | SceneParams::Families(_)
+            | SceneParams::ErosionBalance(_)
+            | SceneParams::KernelTests(_)
             | SceneParams::SurfaceDensity(_)
             | SceneParams::BatchLifelines(_)
             | SceneParams::DiskMap(_)
@@ -438,6 +471,7 @@ impl Progress {
 pub struct Caches {
     restitution: restitution::Cache,
     batches: batch_params::RunCache,
+    coagulation: coagulation_params::RunCache,
 }
 
 /// Computes a scene. Pure: the same parameters give the same output.
@@ -472,6 +506,10 @@ pub fn compute_cached(
         SceneParams::PorosityTrack(p) => porosity_track::compute(p),
         SceneParams::Timescales(p) => timescales::compute(p),
         SceneParams::GrowthTracks(p) => growth_tracks::compute(p, progress),
+        SceneParams::MassDistribution(p) => mass_distribution::compute(p, progress, &mut caches.coagulation),
+        SceneParams::Families(p) => families::compute(p, progress, &mut caches.coagulation),
+        SceneParams::ErosionBalance(p) => erosion_balance::compute(p, progress, &mut caches.coagulation),
+        SceneParams::KernelTests(p) => kernel_tests::compute(p, progress),
         SceneParams::SurfaceDensity(p) => surface_density::compute(p, progress, &mut caches.batches),
         SceneParams::BatchLifelines(p) => batch_lifelines::compute(p, progress, &mut caches.batches),
         SceneParams::DiskMap(p) => disk_map::compute(p, progress, &mut caches.batches),

@@ -114,7 +114,7 @@ impl Preset {
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 41] = [
+pub const SHIPPED: [(&str, &str); 50] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -156,6 +156,15 @@ pub const SHIPPED: [(&str, &str); 41] = [
     ("batch-fig-5-13.ron", include_str!("../presets/batch-fig-5-13.ron")),
     ("batch-fig-5-14.ron", include_str!("../presets/batch-fig-5-14.ron")),
     ("batch-fig-5-15.ron", include_str!("../presets/batch-fig-5-15.ron")),
+    ("mc-fig-4-4.ron", include_str!("../presets/mc-fig-4-4.ron")),
+    ("mc-fig-4-6.ron", include_str!("../presets/mc-fig-4-6.ron")),
+    ("mc-fig-4-9.ron", include_str!("../presets/mc-fig-4-9.ron")),
+    ("mc-fig-4-10-4-11.ron", include_str!("../presets/mc-fig-4-10-4-11.ron")),
+    ("mc-fig-4-12.ron", include_str!("../presets/mc-fig-4-12.ron")),
+    ("mc-fig-5-2-porosity.ron", include_str!("../presets/mc-fig-5-2-porosity.ron")),
+    ("mc-kernel-constant.ron", include_str!("../presets/mc-kernel-constant.ron")),
+    ("mc-kernel-linear.ron", include_str!("../presets/mc-kernel-linear.ron")),
+    ("mc-kernel-product.ron", include_str!("../presets/mc-kernel-product.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

@@ -419,3 +419,157 @@ pub fn csv(checks: &[Check]) -> Result<Vec<u8>, csv::Error> {
     }
     w.into_inner().map_err(|e| csv::Error::from(e.into_error()))
 }
+
+/// The Monte Carlo figures of ch. 4 with their checks.
+#[derive(Debug)]
+pub struct MonteCarlo {
+    /// Comparisons with the published outcomes.
+    pub checks: Vec<Check>,
+    /// Figures, by preset name.
+    pub figures: Vec<(String, crate::scene::SceneOutput)>,
+}
+
+/// The column parameters of a Monte Carlo scene.
+fn column_of(scene: &mut crate::scene::SceneParams) -> Option<&mut crate::scene::coagulation_params::ColumnParams> {
+    use crate::scene::SceneParams;
+    match scene {
+        SceneParams::MassDistribution(p) => Some(&mut p.run),
+        SceneParams::Families(p) => Some(&mut p.run),
+        SceneParams::ErosionBalance(p) => Some(&mut p.run),
+        _ => None,
+    }
+}
+
+/// Runs the Monte Carlo presets (Figs. 4.4–4.12, 5.2) and checks the
+/// published outcomes at 5 AU. `quick`: w* = 20 and one run per set, so that
+/// CI can afford it; the checks keep their tolerances.
+pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> {
+    use crate::physics::PhysicsError;
+    use crate::scene::{Caches, Progress, SceneParams, compute_cached};
+    let progress = Progress::default();
+    let mut caches = Caches::default();
+    let mut figures = Vec::new();
+    let mut params = std::collections::BTreeMap::new();
+    for name in [
+        "mc-fig-4-4",
+        "mc-fig-4-6",
+        "mc-fig-4-9",
+        "mc-fig-4-10-4-11",
+        "mc-fig-4-12",
+        "mc-fig-5-2-porosity",
+        "mc-kernel-constant",
+        "mc-kernel-linear",
+        "mc-kernel-product",
+    ] {
+        let mut scene = crate::preset::resolve(name).map_err(|e| PhysicsError::Invalid(e.to_string()))?.scene;
+        if quick {
+            if let Some(run) = column_of(&mut scene) {
+                run.groups_per_decade = 20.0;
+                run.runs = 1;
+            }
+            if let SceneParams::KernelTests(k) = &mut scene {
+                k.runs = 4;
+            }
+        }
+        let out = compute_cached(&scene, &progress, &mut caches)?;
+        params.insert(name, scene);
+        figures.push((name.to_string(), out));
+    }
+    let column = |name: &str| {
+        let mut scene = params.get(name).cloned().ok_or_else(|| PhysicsError::Invalid(format!("no preset {name}")))?;
+        column_of(&mut scene).cloned().ok_or_else(|| PhysicsError::Invalid(format!("{name} is no column")))
+    };
+    let sticking = caches.coagulation_runs(&column("mc-fig-4-4")?, &progress)?;
+    let porosity = caches.coagulation_runs(&column("mc-fig-5-2-porosity")?, &progress)?;
+    let base = column("mc-fig-4-10-4-11")?;
+    let SceneParams::ErosionBalance(balance) = &params["mc-fig-4-10-4-11"] else {
+        return Err(PhysicsError::Invalid("mc-fig-4-10-4-11 is no erosion balance".into()).into());
+    };
+    let thresholds = [balance.v_eros_1, balance.v_eros_2, balance.v_eros_3];
+    let mut eroded = Vec::new();
+    for v in thresholds {
+        let p = crate::scene::coagulation_params::ColumnParams { v_eros: v, ..base.clone() };
+        eroded.push(caches.coagulation_runs(&p, &progress)?);
+    }
+    let first = |runs: &std::sync::Arc<Vec<crate::physics::coagulation::Run>>| runs.first().cloned();
+    let mut checks = Vec::new();
+    if let Some(r) = first(&sticking) {
+        let at_one = r.history.iter().find(|s| s.stokes_p >= 1.0).map_or(f64::NAN, |s| (s.m_p * 1e3).log10());
+        checks.push(Check::new("Fig. 4.4", "log10 m_p [g] where Omega t_s(m_p) reaches 1 (MC)", 10.0, at_one, 1.0, ""));
+        let worst = crate::scene::mass_distribution::growth_times(&r.history)
+            .iter()
+            .map(|g| g.1 / g.2)
+            .fold(0.0, f64::max);
+        checks.push(Check::new(
+            "Fig. 4.5",
+            "largest t_grow/t_drift of the peak mass (MC; below 1/30)",
+            0.0,
+            worst,
+            1.0 / 30.0,
+            "",
+        ));
+    }
+    if let Some(r) = first(&porosity) {
+        let p = params.get("mc-fig-5-2-porosity").cloned();
+        let track = match p {
+            Some(SceneParams::Families(f)) => crate::scene::families::semi_analytical(&f.run),
+            _ => Vec::new(),
+        };
+        let phi = |m: f64| {
+            let k = track.partition_point(|q| q[0] < m).clamp(1, track.len().max(2) - 1);
+            let (a, b) = (track.get(k - 1).copied().unwrap_or([1.0, 1.0]), track.get(k).copied().unwrap_or([2.0, 1.0]));
+            let x = (m / a[0]).ln() / (b[0] / a[0]).ln();
+            (a[1].ln() + x * (b[1] / a[1]).ln()).exp()
+        };
+        let worst = r
+            .history
+            .iter()
+            .filter(|s| s.m_p > 1e-15 && s.m_p < track.last().map_or(0.0, |q| q[0]))
+            .map(|s| (s.phi_p / phi(s.m_p)).log10().abs())
+            .fold(0.0, f64::max);
+        checks.push(Check::new(
+            "Fig. 5.2",
+            "largest |log10 phi_p(MC)/phi(track)| (within a factor 3)",
+            0.0,
+            worst,
+            3f64.log10(),
+            "",
+        ));
+    }
+    let steady: Vec<(f64, f64, f64)> = eroded
+        .iter()
+        .filter_map(first)
+        .map(|r| {
+            let (st, m) = crate::scene::erosion_balance::steady_state(&r);
+            (st, m, r.history.iter().map(|s| s.zeta).fold(1.0, f64::min))
+        })
+        .collect();
+    if let [e20, e40, e60] = steady[..] {
+        checks.push(Check::new(
+            "Fig. 4.11",
+            "log10 steady Omega t_s(m_max), v_eros = 20 m/s (0.6)",
+            0.6f64.log10(),
+            e20.0.log10(),
+            0.5,
+            "",
+        ));
+        checks.push(Check::new("Fig. 4.11", "lowest zeta, v_eros = 20 m/s (negative)", -0.5, e20.2, 0.5, ""));
+        checks.push(Check::new(
+            "Sect. 4.4.2",
+            "log10 m_max(40 m/s)/m_max(20 m/s) in the steady state (~10x)",
+            1.0,
+            (e40.1 / e20.1).log10(),
+            0.7,
+            "",
+        ));
+        checks.push(Check::new(
+            "Fig. 4.11",
+            "lowest zeta, v_eros = 60 m/s (never below 0)",
+            0.5,
+            e60.2,
+            0.5,
+            "",
+        ));
+    }
+    Ok(MonteCarlo { checks, figures })
+}

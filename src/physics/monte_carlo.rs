@@ -804,7 +804,7 @@ impl<M: Model> Engine<M> {
         self.families
             .iter()
             .enumerate()
-            .filter(|(i, g)| *i != k && g.groups >= 1.0)
+            .filter(|(i, g)| *i != k && g.groups > 0.0)
             .max_by(|a, b| score(a.1).total_cmp(&score(b.1)))
             .map(|(i, _)| i)
     }

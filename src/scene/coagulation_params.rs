@@ -278,11 +278,23 @@ impl RunCache {
             progress.set(1.0);
             return Ok(Arc::clone(runs));
         }
-        let runs = Arc::new(p.run(progress)?);
-        self.last.push((p.clone(), Arc::clone(&runs)));
+        let runs = p.run(progress)?;
+        Ok(self.insert(p.clone(), runs))
+    }
+
+    /// Whether runs for `p` are cached.
+    pub fn contains(&self, p: &ColumnParams) -> bool {
+        self.last.iter().any(|(key, _)| key == p)
+    }
+
+    /// Stores runs computed elsewhere.
+    pub fn insert(&mut self, p: ColumnParams, runs: Vec<Run>) -> Arc<Vec<Run>> {
+        let runs = Arc::new(runs);
+        self.last.retain(|(key, _)| *key != p);
+        self.last.push((p, Arc::clone(&runs)));
         if self.last.len() > 4 {
             self.last.remove(0);
         }
-        Ok(runs)
+        runs
     }
 }

@@ -9,6 +9,7 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
 use serde::{Deserialize, Serialize};
+use rayon::prelude::*;
 use std::sync::Arc;
 
 /// Scene description.
@@ -81,30 +82,33 @@ pub fn steady_state(run: &Run) -> (f64, f64) {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    // The three thresholds run side by side; cached sets are reused.
+    let params: Vec<ColumnParams> =
+        p.thresholds().iter().map(|&v| ColumnParams { v_eros: v, ..p.run.clone() }).collect();
+    let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
+    let fractions: Vec<std::sync::atomic::AtomicU32> =
+        missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
+    let fresh: Vec<Vec<Run>> = missing
+        .par_iter()
+        .enumerate()
+        .map(|(k, q)| {
+            let cfg = q.config()?;
+            let runs = cfg.run_seeds(q.runs.max(1), &|f| {
+                fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+                let sum: f64 = fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                progress.set(sum / fractions.len() as f64);
+                !progress.cancelled()
+            })?;
+            progress.check()?;
+            Ok(runs)
+        })
+        .collect::<Result<_, SceneError>>()?;
+    for (q, runs) in missing.into_iter().zip(fresh) {
+        cache.insert(q.clone(), runs);
+    }
     let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();
-    for (k, v) in p.thresholds().into_iter().enumerate() {
-        let run = ColumnParams { v_eros: v, ..p.run.clone() };
-        let part = Progress::default();
-        let watcher = progress.clone();
-        // Progress of the three sets adds up; cancellation passes through.
-        let done = std::sync::atomic::AtomicBool::new(false);
-        let runs = std::thread::scope(|s| {
-            let h = s.spawn(|| {
-                while !done.load(std::sync::atomic::Ordering::Relaxed) {
-                    if watcher.cancelled() {
-                        part.cancel();
-                    }
-                    watcher.set((k as f64 + part.fraction()) / 3.0);
-                    std::thread::sleep(std::time::Duration::from_millis(50));
-                }
-            });
-            let r = cache.get(&run, &part);
-            done.store(true, std::sync::atomic::Ordering::Relaxed);
-            let _ = h.join();
-            r
-        })?;
-        progress.check()?;
-        sets.push((v, runs));
+    for (v, q) in p.thresholds().into_iter().zip(&params) {
+        sets.push((v, cache.get(q, progress)?));
     }
     let mut zeta = Figure::new(
         "zeta",

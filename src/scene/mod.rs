@@ -474,6 +474,17 @@ pub struct Caches {
     coagulation: coagulation_params::RunCache,
 }
 
+impl Caches {
+    /// The Monte Carlo runs for `p`, from the cache the Monte Carlo scenes share.
+    pub fn coagulation_runs(
+        &mut self,
+        p: &coagulation_params::ColumnParams,
+        progress: &Progress,
+    ) -> Result<Arc<Vec<crate::physics::coagulation::Run>>, SceneError> {
+        self.coagulation.get(p, progress)
+    }
+}
+
 /// Computes a scene. Pure: the same parameters give the same output.
 pub fn compute(params: &SceneParams, progress: &Progress) -> Result<SceneOutput, SceneError> {
     compute_cached(params, progress, &mut Caches::default())

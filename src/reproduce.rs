@@ -494,7 +494,15 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
     let first = |runs: &std::sync::Arc<Vec<crate::physics::coagulation::Run>>| runs.first().cloned();
     let mut checks = Vec::new();
     if let Some(r) = first(&sticking) {
-        let at_one = r.history.iter().find(|s| s.stokes_p >= 1.0).map_or(f64::NAN, |s| (s.m_p * 1e3).log10());
+        // Interpolated in log between the samples around Ωt_s(m_p) = 1.
+        let at_one = r
+            .history
+            .windows(2)
+            .find(|w| w[0].stokes_p < 1.0 && w[1].stokes_p >= 1.0)
+            .map_or(f64::NAN, |w| {
+                let x = -w[0].stokes_p.ln() / (w[1].stokes_p / w[0].stokes_p).ln();
+                ((w[0].m_p.ln() + x * (w[1].m_p / w[0].m_p).ln()).exp() * 1e3).log10()
+            });
         checks.push(Check::new("Fig. 4.4", "log10 m_p [g] where Omega t_s(m_p) reaches 1 (MC)", 10.0, at_one, 1.0, ""));
         let worst = crate::scene::mass_distribution::growth_times(&r.history)
             .iter()

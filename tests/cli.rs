@@ -64,7 +64,7 @@ fn presets_and_params_list() {
 fn reproduce_writes_the_table() {
     let dir = tempfile::tempdir().expect("tempdir");
     let d = dir.path().to_str().expect("utf8");
-    let out = grainscope(&["reproduce", "--out", d]);
+    let out = grainscope(&["reproduce", "--quick", "--out", d]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
     let md = std::fs::read_to_string(dir.path().join("reproduce.md")).expect("md");
     assert!(md.contains("| Fig. 2.2 |"));

@@ -36,7 +36,12 @@ fn cancelled_computation_reports_cancellation() {
 fn every_scene_computes_with_defaults_and_documents_its_parameters() {
     for info in SCENES {
         let mut p = SceneParams::default_for(info.id).expect("scene");
-        let out = scene::compute(&p, &Progress::default()).expect(info.id);
+        let mut quick = p.clone();
+        // The Monte Carlo scenes run for minutes by default: one short run here.
+        if quick.set("max_events_millions", "0.02").is_ok() {
+            quick.set("runs", "1").expect("runs");
+        }
+        let out = scene::compute(&quick, &Progress::default()).expect(info.id);
         assert!(!out.figures.is_empty() && !out.scalars.is_empty(), "{}", info.id);
         for fig in &out.figures {
             assert!(fig.series.iter().any(|s| !s.points.is_empty()), "{}: {}", info.id, fig.id);

@@ -113,19 +113,26 @@ impl Column {
         } else {
             0.0
         };
-        let mut phi = phi_hs.max(phi_c).min(1.0);
-        if external {
-            // Gas ram pressure: solve only if it exceeds the strength P_c = E_roll φ³/a₀³ (4.15).
-            let agg = Aggregate { mass: m, filling: phi };
-            let ts = stopping_time(&self.env, mono, &agg, self.newton).time;
-            let p_gas = gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m
-                / (PI * agg.radius(mono).powi(2) * ts);
-            if e_roll / mono.radius.powi(3) * phi.powi(3) < p_gas {
-                phi = phi.max(gas_compaction_filling(&self.env, mono, m, self.newton, phi));
-            }
-            phi = phi.max(gravity_compaction_filling(mono, m)).min(1.0);
+        let phi = phi_hs.max(phi_c).min(1.0);
+        if external { self.external_compaction(Body { mass: m, filling: phi }) } else { phi }
+    }
+
+    /// The filling factor after compression by gas ram pressure and
+    /// self-gravity (4.15)–(4.16), Sect. 4.3.5: at least the value at which
+    /// the compressive strength withstands both.
+    pub fn external_compaction(&self, body: Body) -> f64 {
+        let mono = &self.monomer;
+        let (m, mut phi) = (body.mass, body.filling);
+        let e_roll = mono.rolling_energy();
+        // Gas ram pressure: solve only if it exceeds the strength P_c = E_roll φ³/a₀³ (4.15).
+        let agg = Aggregate { mass: m, filling: phi };
+        let ts = stopping_time(&self.env, mono, &agg, self.newton).time;
+        let p_gas =
+            gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m / (PI * agg.radius(mono).powi(2) * ts);
+        if e_roll / mono.radius.powi(3) * phi.powi(3) < p_gas {
+            phi = phi.max(gas_compaction_filling(&self.env, mono, m, self.newton, phi));
         }
-        phi
+        phi.max(gravity_compaction_filling(mono, m)).min(1.0)
     }
 
     /// A fragment of mass `m` (at least a monomer) chipped off a target with
@@ -162,15 +169,14 @@ impl Model for Column {
         sigma * h_ij / ((2.0 * PI).sqrt() * hi * hj) * self.velocity(a, b)
     }
 
+    /// Sticking gives the filling factor after hit-and-stick and collisional
+    /// compaction; gas and self-gravity act in [`Model::compact`].
     fn collide(&self, target: &Family<Props>, projectile: &Family<Props>) -> Collision {
-        self.outcome_of(target, projectile, true)
+        self.outcome_of(target, projectile, false)
     }
 
-    /// Without gas and self-gravity compaction: these set the product's
-    /// filling factor as a whole rather than per collision, so they do not
-    /// limit sequences.
-    fn estimate(&self, target: &Family<Props>, projectile: &Family<Props>) -> Collision {
-        self.outcome_of(target, projectile, false)
+    fn compact(&self, body: Body) -> f64 {
+        if self.compaction == Compaction::Full { self.external_compaction(body) } else { body.filling }
     }
 }
 
@@ -381,15 +387,20 @@ impl RunConfig {
         let mut engine = Engine::new(column, Body { mass: mono.mass(), filling: 1.0 }, particles, area, settings)
             .map_err(|e| PhysicsError::Invalid(e.to_string()))?;
         let t_end = *self.snapshots.last().unwrap_or(&0.0);
-        // History: log-spaced from the first collision time scale to the end.
+        // History: log-spaced from the first collision time scale to the end,
+        // 100 linear steps (for late steady states), and whenever m_p has
+        // grown by the same factor as a log step (for fast late growth).
         let t0 = 1.0 / engine.total_rate().max(1e-300) * 10.0;
         let per = self.history_per_decade.max(1) as f64;
         let n_hist = ((t_end / t0).log10().max(0.0) * per).ceil() as usize + 1;
         let mut marks: Vec<(f64, bool)> = (0..n_hist)
             .map(|k| (t0 * 10f64.powf(k as f64 / per), false))
+            .chain((1..100).map(|k| (t_end * k as f64 / 100.0, false)))
             .filter(|(t, _)| *t < t_end)
             .chain(self.snapshots.iter().map(|&t| (t, true)))
             .collect();
+        let growth_step = 10f64.powf(1.0 / per);
+        let mut sampled_mass = engine.moments().1;
         marks.sort_by(|a, b| a.0.total_cmp(&b.0));
         let mut snapshots = Vec::new();
         let mut history = Vec::new();
@@ -401,11 +412,17 @@ impl RunConfig {
                     ended = "event limit";
                     break 'outer;
                 }
-                if !engine.run_until(t, 2000.min(self.max_events - engine.events())) {
+                if !engine.run_until(t, 250.min(self.max_events - engine.events())) {
                     ended = "no more collisions";
                     break 'outer;
                 }
-                let done = ((engine.time().max(t0) / t0).ln() / ln_span).clamp(0.0, 1.0);
+                let m_p = engine.moments().1;
+                if m_p > sampled_mass * growth_step || m_p < sampled_mass / growth_step {
+                    history.push(sample(&engine).0);
+                    sampled_mass = m_p;
+                }
+                let in_log = ((engine.time().max(t0) / t0).ln() / ln_span).clamp(0.0, 1.0);
+                let done = 0.5 * in_log + 0.5 * (engine.time() / t_end).min(1.0);
                 if !tick(done) {
                     ended = "cancelled";
                     break 'outer;
@@ -421,6 +438,7 @@ impl RunConfig {
                 snapshots.push(snapshot(&engine));
             }
             history.push(sample(&engine).0);
+            sampled_mass = engine.moments().1;
         }
         Ok(Run {
             seed,

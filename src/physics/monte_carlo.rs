@@ -102,10 +102,12 @@ pub trait Model: Sync {
     /// The outcome of one collision; `target` is the more massive particle.
     fn collide(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision;
 
-    /// A cheaper estimate of [`Model::collide`] used only to size sequences
-    /// (N_ε) and projectile distributions; by default the outcome itself.
-    fn estimate(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision {
-        self.collide(target, projectile)
+    /// The filling factor of a newly made particle after any compaction that
+    /// acts on the particle as a whole (not per collision), e.g. by gas
+    /// pressure or self-gravity; applied once to every product of a group
+    /// event, after the sequence. By default none.
+    fn compact(&self, body: Body) -> f64 {
+        body.filling
     }
 }
 
@@ -437,7 +439,7 @@ impl<M: Model> Engine<M> {
             }
             let partners = if j == t { (f.particles() - 1.0).max(0.0) } else { f.particles() };
             let c = self.pairs[t][j].c;
-            let dm = match self.model.estimate(target, f) {
+            let dm = match self.model.collide(target, f) {
                 Collision::Stick { .. } => f.mass,
                 Collision::Erode { loss, .. } => -loss,
                 Collision::Shatter { .. } => -target.mass,
@@ -508,7 +510,7 @@ impl<M: Model> Engine<M> {
         let (a, b) = (&self.families[i], &self.families[j]);
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
         let c = self.model.rate(a, b) / self.volume;
-        let (dm, dphi, c) = match self.model.estimate(t, p) {
+        let (dm, dphi, c) = match self.model.collide(t, p) {
             Collision::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
             Collision::Erode { loss, .. } => (loss, 0.0, c),
             Collision::Shatter { .. } => (t.mass, t.filling, c),
@@ -685,11 +687,13 @@ impl<M: Model> Engine<M> {
             mass: target.mass + per * dm,
             filling: (target.filling + per * (filling - target.filling)).clamp(1e-300, 1.0),
         };
+        let model = &self.model;
+        let compacted = |b: Body| Body { filling: model.compact(b), ..b };
         let fragment_zoom = |count: f64| count.log2().floor().max(0.0) as i32;
         match single {
             Collision::Stick { filling } => {
                 self.tally.stick += 1;
-                made.push((grown(projectile.mass, filling), units, zoom));
+                made.push((compacted(grown(projectile.mass, filling)), units, zoom));
             }
             Collision::Erode { loss, fragment, count } => {
                 self.tally.erode += 1;
@@ -697,18 +701,18 @@ impl<M: Model> Engine<M> {
                 let lost = units * per * count;
                 if remnant.mass > 0.0 {
                     made.push((remnant, units, zoom));
-                    made.push((fragment, lost, fragment_zoom(lost)));
+                    made.push((compacted(fragment), lost, fragment_zoom(lost)));
                 } else {
                     // Cannot happen within the f_m limit; keep the mass anyway.
                     let all = units * (target.mass + per * projectile.mass);
                     let n = all / fragment.mass;
-                    made.push((fragment, n, fragment_zoom(n)));
+                    made.push((compacted(fragment), n, fragment_zoom(n)));
                 }
             }
             Collision::Shatter { fragment, count } => {
                 self.tally.shatter += 1;
                 let n = units * count;
-                made.push((fragment, n, fragment_zoom(n)));
+                made.push((compacted(fragment), n, fragment_zoom(n)));
             }
             Collision::Bounce => {
                 // Left out by the rates; if reached, the particles are returned unchanged.

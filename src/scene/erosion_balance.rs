@@ -68,12 +68,13 @@ impl Params {
     }
 }
 
-/// The steady state of a run: medians of Ωt_s(m_max) and m_max over the last third of its history.
+/// The steady state of a run: medians of Ωt_s(m_max) and m_max over the
+/// last 40 % of its duration.
 pub fn steady_state(run: &Run) -> (f64, f64) {
-    let h = &run.history;
-    let tail = &h[h.len() - h.len() / 3..];
+    let t_end = run.history.last().map_or(0.0, |s| s.t);
+    let tail: Vec<_> = run.history.iter().filter(|s| s.t >= 0.6 * t_end).collect();
     let median = |f: &dyn Fn(&crate::physics::coagulation::Sample) -> f64| {
-        let mut v: Vec<f64> = tail.iter().map(f).collect();
+        let mut v: Vec<f64> = tail.iter().map(|s| f(s)).collect();
         v.sort_by(|a, b| a.total_cmp(b));
         v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
     };

@@ -7,9 +7,9 @@
 use grainscope::physics::coagulation::{Run, RunConfig};
 use grainscope::physics::constants::YEAR;
 use grainscope::physics::monte_carlo::{Analytic, Body, Engine, Settings};
+use grainscope::scene::Progress;
 use grainscope::scene::coagulation_params::ColumnParams;
 use grainscope::scene::kernel_tests::{self, Params};
-use grainscope::scene::Progress;
 use std::time::Instant;
 
 fn column(w: f64, v_eros: f64, compaction: &str, stop_g: f64, t_end_yr: f64) -> RunConfig {
@@ -71,11 +71,7 @@ fn main() {
         let last = r.history.last().copied();
         let fam = last.map_or(0, |s| s.families);
         let dm = r.history.iter().map(|s| s.mass_error.abs()).fold(0.0, f64::max);
-        println!(
-            "  {name:<43} {w:>4} {t:>10.1} {:>8} {:>11.0} {fam:>10} {dm:>9.1e}",
-            r.events,
-            r.events as f64 / t
-        );
+        println!("  {name:<43} {w:>4} {t:>10.1} {:>8} {:>11.0} {fam:>10} {dm:>9.1e}", r.events, r.events as f64 / t);
         if let Some(s) = last {
             println!(
                 "      at {:.0} yr: m_p {:.2e} g, m_max {:.2e} g, Omega t_s(m_max) {:.2}, zeta {:.2} ({})",

@@ -31,17 +31,39 @@ fn main() {
     };
     let start = std::time::Instant::now();
     let last = std::sync::Mutex::new(0.0f64);
-    let run = cfg.run(1, &|f| {
-        let mut l = last.lock().unwrap();
-        if f > *l + 0.02 {
-            *l = f;
-            eprintln!("{:.0}% at {:.1} s", f * 100.0, start.elapsed().as_secs_f64());
-        }
-        true
-    }).unwrap();
+    let run = cfg
+        .run(1, &|f| {
+            let mut l = last.lock().unwrap();
+            if f > *l + 0.02 {
+                *l = f;
+                eprintln!("{:.0}% at {:.1} s", f * 100.0, start.elapsed().as_secs_f64());
+            }
+            true
+        })
+        .unwrap();
     let el = start.elapsed().as_secs_f64();
     for s in &run.history {
-        println!("t {:9.3e} yr ev {:8} fam {:5} m_p {:9.3e} g phi_p {:9.3e} m_max {:9.3e} g St_max {:9.3e} St_p {:9.3e} zeta {:6.3} t_drift {:9.3e} yr dM {:.1e}", s.t / YEAR, s.events, s.families, s.m_p * 1e3, s.phi_p, s.m_max * 1e3, s.stokes_max, s.stokes_p, s.zeta, s.t_drift / YEAR, s.mass_error);
+        println!(
+            "t {:9.3e} yr ev {:8} fam {:5} m_p {:9.3e} g phi_p {:9.3e} m_max {:9.3e} g St_max {:9.3e} St_p {:9.3e} zeta {:6.3} t_drift {:9.3e} yr dM {:.1e}",
+            s.t / YEAR,
+            s.events,
+            s.families,
+            s.m_p * 1e3,
+            s.phi_p,
+            s.m_max * 1e3,
+            s.stokes_max,
+            s.stokes_p,
+            s.zeta,
+            s.t_drift / YEAR,
+            s.mass_error
+        );
     }
-    println!("{} events in {:.2} s ({:.0}/s), ended: {}, {:?}", run.events, el, run.events as f64 / el, run.ended, run.tally);
+    println!(
+        "{} events in {:.2} s ({:.0}/s), ended: {}, {:?}",
+        run.events,
+        el,
+        run.events as f64 / el,
+        run.ended,
+        run.tally
+    );
 }

@@ -495,19 +495,13 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
     let mut checks = Vec::new();
     if let Some(r) = first(&sticking) {
         // Interpolated in log between the samples around Ωt_s(m_p) = 1.
-        let at_one = r
-            .history
-            .windows(2)
-            .find(|w| w[0].stokes_p < 1.0 && w[1].stokes_p >= 1.0)
-            .map_or(f64::NAN, |w| {
-                let x = -w[0].stokes_p.ln() / (w[1].stokes_p / w[0].stokes_p).ln();
-                ((w[0].m_p.ln() + x * (w[1].m_p / w[0].m_p).ln()).exp() * 1e3).log10()
-            });
+        let at_one = r.history.windows(2).find(|w| w[0].stokes_p < 1.0 && w[1].stokes_p >= 1.0).map_or(f64::NAN, |w| {
+            let x = -w[0].stokes_p.ln() / (w[1].stokes_p / w[0].stokes_p).ln();
+            ((w[0].m_p.ln() + x * (w[1].m_p / w[0].m_p).ln()).exp() * 1e3).log10()
+        });
         checks.push(Check::new("Fig. 4.4", "log10 m_p [g] where Omega t_s(m_p) reaches 1 (MC)", 10.0, at_one, 1.0, ""));
-        let worst = crate::scene::mass_distribution::growth_times(&r.history)
-            .iter()
-            .map(|g| g.1 / g.2)
-            .fold(0.0, f64::max);
+        let worst =
+            crate::scene::mass_distribution::growth_times(&r.history).iter().map(|g| g.1 / g.2).fold(0.0, f64::max);
         checks.push(Check::new(
             "Fig. 4.5",
             "largest t_grow/t_drift of the peak mass (MC; below 1/30)",
@@ -570,14 +564,7 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
             0.7,
             "",
         ));
-        checks.push(Check::new(
-            "Fig. 4.11",
-            "lowest zeta, v_eros = 60 m/s (never below 0)",
-            0.5,
-            e60.2,
-            0.5,
-            "",
-        ));
+        checks.push(Check::new("Fig. 4.11", "lowest zeta, v_eros = 60 m/s (never below 0)", 0.5, e60.2, 0.5, ""));
     }
     Ok(MonteCarlo { checks, figures })
 }

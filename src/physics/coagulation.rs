@@ -28,8 +28,8 @@
 use super::PhysicsError;
 use super::aggregate::{
     Aggregate, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, dust_scale_height, gas_compaction_filling,
-    gas_relative_velocity, gravity_compaction_filling, hit_and_stick_volume, outcome, radial_drift,
-    relative_velocity, stopping_time,
+    gas_relative_velocity, gravity_compaction_filling, hit_and_stick_volume, outcome, radial_drift, relative_velocity,
+    stopping_time,
 };
 use super::disk::Local;
 use super::monte_carlo::{Body, Collision, Engine, Family, Model, Settings};
@@ -198,11 +198,7 @@ impl Column {
                     return Collision::Shatter { fragment: self.fragment(mf, t), count: (t.mass + p.mass) / mf };
                 }
                 let mf = fragments_of((1.0 + eps) * p.mass);
-                Collision::Erode {
-                    loss: lost,
-                    fragment: self.fragment(mf, t),
-                    count: (1.0 + eps) * p.mass / mf,
-                }
+                Collision::Erode { loss: lost, fragment: self.fragment(mf, t), count: (1.0 + eps) * p.mass / mf }
             }
             Outcome::Fragment => {
                 let mf = fragments_of(t.mass + p.mass);
@@ -463,10 +459,7 @@ impl RunConfig {
                 progress.iter().map(|p| p.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum::<f64>();
             tick(total / runs as f64)
         };
-        (0..runs)
-            .into_par_iter()
-            .map(|k| self.run(self.settings.seed + k as u64, &|f| report(k, f)))
-            .collect()
+        (0..runs).into_par_iter().map(|k| self.run(self.settings.seed + k as u64, &|f| report(k, f))).collect()
     }
 }
 

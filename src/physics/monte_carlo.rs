@@ -554,8 +554,7 @@ impl<M: Model> Engine<M> {
     /// Adds a family of `particles` particles `body` at zoom `zoom`; returns its index.
     fn add_family(&mut self, body: Body, particles: f64, zoom: i32) -> usize {
         let props = self.model.props(body);
-        let family =
-            Family { mass: body.mass, filling: body.filling, groups: particles / exp2i(zoom), zoom, props };
+        let family = Family { mass: body.mass, filling: body.filling, groups: particles / exp2i(zoom), zoom, props };
         self.families.push(family);
         for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
             p.push(Pair::default());
@@ -760,12 +759,10 @@ impl<M: Model> Engine<M> {
     fn absorb_residue(&mut self, k: usize) {
         let f = self.families[k];
         let residue = f.mass * f.particles();
-        let t = (0..self.families.len())
-            .filter(|&i| i != k)
-            .max_by(|&a, &b| {
-                let (x, y) = (&self.families[a], &self.families[b]);
-                (x.mass * x.particles()).total_cmp(&(y.mass * y.particles()))
-            });
+        let t = (0..self.families.len()).filter(|&i| i != k).max_by(|&a, &b| {
+            let (x, y) = (&self.families[a], &self.families[b]);
+            (x.mass * x.particles()).total_cmp(&(y.mass * y.particles()))
+        });
         if let Some(t) = t {
             let g = &mut self.families[t];
             g.groups += residue / g.mass / exp2i(g.zoom);

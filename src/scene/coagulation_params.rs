@@ -219,12 +219,7 @@ impl ColumnParams {
         let column = Column {
             env: disk.local(self.radius_au * AU),
             monomer: self.disk.monomer(),
-            thresholds: Thresholds {
-                v_frag: self.v_frag,
-                v_eros: self.v_eros,
-                v_bounce: f64::INFINITY,
-                r_crit: 1e-2,
-            },
+            thresholds: Thresholds { v_frag: self.v_frag, v_eros: self.v_eros, v_bounce: f64::INFINITY, r_crit: 1e-2 },
             c1: self.c1,
             compaction: if full { Compaction::Full } else { Compaction::Collisional },
             turbulence: if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis },

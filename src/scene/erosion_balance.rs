@@ -8,8 +8,8 @@ use super::{Progress, Scalar, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
-use serde::{Deserialize, Serialize};
 use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
 /// Scene description.
@@ -58,7 +58,16 @@ impl Params {
             ("v_eros_2", "v_eros (second)", &mut self.v_eros_2),
             ("v_eros_3", "v_eros (third)", &mut self.v_eros_3),
         ] {
-            c.push(Control::number(key, label, value, "m s^-1", (1.0, 1e4), true, v, "erosion threshold of one set of runs"));
+            c.push(Control::number(
+                key,
+                label,
+                value,
+                "m s^-1",
+                (1.0, 1e4),
+                true,
+                v,
+                "erosion threshold of one set of runs",
+            ));
         }
         c
     }
@@ -96,7 +105,8 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             let cfg = q.config()?;
             let runs = cfg.run_seeds(q.runs.max(1), &|f| {
                 fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
-                let sum: f64 = fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                let sum: f64 =
+                    fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
                 progress.set(sum / fractions.len() as f64);
                 !progress.cancelled()
             })?;
@@ -118,7 +128,8 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         Axis::linear("ζ (4.34)", ""),
     );
     let mut scalars = Vec::new();
-    let keys = [("st_1", "m_max_1", "zeta_min_1"), ("st_2", "m_max_2", "zeta_min_2"), ("st_3", "m_max_3", "zeta_min_3")];
+    let keys =
+        [("st_1", "m_max_1", "zeta_min_1"), ("st_2", "m_max_2", "zeta_min_2"), ("st_3", "m_max_3", "zeta_min_3")];
     for (k, (v, runs)) in sets.iter().enumerate() {
         for (j, r) in runs.iter().enumerate() {
             let name = if j == 0 { format!("v_eros = {v} m/s") } else { String::new() };
@@ -145,7 +156,12 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             let norm: f64 = snap.projectiles.iter().map(|q| q.1.abs()).sum();
             if norm > 0.0 {
                 let pts = snap.projectiles.iter().map(|q| [q.0 * 1e3, q.1 / norm]).collect();
-                let label = format!("{:.0} yr, Ωt_s = {:.2}, ζ = {:.2}", snap.t / YEAR, snap.sample.stokes_max, snap.sample.zeta);
+                let label = format!(
+                    "{:.0} yr, Ωt_s = {:.2}, ζ = {:.2}",
+                    snap.t / YEAR,
+                    snap.sample.stokes_max,
+                    snap.sample.zeta
+                );
                 proj = proj.with(Series::new(label, pts, Style::Points, k));
             }
         }

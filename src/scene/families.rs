@@ -44,7 +44,12 @@ impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let mut c = self.run.controls();
-        c.push(Control::toggle("track", "semi-analytical track", &mut self.track, "the Sect. 4.5 model for comparison"));
+        c.push(Control::toggle(
+            "track",
+            "semi-analytical track",
+            &mut self.track,
+            "the Sect. 4.5 model for comparison",
+        ));
         c
     }
 }

@@ -133,7 +133,12 @@ pub fn run(p: &Params, progress: &Progress) -> Result<(Bins, f64), SceneError> {
     let runs: Vec<(std::collections::BTreeMap<i64, f64>, u64)> = (0..p.runs.max(1))
         .into_par_iter()
         .map(|k| {
-            let settings = Settings { groups_per_decade: p.groups_per_decade, f_m: p.f_m, seed: (p.seed + k) as u64, ..Settings::default() };
+            let settings = Settings {
+                groups_per_decade: p.groups_per_decade,
+                f_m: p.f_m,
+                seed: (p.seed + k) as u64,
+                ..Settings::default()
+            };
             let mut e = Engine::new(kernel, Body { mass: 1.0, filling: 1.0 }, p.particles, p.particles, settings)
                 .map_err(|e| PhysicsError::Invalid(e.to_string()))?;
             while e.time() < p.time {
@@ -202,9 +207,12 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     );
     let mean: Vec<[f64; 2]> = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2)]).collect();
     let exact_bins: Vec<[f64; 2]> = bins.iter().filter(|b| b.4 > 0.0).map(|b| [centre(b), per_ln(b, b.4)]).collect();
-    fig = fig
-        .with(Series::new("Monte Carlo", mean, Style::Points, 0))
-        .with(Series::new("exact, same bins", exact_bins, Style::Line, 1));
+    fig = fig.with(Series::new("Monte Carlo", mean, Style::Points, 0)).with(Series::new(
+        "exact, same bins",
+        exact_bins,
+        Style::Line,
+        1,
+    ));
     if p.runs > 1 {
         let hi = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2 + b.3)]).collect();
         let lo = bins.iter().filter(|b| b.2 > b.3).map(|b| [centre(b), per_ln(b, b.2 - b.3)]).collect();
@@ -230,7 +238,12 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let peak = bins.iter().max_by(|a, b| a.2.total_cmp(&b.2)).map_or(1.0, centre);
     let lowest = bins.iter().find(|b| b.2 > 0.0).map_or(1.0, centre);
     let scalars = vec![
-        Scalar { key: "core_error", label: "worst error, bins with 90 % of the mass", value: core_error(&bins, 0.9), unit: "" },
+        Scalar {
+            key: "core_error",
+            label: "worst error, bins with 90 % of the mass",
+            value: core_error(&bins, 0.9),
+            unit: "",
+        },
         Scalar { key: "decades", label: "decades resolved below the peak", value: (peak / lowest).log10(), unit: "" },
         Scalar { key: "events", label: "group events per run", value: events, unit: "" },
     ];

@@ -89,7 +89,14 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
         .map(|r| {
             format!(
                 "seed {}: {} after {} group events ({} sticking, {} erosive, {} shattering; {} merges, {} re-zooms)",
-                r.seed, r.ended, r.events, r.tally.stick, r.tally.erode, r.tally.shatter, r.tally.merges, r.tally.rezooms
+                r.seed,
+                r.ended,
+                r.events,
+                r.tally.stick,
+                r.tally.erode,
+                r.tally.shatter,
+                r.tally.merges,
+                r.tally.rezooms
             )
         })
         .collect()
@@ -113,8 +120,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         dist = dist.with(Series::new(label, mean, Style::Line, k));
         if runs.len() > 1 {
             let hi: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1 + r.2]).collect();
-            let lo: Vec<[f64; 2]> =
-                rows.iter().filter(|r| r.1 - r.2 > 0.0).map(|r| [r.0 * 1e3, r.1 - r.2]).collect();
+            let lo: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 - r.2 > 0.0).map(|r| [r.0 * 1e3, r.1 - r.2]).collect();
             dist = dist.with(Series::new("", hi, Style::Dashed, k)).with(Series::new("", lo, Style::Dashed, k));
         }
     }
@@ -146,7 +152,12 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     for (k, r) in runs.iter().enumerate() {
         let name = |what: &str| if k == 0 { what.to_string() } else { String::new() };
         peak = peak
-            .with(Series::new(name("m_p"), r.history.iter().map(|s| [s.t / YEAR, s.m_p * 1e3]).collect(), Style::Line, 0))
+            .with(Series::new(
+                name("m_p"),
+                r.history.iter().map(|s| [s.t / YEAR, s.m_p * 1e3]).collect(),
+                Style::Line,
+                0,
+            ))
             .with(Series::new(
                 name("m_max"),
                 r.history.iter().map(|s| [s.t / YEAR, s.m_max * 1e3]).collect(),

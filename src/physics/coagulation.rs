@@ -364,7 +364,7 @@ impl RunConfig {
         if self.snapshots.windows(2).any(|w| w[1] < w[0]) {
             return bad("snapshot times must ascend");
         }
-        if !(self.column.env.dust_surface_density > 0.0) {
+        if self.column.env.dust_surface_density.is_nan() || self.column.env.dust_surface_density <= 0.0 {
             return bad("the dust surface density must be > 0");
         }
         Ok(())

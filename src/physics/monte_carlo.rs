@@ -591,13 +591,13 @@ impl<M: Model> Engine<M> {
         let mut total2: f64 = self.row.iter().sum();
         // Row sums are updated incrementally; when the total falls far below
         // the largest it had, their rounding could matter: recompute them.
-        if !(total2 > 1e-9 * self.row_scale) {
+        if total2.is_nan() || total2 <= 1e-9 * self.row_scale {
             self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
             total2 = self.row.iter().sum();
             self.row_scale = total2;
         }
         self.row_scale = self.row_scale.max(total2);
-        if !(total2 > 0.0) {
+        if total2.is_nan() || total2 <= 0.0 {
             // Families may hold too few groups for their zoom factors.
             self.rezoom();
             total2 = self.row.iter().sum();
@@ -870,7 +870,7 @@ impl<M: Model> Engine<M> {
         // that the row sums carry no accumulated rounding.
         self.tally.rezooms += 1;
         let changed = self.dirty.iter().filter(|d| **d).count();
-        if self.tally.rezooms % 32 == 0 || 4 * changed > self.families.len() {
+        if self.tally.rezooms.is_multiple_of(32) || 4 * changed > self.families.len() {
             self.rebuild_rates();
         } else {
             for k in 0..self.families.len() {

@@ -17,7 +17,7 @@ pub const INFO: SceneInfo = SceneInfo {
     source: "Sect. 4.3; Ormel & Spaans (2008)",
     explanation: "The engine of the Monte Carlo scenes on problems with exact answers. Starting from N₀ \
 monomers (units m₀ = 1, N₀ = 1 per unit volume), K = 1 gives N(k, t) = (t/2)^{k−1}/(1 + t/2)^{k+1}; \
-K = m + m′ gives N_k = g [k(1 − g)]^{k−1} e^{−k(1−g)}/k! with g = e^{−t}; K = m m′ gives \
+K = m₁ + m₂ gives N_k = g [k(1 − g)]^{k−1} e^{−k(1−g)}/k! with g = e^{−t}; K = m₁m₂ gives \
 N_k = (kt)^{k−1} e^{−kt}/(k·k!) before gelation at t = 1. Shown: the mass fraction per ln m, \
 m²N(m), of the runs (mean, dashed ±1σ) and exact, and the relative error per bin. The error shrinks as \
 the groups per decade w* grow; the low-mass tail stays resolved far below the peak.",
@@ -70,7 +70,7 @@ impl Params {
                 "kernel",
                 "kernel",
                 &mut self.kernel,
-                vec![("constant", "constant K = 1"), ("linear", "linear K = m + m′"), ("product", "product K = m m′")],
+                vec![("constant", "constant K = 1"), ("linear", "linear K = m₁ + m₂"), ("product", "product K = m₁m₂")],
                 "the analytic test problem",
             ),
             Control::number(
@@ -193,6 +193,10 @@ pub fn core_error(bins: &Bins, core: f64) -> f64 {
     worst
 }
 
+fn lowest_centre(bins: &Bins) -> f64 {
+    bins.first().map_or(1.0, |b| (b.0 * b.1).sqrt())
+}
+
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
     let (bins, events) = run(p, progress)?;
@@ -218,12 +222,13 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         let lo = bins.iter().filter(|b| b.2 > b.3).map(|b| [centre(b), per_ln(b, b.2 - b.3)]).collect();
         fig = fig.with(Series::new("±1σ", hi, Style::Dashed, 0)).with(Series::new("", lo, Style::Dashed, 0));
     }
-    // The exact k²N_k as a smooth curve.
+    // The exact k²N_k as a smooth curve where k is large enough to be continuous.
     let top = bins.last().map_or(10.0, |b| b.1) * 10.0;
-    let curve: Vec<[f64; 2]> = super::logspace(1.0, top, 200)
+    let floor = 1e-8 * bins.iter().map(|b| per_ln(b, b.4)).fold(0.0, f64::max);
+    let curve: Vec<[f64; 2]> = super::logspace(100.0, top.max(1e3), 200)
         .into_iter()
         .map(|k| [k, kernel.exact_mass_between(k, k * 1.01, p.time) / 1.01f64.ln()])
-        .filter(|q| q[1] > 0.0)
+        .filter(|q| q[1] > floor)
         .collect();
     fig = fig.with(Series::new("exact", curve, Style::Dashed, 1));
     let mut err = Figure::new(
@@ -232,9 +237,24 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         Axis::log("mass m/m₀", ""),
         Axis::linear("run/exact − 1", ""),
     );
+    // Bins holding at least 10⁻⁴ of the mass (further out the exact values
+    // are too small for the runs to sample).
+    let total: f64 = bins.iter().map(|b| b.4).sum();
     let e: Vec<[f64; 2]> =
-        bins.iter().filter(|b| b.4 > 1e-6 && b.2 > 0.0).map(|b| [centre(b), b.2 / b.4 - 1.0]).collect();
+        bins.iter().filter(|b| b.4 > 1e-4 * total && b.2 > 0.0).map(|b| [centre(b), b.2 / b.4 - 1.0]).collect();
+    let bars: Vec<[f64; 2]> = bins
+        .iter()
+        .filter(|b| b.4 > 1e-4 * total && b.2 > 0.0 && p.runs > 1)
+        .flat_map(|b| {
+            let se = b.3 / (p.runs as f64).sqrt() / b.4;
+            [[centre(b), b.2 / b.4 - 1.0 + se], [centre(b), b.2 / b.4 - 1.0 - se]]
+        })
+        .collect();
     err = err.with(Series::new("mean of the runs", e, Style::Points, 0));
+    if !bars.is_empty() {
+        err = err.with(Series::new("± standard error", bars, Style::Marker, 6));
+    }
+    err = err.with(Series::new("", vec![[lowest_centre(&bins), 0.0], [top / 10.0, 0.0]], Style::Dashed, 6));
     let peak = bins.iter().max_by(|a, b| a.2.total_cmp(&b.2)).map_or(1.0, centre);
     let lowest = bins.iter().find(|b| b.2 > 0.0).map_or(1.0, centre);
     let scalars = vec![

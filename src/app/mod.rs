@@ -143,6 +143,9 @@ pub struct GrainscopeApp {
     dialogs: (Sender<Dialog>, Receiver<Dialog>),
     sweep: Sweep,
     lecture_applied: Option<bool>,
+    /// The scene the running worker job computes (none for sweeps), whose
+    /// intermediate results are shown while it runs.
+    live_scene: Option<usize>,
 }
 
 impl GrainscopeApp {
@@ -165,6 +168,7 @@ impl GrainscopeApp {
             dialogs: channel(),
             sweep: Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 },
             lecture_applied: None,
+            live_scene: None,
         }
     }
 
@@ -245,6 +249,7 @@ impl GrainscopeApp {
         if SCENES[i].heavy {
             let caches = Arc::clone(&self.caches);
             self.stale = true;
+            self.live_scene = Some(i);
             self.worker.submit(move |progress| {
                 let mut c = caches.lock().map_err(|_| SceneError::Cancelled)?;
                 scene::compute_cached(&params, progress, &mut c).map(|o| Job::Scene(i, o))
@@ -305,6 +310,12 @@ impl GrainscopeApp {
             }
         }
         if self.worker.busy() {
+            // A long run offers intermediate results: draw them as they come.
+            if let (Some(i), Some(part)) = (self.live_scene, self.worker.partial())
+                && !self.outputs[i].as_ref().is_some_and(|o| Arc::ptr_eq(o, &part))
+            {
+                self.outputs[i] = Some(part);
+            }
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
     }
@@ -637,6 +648,7 @@ impl GrainscopeApp {
         let key = self.sweep.key.clone();
         let first_color = self.session.pins.len() + 1;
         self.stale = true;
+        self.live_scene = None;
         self.worker.submit(move |progress| {
             let mut pins = Vec::new();
             for (j, v) in values.iter().enumerate() {

@@ -69,6 +69,11 @@ impl<T: Send + 'static> Worker<T> {
         self.running.is_some()
     }
 
+    /// The newest intermediate result the running job offered.
+    pub fn partial(&self) -> Option<std::sync::Arc<crate::scene::SceneOutput>> {
+        self.running.as_ref().and_then(Progress::partial)
+    }
+
     /// Fraction done of the running job.
     pub fn progress(&self) -> f64 {
         self.running.as_ref().map_or(0.0, Progress::fraction)

@@ -373,6 +373,17 @@ impl RunConfig {
     /// Runs with `seed`; `tick` is called now and then with the fraction of
     /// the run done (in log time) and stops the run when it returns false.
     pub fn run(&self, seed: u64, tick: &(dyn Fn(f64) -> bool + Sync)) -> Result<Run, PhysicsError> {
+        self.run_observed(seed, tick, &|_| {})
+    }
+
+    /// As [`RunConfig::run`], and hands the run so far (with a snapshot of
+    /// now appended) to `observe` about twice a second, for live display.
+    pub fn run_observed(
+        &self,
+        seed: u64,
+        tick: &(dyn Fn(f64) -> bool + Sync),
+        observe: &(dyn Fn(&Run) + Sync),
+    ) -> Result<Run, PhysicsError> {
         self.check()?;
         let column = self.column;
         let mono = column.monomer;
@@ -402,6 +413,21 @@ impl RunConfig {
         let mut history = Vec::new();
         let mut ended = "end time";
         let ln_span = (t_end / t0).ln().max(1e-9);
+        let mut shown = std::time::Instant::now();
+        let so_far = |engine: &Engine<Column>, snapshots: &[Snapshot], history: &[Sample]| {
+            let mut snaps = snapshots.to_vec();
+            snaps.push(snapshot(engine));
+            Run {
+                seed,
+                snapshots: snaps,
+                history: history.to_vec(),
+                events: engine.events(),
+                ended: "running",
+                surface_density: sigma_d,
+                area,
+                tally: engine.tally(),
+            }
+        };
         'outer: for (t, is_snapshot) in marks {
             while engine.time() < t {
                 if engine.events() >= self.max_events {
@@ -422,6 +448,10 @@ impl RunConfig {
                 if !tick(done) {
                     ended = "cancelled";
                     break 'outer;
+                }
+                if shown.elapsed().as_secs_f64() > 0.5 {
+                    observe(&so_far(&engine, &snapshots, &history));
+                    shown = std::time::Instant::now();
                 }
                 if engine.moments().1 >= self.stop_mass {
                     ended = "peak mass reached";
@@ -451,6 +481,16 @@ impl RunConfig {
     /// Runs seeds `seed, seed + 1, …` in parallel; each run depends only on
     /// its seed, so the result does not depend on the thread count.
     pub fn run_seeds(&self, runs: usize, tick: &(dyn Fn(f64) -> bool + Sync)) -> Result<Vec<Run>, PhysicsError> {
+        self.run_seeds_observed(runs, tick, &|_| {})
+    }
+
+    /// As [`RunConfig::run_seeds`], handing the first run so far to `observe`.
+    pub fn run_seeds_observed(
+        &self,
+        runs: usize,
+        tick: &(dyn Fn(f64) -> bool + Sync),
+        observe: &(dyn Fn(&Run) + Sync),
+    ) -> Result<Vec<Run>, PhysicsError> {
         let progress: Vec<std::sync::atomic::AtomicU32> =
             (0..runs).map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
         let report = |k: usize, f: f64| {
@@ -459,7 +499,17 @@ impl RunConfig {
                 progress.iter().map(|p| p.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum::<f64>();
             tick(total / runs as f64)
         };
-        (0..runs).into_par_iter().map(|k| self.run(self.settings.seed + k as u64, &|f| report(k, f))).collect()
+        (0..runs)
+            .into_par_iter()
+            .map(|k| {
+                let seed = self.settings.seed + k as u64;
+                if k == 0 {
+                    self.run_observed(seed, &|f| report(k, f), observe)
+                } else {
+                    self.run(seed, &|f| report(k, f))
+                }
+            })
+            .collect()
     }
 }
 

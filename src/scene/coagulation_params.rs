@@ -249,11 +249,20 @@ impl ColumnParams {
 
     /// Runs all seeds on the worker, reporting progress and stopping on cancel.
     pub fn run(&self, progress: &Progress) -> Result<Vec<Run>, SceneError> {
+        self.run_observed(progress, &|_| {})
+    }
+
+    /// As [`ColumnParams::run`], handing the first run so far to `observe`.
+    pub fn run_observed(&self, progress: &Progress, observe: &(dyn Fn(&Run) + Sync)) -> Result<Vec<Run>, SceneError> {
         let cfg = self.config()?;
-        let runs = cfg.run_seeds(self.runs.max(1), &|f| {
-            progress.set(f);
-            !progress.cancelled()
-        })?;
+        let runs = cfg.run_seeds_observed(
+            self.runs.max(1),
+            &|f| {
+                progress.set(f);
+                !progress.cancelled()
+            },
+            observe,
+        )?;
         progress.check()?;
         Ok(runs)
     }
@@ -269,11 +278,21 @@ pub struct RunCache {
 impl RunCache {
     /// The runs for `p`, computed only if not cached.
     pub fn get(&mut self, p: &ColumnParams, progress: &Progress) -> Result<Arc<Vec<Run>>, SceneError> {
+        self.get_observed(p, progress, &|_| {})
+    }
+
+    /// As [`RunCache::get`], handing the first run so far to `observe` while it computes.
+    pub fn get_observed(
+        &mut self,
+        p: &ColumnParams,
+        progress: &Progress,
+        observe: &(dyn Fn(&Run) + Sync),
+    ) -> Result<Arc<Vec<Run>>, SceneError> {
         if let Some((_, runs)) = self.last.iter().find(|(key, _)| key == p) {
             progress.set(1.0);
             return Ok(Arc::clone(runs));
         }
-        let runs = p.run(progress)?;
+        let runs = p.run_observed(progress, observe)?;
         Ok(self.insert(p.clone(), runs))
     }
 

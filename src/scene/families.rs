@@ -6,6 +6,7 @@ use super::coagulation_params::{ColumnParams, RunCache};
 use super::controls::Control;
 use super::{Progress, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::coagulation::Run;
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use serde::{Deserialize, Serialize};
@@ -69,7 +70,24 @@ pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let runs = cache.get(&p.run, progress)?;
+    let live = |run: &Run| {
+        let mut out = output(p, std::slice::from_ref(run));
+        out.notes.insert(
+            0,
+            format!(
+                "running: seed {} at {:.4} yr (live view of the first run)",
+                run.seed,
+                run.history.last().map_or(0.0, |s| s.t) / YEAR
+            ),
+        );
+        progress.publish(out);
+    };
+    let runs = cache.get_observed(&p.run, progress, &live)?;
+    Ok(output(p, &runs))
+}
+
+/// The scene's figures from a set of runs.
+fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     let mut fig = Figure::new(
         "families",
         "Families in mass and filling factor",
@@ -92,10 +110,10 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     if runs.len() > 1 {
         notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
     }
-    Ok(SceneOutput {
+    SceneOutput {
         scalars: super::mass_distribution::summary(&runs),
         figures: vec![fig],
         notes,
         extra: super::Extra::None,
-    })
+    }
 }

@@ -104,7 +104,24 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let runs = cache.get(&p.run, progress)?;
+    let live = |run: &Run| {
+        let mut out = output(p, std::slice::from_ref(run));
+        out.notes.insert(
+            0,
+            format!(
+                "running: seed {} at {:.4} yr (live view of the first run)",
+                run.seed,
+                run.history.last().map_or(0.0, |s| s.t) / YEAR
+            ),
+        );
+        progress.publish(out);
+    };
+    let runs = cache.get_observed(&p.run, progress, &live)?;
+    Ok(output(p, &runs))
+}
+
+/// The scene's figures from a set of runs.
+fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     let n_snap = runs.iter().map(|r| r.snapshots.len()).max().unwrap_or(0);
     let mut dist = Figure::new(
         "mass-distribution",
@@ -165,10 +182,10 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
                 1,
             ));
     }
-    Ok(SceneOutput {
+    SceneOutput {
         scalars: summary(&runs),
         figures: vec![dist, times, peak],
         notes: endings(&runs),
         extra: super::Extra::None,
-    })
+    }
 }

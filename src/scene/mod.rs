@@ -440,6 +440,7 @@ pub enum SceneError {
 pub struct Progress {
     cancel: Arc<AtomicBool>,
     permille: Arc<AtomicU32>,
+    partial: Arc<std::sync::Mutex<Option<Arc<SceneOutput>>>>,
 }
 
 impl Progress {
@@ -462,6 +463,16 @@ impl Progress {
     /// The fraction done (0–1).
     pub fn fraction(&self) -> f64 {
         self.permille.load(Ordering::Relaxed) as f64 / 1000.0
+    }
+    /// Offers an intermediate result of a long computation for display.
+    pub fn publish(&self, output: SceneOutput) {
+        if let Ok(mut slot) = self.partial.lock() {
+            *slot = Some(Arc::new(output));
+        }
+    }
+    /// The newest intermediate result, if any.
+    pub fn partial(&self) -> Option<Arc<SceneOutput>> {
+        self.partial.lock().ok().and_then(|slot| slot.clone())
     }
 }
 

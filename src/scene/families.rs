@@ -106,12 +106,12 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
         let track = semi_analytical(&p.run).into_iter().map(|q| [q[0] * 1e3, q[1]]).collect();
         fig = fig.with(Series::new("semi-analytical", track, Style::Dashed, 7));
     }
-    let mut notes = super::mass_distribution::endings(&runs);
+    let mut notes = super::mass_distribution::endings(runs);
     if runs.len() > 1 {
         notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
     }
     SceneOutput {
-        scalars: super::mass_distribution::summary(&runs),
+        scalars: super::mass_distribution::summary(runs),
         figures: vec![fig],
         notes,
         extra: super::Extra::None,

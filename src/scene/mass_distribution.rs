@@ -131,7 +131,7 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     );
     for k in 0..n_snap {
         let t = runs.iter().filter_map(|r| r.snapshots.get(k)).map(|s| s.t).fold(0.0, f64::max);
-        let rows = mass_distribution(&runs, k, p.bins_per_decade);
+        let rows = mass_distribution(runs, k, p.bins_per_decade);
         let label = format!("{:.3} yr", t / YEAR);
         let mean: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1]).collect();
         dist = dist.with(Series::new(label, mean, Style::Line, k));
@@ -183,9 +183,9 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
             ));
     }
     SceneOutput {
-        scalars: summary(&runs),
+        scalars: summary(runs),
         figures: vec![dist, times, peak],
-        notes: endings(&runs),
+        notes: endings(runs),
         extra: super::Extra::None,
     }
 }

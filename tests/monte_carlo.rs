@@ -187,3 +187,24 @@ fn perfect_sticking_follows_the_semi_analytical_porosity_track_with_full_compact
     }
     assert!(checked > 10);
 }
+
+#[test]
+fn a_paused_run_waits_and_resumes() {
+    use grainscope::scene::Progress;
+    use grainscope::scene::coagulation_params::ColumnParams;
+    let p = ColumnParams { runs: 1, t_first_yr: 1.0, t_end_yr: 20.0, snapshots: 2, ..ColumnParams::default() };
+    let progress = Progress::default();
+    progress.set_paused(true);
+    let handle = {
+        let progress = progress.clone();
+        std::thread::spawn(move || p.run(&progress))
+    };
+    std::thread::sleep(std::time::Duration::from_millis(400));
+    let held = progress.fraction();
+    std::thread::sleep(std::time::Duration::from_millis(400));
+    assert_eq!(progress.fraction(), held, "no progress while paused");
+    assert!(!handle.is_finished());
+    progress.set_paused(false);
+    let runs = handle.join().expect("thread").expect("runs");
+    assert_eq!(runs[0].ended, "end time");
+}

@@ -413,6 +413,17 @@ impl GrainscopeApp {
         ui.horizontal(|ui| {
             if self.worker.busy() {
                 ui.add(egui::ProgressBar::new(self.worker.progress() as f32).desired_width(160.0).show_percentage());
+                if self.live_scene.is_some_and(|i| {
+                    SCENES[i].id == "mass-distribution"
+                        || SCENES[i].id == "families"
+                        || SCENES[i].id == "erosion-balance"
+                }) {
+                    let paused = self.worker.paused();
+                    if ui.button(if paused { "Resume" } else { "Pause" }).clicked() {
+                        self.worker.set_paused(!paused);
+                        self.status = if paused { "resumed".into() } else { "paused; Resume continues the run".into() };
+                    }
+                }
                 if ui.button("Cancel").clicked() {
                     self.worker.cancel();
                     self.stale = false;

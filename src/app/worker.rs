@@ -74,6 +74,18 @@ impl<T: Send + 'static> Worker<T> {
         self.running.as_ref().and_then(Progress::partial)
     }
 
+    /// Pauses or resumes the running job (jobs that do not honour pauses run on).
+    pub fn set_paused(&self, paused: bool) {
+        if let Some(p) = &self.running {
+            p.set_paused(paused);
+        }
+    }
+
+    /// Whether the running job is paused.
+    pub fn paused(&self) -> bool {
+        self.running.as_ref().is_some_and(Progress::paused)
+    }
+
     /// Fraction done of the running job.
     pub fn progress(&self) -> f64 {
         self.running.as_ref().map_or(0.0, Progress::fraction)

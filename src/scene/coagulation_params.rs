@@ -259,6 +259,7 @@ impl ColumnParams {
             self.runs.max(1),
             &|f| {
                 progress.set(f);
+                progress.wait_while_paused();
                 !progress.cancelled()
             },
             observe,

@@ -108,6 +108,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
                 let sum: f64 =
                     fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
                 progress.set(sum / fractions.len() as f64);
+                progress.wait_while_paused();
                 !progress.cancelled()
             })?;
             progress.check()?;

@@ -100,6 +100,9 @@ pub const SCENES: [SceneInfo; 29] = [
     midplane_loading::INFO,
 ];
 
+/// Scenes whose computation honours [`Progress::set_paused`] (the Monte Carlo runs).
+pub const PAUSABLE: [&str; 3] = [mass_distribution::INFO.id, families::INFO.id, erosion_balance::INFO.id];
+
 /// The parameters of one scene, tagged by scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 pub enum SceneParams {
@@ -439,6 +442,7 @@ pub enum SceneError {
 #[derive(Debug, Clone, Default)]
 pub struct Progress {
     cancel: Arc<AtomicBool>,
+    pause: Arc<AtomicBool>,
     permille: Arc<AtomicU32>,
     partial: Arc<std::sync::Mutex<Option<Arc<SceneOutput>>>>,
 }
@@ -451,6 +455,20 @@ impl Progress {
     /// Whether cancellation was requested.
     pub fn cancelled(&self) -> bool {
         self.cancel.load(Ordering::Relaxed)
+    }
+    /// Pauses (true) or resumes (false) a computation that honours it.
+    pub fn set_paused(&self, paused: bool) {
+        self.pause.store(paused, Ordering::Relaxed);
+    }
+    /// Whether a pause was requested.
+    pub fn paused(&self) -> bool {
+        self.pause.load(Ordering::Relaxed)
+    }
+    /// Blocks while paused (and not cancelled).
+    pub fn wait_while_paused(&self) {
+        while self.paused() && !self.cancelled() {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
     }
     /// Errors out if cancellation was requested.
     pub fn check(&self) -> Result<(), SceneError> {

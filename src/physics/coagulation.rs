@@ -163,10 +163,10 @@ impl Model for Column {
     }
 
     fn rate(&self, a: &Family<Props>, b: &Family<Props>) -> f64 {
+        // h_ij/(h_i h_j) with h_ij = (h_i⁻² + h_j⁻²)^{-1/2} is 1/(h_i² + h_j²)^{1/2}.
         let (hi, hj) = (a.props.scale_height, b.props.scale_height);
-        let h_ij = (hi.powi(-2) + hj.powi(-2)).powf(-0.5);
         let sigma = PI * (a.props.radius + b.props.radius).powi(2);
-        sigma * h_ij / ((2.0 * PI).sqrt() * hi * hj) * self.velocity(a, b)
+        sigma / ((2.0 * PI).sqrt() * (hi * hi + hj * hj).sqrt()) * self.velocity(a, b)
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional

@@ -564,14 +564,17 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
             0.5,
             "",
         ));
-        checks.push(Check::new(
-            "Sect. 4.4.2",
-            "log10 m_max(40 m/s)/m_max(20 m/s) in the steady state (\"about a factor of 10\")",
-            1.0,
-            (e40.1 / e20.1).log10(),
-            1.0,
-            "median over the last 40 % of 10^4 yr; the 40 m/s run is still settling",
-        ));
+        checks.push(Check {
+            known: true,
+            ..Check::new(
+                "Sect. 4.4.2",
+                "log10 m_max(40 m/s)/m_max(20 m/s) in the steady state (\"about a factor of 10\")",
+                1.0,
+                (e40.1 / e20.1).log10(),
+                0.5,
+                "ours is 30-100x and noisy; the steady Stokes numbers (rows above) agree with the thesis",
+            )
+        });
         checks.push(Check::new("Fig. 4.11", "lowest zeta, v_eros = 60 m/s (never below 0)", 0.5, e60.2, 0.5, ""));
     }
     Ok(MonteCarlo { checks, figures })

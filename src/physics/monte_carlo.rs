@@ -726,6 +726,13 @@ impl<M: Model> Engine<M> {
     /// family (4.27); an empty family's rounding remainder goes the same way,
     /// so mass is conserved to rounding.
     fn tidy(&mut self) {
+        self.merge_small(true);
+    }
+
+    /// Merges or magnifies every family with fewer than one group; with
+    /// `refresh` the rates of magnified families are updated at once (a
+    /// re-zoom marks them dirty instead).
+    fn merge_small(&mut self, refresh: bool) {
         while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
             if self.families[k].groups.abs() < 1e-6 {
                 self.absorb_residue(k);
@@ -746,7 +753,9 @@ impl<M: Model> Engine<M> {
                     if !self.magnify(k) {
                         break;
                     }
-                    self.refresh_rates(k);
+                    if refresh {
+                        self.refresh_rates(k);
+                    }
                 }
             }
         }
@@ -843,28 +852,7 @@ impl<M: Model> Engine<M> {
                 f.zoom = z;
             }
         }
-        while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
-            if self.families[k].groups.abs() < 1e-6 {
-                self.absorb_residue(k);
-                self.remove_family(k);
-                continue;
-            }
-            match self.merge_partner(k) {
-                Some(t) => {
-                    if self.merge_into(k, t) {
-                        self.refresh_pairs(t);
-                    } else {
-                        self.refresh_rates(t);
-                    }
-                    self.remove_family(k);
-                }
-                None => {
-                    if !self.magnify(k) {
-                        break;
-                    }
-                }
-            }
-        }
+        self.merge_small(false);
         // Rates change only for families whose zoom changed (merged ones were
         // refreshed as they merged); now and then all rates are rebuilt so
         // that the row sums carry no accumulated rounding.

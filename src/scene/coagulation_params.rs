@@ -269,6 +269,20 @@ impl ColumnParams {
     }
 }
 
+/// An observer for [`RunCache::get_observed`] that publishes the scene output
+/// `build` makes of the first run so far, with a note that it is running.
+pub fn live_view<'a>(
+    progress: &'a Progress,
+    build: impl Fn(&[Run]) -> super::SceneOutput + Sync + 'a,
+) -> impl Fn(&Run) + Sync + 'a {
+    move |run: &Run| {
+        let mut out = build(std::slice::from_ref(run));
+        let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
+        out.notes.insert(0, format!("running: seed {} at {t:.4} yr (live view of the first run)", run.seed));
+        progress.publish(out);
+    }
+}
+
 /// The last Monte Carlo runs, shared by the Monte Carlo scenes: up to four
 /// parameter sets are kept (the erosion scene runs three thresholds).
 #[derive(Debug, Default)]

@@ -70,18 +70,7 @@ pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let live = |run: &Run| {
-        let mut out = output(p, std::slice::from_ref(run));
-        out.notes.insert(
-            0,
-            format!(
-                "running: seed {} at {:.4} yr (live view of the first run)",
-                run.seed,
-                run.history.last().map_or(0.0, |s| s.t) / YEAR
-            ),
-        );
-        progress.publish(out);
-    };
+    let live = super::coagulation_params::live_view(progress, |runs| output(p, runs));
     let runs = cache.get_observed(&p.run, progress, &live)?;
     Ok(output(p, &runs))
 }

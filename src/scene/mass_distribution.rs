@@ -52,17 +52,24 @@ impl Params {
     }
 }
 
-/// Growth time m_p/(dm_p/dt) between history samples: (m_p at the midpoint, t_grow).
+/// Growth time t_grow = m_p/(dm_p/dt) (4.30) from the history, over steps in
+/// which m_p grew by at least a factor 10^{1/8} (the peak mass is noisy
+/// between samples): (m_p at the step's midpoint, t_grow, t_drift), s.
 pub fn growth_times(history: &[Sample]) -> Vec<(f64, f64, f64)> {
-    history
-        .windows(2)
-        .filter(|w| w[1].t > w[0].t && w[1].m_p > w[0].m_p)
-        .map(|w| {
-            let m = (w[0].m_p * w[1].m_p).sqrt();
-            let rate = (w[1].m_p / w[0].m_p).ln() / (w[1].t - w[0].t);
-            (m, 1.0 / rate, (w[0].t_drift * w[1].t_drift).sqrt())
-        })
-        .collect()
+    let step = 10f64.powf(0.125);
+    let mut out = Vec::new();
+    let Some(mut anchor) = history.first() else { return out };
+    for s in &history[1..] {
+        if s.m_p < anchor.m_p {
+            // Shrinking (erosion): restart from here.
+            anchor = s;
+        } else if s.m_p >= anchor.m_p * step && s.t > anchor.t {
+            let rate = (s.m_p / anchor.m_p).ln() / (s.t - anchor.t);
+            out.push(((anchor.m_p * s.m_p).sqrt(), 1.0 / rate, (anchor.t_drift * s.t_drift).sqrt()));
+            anchor = s;
+        }
+    }
+    out
 }
 
 /// Summary scalars of a set of runs (from their last samples).
@@ -104,18 +111,7 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let live = |run: &Run| {
-        let mut out = output(p, std::slice::from_ref(run));
-        out.notes.insert(
-            0,
-            format!(
-                "running: seed {} at {:.4} yr (live view of the first run)",
-                run.seed,
-                run.history.last().map_or(0.0, |s| s.t) / YEAR
-            ),
-        );
-        progress.publish(out);
-    };
+    let live = super::coagulation_params::live_view(progress, |runs| output(p, runs));
     let runs = cache.get_observed(&p.run, progress, &live)?;
     Ok(output(p, &runs))
 }

@@ -6,7 +6,6 @@
 
 use grainscope::physics::coagulation::{Run, RunConfig};
 use grainscope::physics::constants::YEAR;
-use grainscope::physics::monte_carlo::{Analytic, Body, Engine, Settings};
 use grainscope::scene::Progress;
 use grainscope::scene::coagulation_params::ColumnParams;
 use grainscope::scene::kernel_tests::{self, Params};
@@ -50,8 +49,6 @@ fn main() {
             println!("  {kernel:<9} {t:>6}  {w:>4}   {events:>10.0}   {per_run:>13.1}   {worst:>11.3}");
         }
     }
-    let e = Engine::new(Analytic::Constant, Body { mass: 1.0, filling: 1.0 }, 1e20, 1e20, Settings::default());
-    drop(e);
 
     println!("Column at 5 AU, alpha = 1e-3, 0.1 um ice, one run (one thread)");
     println!("  case                                        w*   time [s]   events    events/s   families   |dM|/M");

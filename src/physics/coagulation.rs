@@ -90,14 +90,10 @@ impl Column {
         relative_velocity(&self.env, &self.particle(a), &self.particle(b), self.turbulence, self.epsilon).total()
     }
 
-    /// Filling factor of the product of a sticking collision.
-    pub fn stuck_filling(&self, t: Body, p: Body, v: f64) -> f64 {
-        self.filling_after(t, p, v, self.compaction == Compaction::Full)
-    }
-
-    /// Filling factor after hit-and-stick and collisional compaction, and,
-    /// if `external`, gas and self-gravity compaction.
-    fn filling_after(&self, t: Body, p: Body, v: f64, external: bool) -> f64 {
+    /// Filling factor of the product of a sticking collision after
+    /// hit-and-stick and collisional compaction (gas and self-gravity act
+    /// afterwards, once, in [`Model::compact`]).
+    pub fn filling_after(&self, t: Body, p: Body, v: f64) -> f64 {
         let mono = &self.monomer;
         let rho0 = mono.density;
         let m0 = mono.mass();
@@ -113,8 +109,7 @@ impl Column {
         } else {
             0.0
         };
-        let phi = phi_hs.max(phi_c).min(1.0);
-        if external { self.external_compaction(Body { mass: m, filling: phi }) } else { phi }
+        phi_hs.max(phi_c).min(1.0)
     }
 
     /// The filling factor after compression by gas ram pressure and
@@ -172,24 +167,12 @@ impl Model for Column {
     /// Sticking gives the filling factor after hit-and-stick and collisional
     /// compaction; gas and self-gravity act in [`Model::compact`].
     fn collide(&self, target: &Family<Props>, projectile: &Family<Props>) -> Collision {
-        self.outcome_of(target, projectile, false)
-    }
-
-    fn compact(&self, body: Body) -> f64 {
-        if self.compaction == Compaction::Full { self.external_compaction(body) } else { body.filling }
-    }
-}
-
-impl Column {
-    fn outcome_of(&self, target: &Family<Props>, projectile: &Family<Props>, external: bool) -> Collision {
         let v = self.velocity(target, projectile);
         let (t, p) = (target.body(), projectile.body());
         let m0 = self.monomer.mass();
         let fragments_of = |mass: f64| (projectile.mass / 10.0).max(m0).min(mass);
         match outcome(t.mass, p.mass, v, &self.thresholds) {
-            Outcome::Stick => Collision::Stick {
-                filling: self.filling_after(t, p, v, external && self.compaction == Compaction::Full),
-            },
+            Outcome::Stick => Collision::Stick { filling: self.filling_after(t, p, v) },
             Outcome::Erode { efficiency } => {
                 let eps = self.c1 * efficiency;
                 let lost = eps * p.mass;
@@ -206,6 +189,10 @@ impl Column {
             }
             Outcome::Bounce => Collision::Bounce,
         }
+    }
+
+    fn compact(&self, body: Body) -> f64 {
+        if self.compaction == Compaction::Full { self.external_compaction(body) } else { body.filling }
     }
 }
 

@@ -144,20 +144,7 @@ impl Model for Analytic {
 impl Analytic {
     /// Exact number density N_k(t) of k-mers from monomers with N₀ = 1 at t = 0.
     pub fn exact(&self, k: u64, t: f64) -> f64 {
-        let kf = k as f64;
-        let ln_fact = ln_factorial(k);
-        match self {
-            Analytic::Constant => {
-                let x = t / 2.0;
-                ((kf - 1.0) * x.ln() - (kf + 1.0) * (1.0 + x).ln()).exp()
-            }
-            Analytic::Linear => {
-                let g = (-t).exp();
-                let y = kf * (1.0 - g);
-                (g.ln() + (kf - 1.0) * y.ln() - y - ln_fact).exp()
-            }
-            Analytic::Product => ((kf - 1.0) * (kf * t).ln() - kf * t - kf.ln() - ln_fact).exp(),
-        }
+        self.density(k as f64, ln_factorial(k), t)
     }
 
     /// Exact mass per unit volume between masses `lo` and `hi` (k-mers with
@@ -187,6 +174,11 @@ impl Analytic {
     /// N_k for real k (Stirling's ln Γ(k + 1)).
     fn exact_continuous(&self, k: f64, t: f64) -> f64 {
         let ln_fact = k * k.ln() - k + 0.5 * (2.0 * std::f64::consts::PI * k).ln() + 1.0 / (12.0 * k);
+        self.density(k, ln_fact, t)
+    }
+
+    /// N_k(t) given ln k!.
+    fn density(&self, k: f64, ln_fact: f64, t: f64) -> f64 {
         match self {
             Analytic::Constant => {
                 let x = t / 2.0;

@@ -4,7 +4,7 @@
 use grainscope::physics::constants::{AU, YEAR};
 use grainscope::physics::growth::{GrowthModel, Porosity};
 use grainscope::scene::Progress;
-use grainscope::scene::collision_speeds::{Params as MapParams, map};
+use grainscope::scene::disk::collision_speeds::{Params as MapParams, map};
 use rayon::prelude::*;
 use std::time::Instant;
 

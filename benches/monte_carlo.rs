@@ -7,8 +7,8 @@
 use grainscope::physics::coagulation::{Run, RunConfig};
 use grainscope::physics::constants::YEAR;
 use grainscope::scene::Progress;
-use grainscope::scene::coagulation_params::ColumnParams;
-use grainscope::scene::kernel_tests::{self, Params};
+use grainscope::scene::monte_carlo::analytic_kernels::{self, Params};
+use grainscope::scene::monte_carlo::common::ColumnParams;
 use std::time::Instant;
 
 fn column(w: f64, v_eros: f64, compaction: &str, stop_g: f64, t_end_yr: f64) -> RunConfig {
@@ -43,9 +43,9 @@ fn main() {
         for w in [20.0, 60.0, 200.0] {
             let p = Params { kernel: kernel.into(), time: t, groups_per_decade: w, runs: 16, ..Params::default() };
             let start = Instant::now();
-            let (bins, events) = kernel_tests::run(&p, &Progress::default()).expect("runs");
+            let (bins, events) = analytic_kernels::run(&p, &Progress::default()).expect("runs");
             let per_run = start.elapsed().as_secs_f64() * 1e3 / 16.0 * rayon::current_num_threads() as f64;
-            let worst = kernel_tests::core_error(&bins, 0.9);
+            let worst = analytic_kernels::core_error(&bins, 0.9);
             println!("  {kernel:<9} {t:>6}  {w:>4}   {events:>10.0}   {per_run:>13.1}   {worst:>11.3}");
         }
     }

@@ -7,9 +7,6 @@ use anyhow::{Context, Result, bail};
 use clap::{Parser, Subcommand};
 use std::path::{Path, PathBuf};
 
-/// Size of exported figures, pixels.
-pub const FIGURE_SIZE: (u32, u32) = (900, 620);
-
 /// grainscope: an explorer of dust microphysics. Without a command it opens the window.
 #[derive(Debug, Parser)]
 #[command(name = "grainscope", version, about)]
@@ -117,9 +114,9 @@ pub fn write_outputs(out: &SceneOutput, dir: &Path) -> Result<Vec<PathBuf>> {
         let csv = dir.join(format!("{}.csv", fig.id));
         write_csv(fig, &csv)?;
         let svg = dir.join(format!("{}.svg", fig.id));
-        write_svg(fig, &svg, FIGURE_SIZE)?;
+        write_svg(fig, &svg, crate::figure::EXPORT_SIZE)?;
         let png = dir.join(format!("{}.png", fig.id));
-        write_png(fig, &png, FIGURE_SIZE)?;
+        write_png(fig, &png, crate::figure::EXPORT_SIZE)?;
         files.extend([csv, svg, png]);
     }
     let json = dir.join("scalars.json");
@@ -209,7 +206,7 @@ fn fit_command(
     let mut preset = Preset {
         title: "fit".into(),
         description: String::new(),
-        scene: scene::SceneParams::Fit(scene::fit::Params {
+        scene: scene::SceneParams::Fit(scene::collisions::fit::Params {
             data: measurements.clone(),
             projectile,
             target,
@@ -229,7 +226,7 @@ fn fit_command(
     preset.scene.validate()?;
     let scene::SceneParams::Fit(params) = &preset.scene else { bail!("internal: not a fit scene") };
     let progress = Progress::default();
-    let fit = scene::fit::run_fit(params, &measurements, &progress)?;
+    let fit = scene::collisions::fit::run_fit(params, &measurements, &progress)?;
     let describe = |b: &Bounded, best: f64| match *b {
         Bounded::Value { best, plus, minus } => {
             serde_json::json!({"best": best, "low": best - minus, "high": best + plus, "kind": "value"})

@@ -7,6 +7,7 @@
 //! and writes figures, and [`app`] is the eframe front end. The command line
 //! ([`cli`]) and the tests call the same `compute` functions as the window.
 
+#[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
 pub mod figure;

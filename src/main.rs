@@ -8,8 +8,8 @@ use std::process::ExitCode;
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => grainscope::app::run(None),
-        Some(Command::Gui { preset }) => grainscope::app::run(preset),
+        None => open_window(None),
+        Some(Command::Gui { preset }) => open_window(preset),
         Some(command) => grainscope::cli::run(command),
     };
     match result {
@@ -19,4 +19,18 @@ fn main() -> ExitCode {
             ExitCode::from(2)
         }
     }
+}
+
+/// Opens the explorer window.
+#[cfg(feature = "gui")]
+fn open_window(preset: Option<String>) -> anyhow::Result<()> {
+    grainscope::app::run(preset)
+}
+
+/// Without the `gui` feature there is no window: say so and point to the commands.
+#[cfg(not(feature = "gui"))]
+fn open_window(_preset: Option<String>) -> anyhow::Result<()> {
+    anyhow::bail!(
+        "this grainscope was built without the window (feature `gui`); run `grainscope --help` for the commands"
+    )
 }

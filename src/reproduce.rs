@@ -50,7 +50,7 @@ pub fn chapter5() -> Result<Vec<Check>, crate::scene::SceneError> {
     use crate::physics::batches::alpha_midplane;
     use crate::physics::constants::AU;
     use crate::scene::Progress;
-    use crate::scene::batch_params::BatchParams;
+    use crate::scene::batches::common::BatchParams;
     use rayon::prelude::*;
     let check = Check::new;
     let progress = Progress::default();
@@ -210,7 +210,7 @@ pub fn chapter2() -> Result<Vec<Check>, PhysicsError> {
 /// The checks of chapter 3 (rolling friction).
 pub fn chapter3() -> Vec<Check> {
     use crate::physics::rolling::{critical_displacement, rolling_force, rolling_torque, small_asymmetry_torque};
-    use crate::scene::rolling_params::RollingParams;
+    use crate::scene::rolling::common::RollingParams;
     let check = Check::new;
     // Peri & Cetinkaya: 21.4 µm PSL on aluminium, γ = 0.1 J/m².
     let peri = RollingParams::of("PSL", "aluminium alloy", true, 10.7e-6, 0.1);
@@ -330,8 +330,8 @@ pub fn chapter6() -> Result<Vec<Check>, PhysicsError> {
     let s_limit = 2f64.powf(-1.0 / 3.0) * s0;
     let coefficient = s_limit * eta * sil.density * v * v / sil.surface_energy;
     let consistent = smallest_fragment_64(&sil, eta, v, s0, s_limit) / s_limit;
-    let p = crate::scene::debris_params::FragmentParams::default();
-    let collider = crate::scene::smallest_fragment::collider_for(&p, 0, 1e-6).unwrap_or(f64::NAN);
+    let p = crate::scene::debris::common::FragmentParams::default();
+    let collider = crate::scene::debris::smallest_fragment::collider_for(&p, 0, 1e-6).unwrap_or(f64::NAN);
     Ok(vec![
         check("Eq. 6.6", "coefficient of gamma/(eta rho v^2) from (6.4) at s_min = s_max", 5.0, coefficient, 0.1, ""),
         check("Eq. 6.4", "(6.4) at that s0 returns s_min = s_max (ratio)", 1.0, consistent, 1e-9, ""),
@@ -430,7 +430,7 @@ pub struct MonteCarlo {
 }
 
 /// The column parameters of a Monte Carlo scene.
-fn column_of(scene: &mut crate::scene::SceneParams) -> Option<&mut crate::scene::coagulation_params::ColumnParams> {
+fn column_of(scene: &mut crate::scene::SceneParams) -> Option<&mut crate::scene::monte_carlo::common::ColumnParams> {
     use crate::scene::SceneParams;
     match scene {
         SceneParams::MassDistribution(p) => Some(&mut p.run),
@@ -479,8 +479,10 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
         let mut scene = params.get(name).cloned().ok_or_else(|| PhysicsError::Invalid(format!("no preset {name}")))?;
         column_of(&mut scene).cloned().ok_or_else(|| PhysicsError::Invalid(format!("{name} is no column")))
     };
-    let sticking = caches.coagulation_runs(&column("mc-fig-4-4")?, &progress)?;
-    let porosity = caches.coagulation_runs(&column("mc-fig-5-2-porosity")?, &progress)?;
+    let sticking =
+        caches.get::<crate::scene::monte_carlo::common::RunCache>().get(&column("mc-fig-4-4")?, &progress)?;
+    let porosity =
+        caches.get::<crate::scene::monte_carlo::common::RunCache>().get(&column("mc-fig-5-2-porosity")?, &progress)?;
     let base = column("mc-fig-4-10-4-11")?;
     let SceneParams::ErosionBalance(balance) = &params["mc-fig-4-10-4-11"] else {
         return Err(PhysicsError::Invalid("mc-fig-4-10-4-11 is no erosion balance".into()).into());
@@ -488,8 +490,8 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
     let thresholds = [balance.v_eros_1, balance.v_eros_2, balance.v_eros_3];
     let mut eroded = Vec::new();
     for v in thresholds {
-        let p = crate::scene::coagulation_params::ColumnParams { v_eros: v, ..base.clone() };
-        eroded.push(caches.coagulation_runs(&p, &progress)?);
+        let p = crate::scene::monte_carlo::common::ColumnParams { v_eros: v, ..base.clone() };
+        eroded.push(caches.get::<crate::scene::monte_carlo::common::RunCache>().get(&p, &progress)?);
     }
     let first = |runs: &std::sync::Arc<Vec<crate::physics::coagulation::Run>>| runs.first().cloned();
     let mut checks = Vec::new();
@@ -500,8 +502,10 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
             ((w[0].m_p.ln() + x * (w[1].m_p / w[0].m_p).ln()).exp() * 1e3).log10()
         });
         checks.push(Check::new("Fig. 4.4", "log10 m_p [g] where Omega t_s(m_p) reaches 1 (MC)", 10.0, at_one, 1.0, ""));
-        let worst =
-            crate::scene::mass_distribution::growth_times(&r.history).iter().map(|g| g.1 / g.2).fold(0.0, f64::max);
+        let worst = crate::scene::monte_carlo::mass_distribution::growth_times(&r.history)
+            .iter()
+            .map(|g| g.1 / g.2)
+            .fold(0.0, f64::max);
         checks.push(Check::new(
             "Fig. 4.5",
             "largest t_grow/t_drift of the peak mass (MC; below 1/30)",
@@ -514,7 +518,7 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
     if let Some(r) = first(&porosity) {
         let p = params.get("mc-fig-5-2-porosity").cloned();
         let track = match p {
-            Some(SceneParams::Families(f)) => crate::scene::families::semi_analytical(&f.run),
+            Some(SceneParams::Families(f)) => crate::scene::monte_carlo::families::semi_analytical(&f.run),
             _ => Vec::new(),
         };
         let phi = |m: f64| {
@@ -542,7 +546,7 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
         .iter()
         .filter_map(first)
         .map(|r| {
-            let (st, m) = crate::scene::erosion_balance::steady_state(&r);
+            let (st, m) = crate::scene::monte_carlo::erosion_balance::steady_state(&r);
             (st, m, r.history.iter().map(|s| s.zeta).fold(1.0, f64::min))
         })
         .collect();

@@ -3,7 +3,7 @@
 
 use grainscope::physics::batches::{BatchConfig, BatchRun, Fate, MIN_HALF_WIDTH, alpha_midplane, run, surface_density};
 use grainscope::physics::constants::AU;
-use grainscope::scene::batch_params::BatchParams;
+use grainscope::scene::batches::common::BatchParams;
 use grainscope::scene::{self, Progress, SceneParams};
 
 fn go(cfg: &BatchConfig) -> BatchRun {
@@ -213,7 +213,7 @@ fn sweeps_report_progress_by_finished_disks() {
 
 #[test]
 fn display_changes_reuse_the_cached_run() {
-    use grainscope::scene::batch_params::RunCache;
+    use grainscope::scene::batches::common::RunCache;
     let mut cache = RunCache::default();
     let p = BatchParams { batches: 30, ..BatchParams::default() };
     let progress = Progress::default();

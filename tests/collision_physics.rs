@@ -223,7 +223,7 @@ fn stability_sweep_over_documented_ranges() {
 
 #[test]
 fn sphere_on_wall_uses_the_projectile_as_reduced_body() {
-    use grainscope::scene::collision_params::CollisionParams;
+    use grainscope::scene::collisions::common::CollisionParams;
     let p = CollisionParams { wall: true, ..CollisionParams::default() };
     assert_eq!(p.reduced_radius(), p.radius_1);
     let m1 = 1000.0 * 4.0 / 3.0 * std::f64::consts::PI * p.radius_1.powi(3);

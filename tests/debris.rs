@@ -45,8 +45,8 @@ fn prefactor_of_6_8_recomputed() {
 
 #[test]
 fn submicron_silicate_fragments_need_centimetre_colliders() {
-    let p = grainscope::scene::debris_params::FragmentParams::default();
-    let s0 = grainscope::scene::smallest_fragment::collider_for(&p, 0, 1e-6).expect("exists");
+    let p = grainscope::scene::debris::common::FragmentParams::default();
+    let s0 = grainscope::scene::debris::smallest_fragment::collider_for(&p, 0, 1e-6).expect("exists");
     assert!((5e-3..=1e-1).contains(&s0), "collider radius {s0} m");
     // Smaller colliders cannot make sub-micron silicate fragments.
     let s = smallest_fragment(&SIL, 3.5, 1e-2, 20.0, 1e-3, 2f64.powf(-1.0 / 3.0) * 1e-3).expect("valid");
@@ -80,7 +80,7 @@ fn unequal_collisions_reduce_to_equal_and_erosion_scales_with_kappa() {
             < 1e-12
     );
     // Near-equal masses give the smallest fragments among catastrophic collisions.
-    let n = grainscope::scene::unequal_colliders::normalised_catastrophic;
+    let n = grainscope::scene::debris::unequal_colliders::normalised_catastrophic;
     assert!((n(1.0) - 1.0).abs() < 1e-12 && n(0.5) > 1.0 && n(2.0) > 1.0);
 }
 

@@ -191,7 +191,7 @@ fn perfect_sticking_follows_the_semi_analytical_porosity_track_with_full_compact
 #[test]
 fn a_paused_run_waits_and_resumes() {
     use grainscope::scene::Progress;
-    use grainscope::scene::coagulation_params::ColumnParams;
+    use grainscope::scene::monte_carlo::common::ColumnParams;
     let p = ColumnParams { runs: 1, t_first_yr: 1.0, t_end_yr: 20.0, snapshots: 2, ..ColumnParams::default() };
     let progress = Progress::default();
     progress.set_paused(true);

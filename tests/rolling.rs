@@ -4,8 +4,8 @@ use grainscope::physics::rolling::{
     Rocking, bulk_torque, critical_displacement, rocking_frequency, rolling_force, rolling_torque,
     small_asymmetry_torque,
 };
-use grainscope::scene::rocking::measured_frequency;
-use grainscope::scene::rolling_params::RollingParams;
+use grainscope::scene::rolling::common::RollingParams;
+use grainscope::scene::rolling::rocking::measured_frequency;
 use grainscope::scene::{self, Progress, SceneParams};
 
 fn peri() -> RollingParams {

@@ -61,3 +61,60 @@ fn inverted_ranges_are_rejected() {
     let err = scene::compute(&p, &Progress::default()).expect_err("inverted");
     assert!(err.to_string().contains("v_min"), "{err}");
 }
+
+#[test]
+fn the_registry_lists_each_scene_once_under_its_own_id() {
+    let mut ids: Vec<&str> = SCENES.iter().map(|s| s.id).collect();
+    for id in &ids {
+        let p = SceneParams::default_for(id).expect("registered");
+        assert_eq!(p.info().id, *id);
+    }
+    ids.sort_unstable();
+    ids.dedup();
+    assert_eq!(ids.len(), SCENES.len(), "duplicate scene ids");
+}
+
+#[test]
+fn every_control_declares_the_default_of_its_scene() {
+    for info in SCENES {
+        let mut p = SceneParams::default_for(info.id).expect("scene");
+        for c in p.controls() {
+            assert!(c.default.is_some(), "{}: {} declares no default", info.id, c.key);
+            assert!(
+                c.is_default(),
+                "{}: {} declares {:?} but the scene's Default holds {}",
+                info.id,
+                c.key,
+                c.default,
+                c.display_value()
+            );
+            if let grainscope::scene::ControlKind::Number { min, max, .. } = c.kind {
+                assert!(min.is_finite() && max.is_finite() && min < max, "{}: {} has no finite range", info.id, c.key);
+            }
+            assert!(c.doc_line().contains("default"), "{}: {}", info.id, c.key);
+        }
+    }
+}
+
+#[test]
+fn a_quantity_shared_by_scenes_is_declared_alike() {
+    // The same key means the same quantity: same unit and valid range wherever it appears.
+    let mut seen: std::collections::BTreeMap<&str, (String, String)> = Default::default();
+    for info in SCENES {
+        let mut p = SceneParams::default_for(info.id).expect("scene");
+        for c in p.controls() {
+            let range = match c.kind {
+                grainscope::scene::ControlKind::Number { min, max, .. } => format!("{min:e}…{max:e}"),
+                _ => continue,
+            };
+            let entry = seen.entry(c.key).or_insert_with(|| (c.si_unit.to_string(), range.clone()));
+            assert_eq!(
+                entry,
+                &(c.si_unit.to_string(), range),
+                "{}: {} differs from its other declarations",
+                info.id,
+                c.key
+            );
+        }
+    }
+}

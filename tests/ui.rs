@@ -74,3 +74,26 @@ fn importing_measurements_opens_the_fit_scene_and_bad_files_change_nothing() {
         other => panic!("wrong scene {other:?}"),
     }
 }
+
+#[test]
+fn a_restored_session_keeps_each_scenes_settings_by_id() {
+    use grainscope::app::Session;
+    let mut session = Session::default();
+    let mut p = grainscope::scene::SceneParams::default_for("rocking").expect("scene");
+    p.set("q", "12").expect("valid");
+    session.params.insert("rocking".into(), p.clone());
+    session.scene = "rocking".into();
+    // A session written when the list had another order or fewer scenes, and
+    // with one entry under a wrong id, loses only what it cannot place.
+    session.params.remove("hysteresis");
+    let stray = grainscope::scene::SceneParams::default_for("adhesion").expect("scene");
+    session.params.insert("no-such-scene".into(), stray);
+    let text = ron::to_string(&session).expect("serialises");
+    let restored: Session = ron::from_str(&text).expect("parses");
+    let restored = restored.repaired();
+    assert_eq!(restored.params.get("rocking"), Some(&p));
+    assert_eq!(restored.scene, "rocking");
+    assert!(restored.params.contains_key("hysteresis"));
+    assert!(!restored.params.contains_key("no-such-scene"));
+    assert_eq!(restored.params.len(), grainscope::scene::SCENES.len());
+}

@@ -12,6 +12,7 @@ use crate::figure::{self, Figure, Series, Style};
 use crate::preset::{Preset, resolve};
 use crate::scene::{self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams};
 use serde::{Deserialize, Serialize};
+use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
@@ -60,10 +61,11 @@ pub struct Pin {
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default)]
 pub struct Session {
-    /// Index of the open scene in [`SCENES`].
-    pub scene: usize,
-    /// Parameters of every scene, in the order of [`SCENES`].
-    pub params: Vec<SceneParams>,
+    /// Identifier of the open scene.
+    pub scene: String,
+    /// Parameters of every scene, by scene identifier (so adding or
+    /// reordering scenes keeps every scene's settings).
+    pub params: BTreeMap<String, SceneParams>,
     /// Pinned curves.
     pub pins: Vec<Pin>,
     /// Large fonts and full screen.
@@ -79,8 +81,11 @@ pub struct Session {
 impl Default for Session {
     fn default() -> Self {
         Session {
-            scene: 0,
-            params: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
+            scene: SCENES[0].id.to_string(),
+            params: SCENES
+                .iter()
+                .filter_map(|s| SceneParams::default_for(s.id).map(|p| (s.id.to_string(), p)))
+                .collect(),
             pins: Vec::new(),
             lecture: false,
             export_dir: "exports".into(),
@@ -91,19 +96,23 @@ impl Default for Session {
 }
 
 impl Session {
-    /// Repairs a restored session: unknown or invalid scenes get defaults.
-    fn repaired(mut self) -> Session {
-        let fresh = Session::default();
-        if self.params.len() != fresh.params.len()
-            || self.params.iter().zip(&fresh.params).any(|(a, b)| a.info().id != b.info().id || a.validate().is_err())
-        {
-            self.params = fresh.params;
-            self.pins.clear();
+    /// Repairs a restored session: scenes that are unknown, stored under
+    /// another scene's id or invalid are dropped, missing ones get defaults.
+    pub fn repaired(mut self) -> Session {
+        self.params.retain(|id, p| p.info().id == id && p.validate().is_ok());
+        for (id, p) in Session::default().params {
+            self.params.entry(id).or_insert(p);
         }
-        if self.scene >= SCENES.len() {
-            self.scene = 0;
+        self.pins.retain(|pin| pin.params.validate().is_ok());
+        if !self.params.contains_key(&self.scene) {
+            self.scene = SCENES[0].id.to_string();
         }
         self
+    }
+
+    /// Position of the open scene in [`SCENES`].
+    fn index(&self) -> usize {
+        SCENES.iter().position(|s| s.id == self.scene).unwrap_or(0)
     }
 }
 
@@ -146,6 +155,8 @@ pub struct GrainscopeApp {
     /// The scene the running worker job computes (none for sweeps), whose
     /// intermediate results are shown while it runs.
     live_scene: Option<usize>,
+    /// Default parameters of every scene, in the order of [`SCENES`].
+    defaults: Vec<SceneParams>,
 }
 
 impl GrainscopeApp {
@@ -169,17 +180,38 @@ impl GrainscopeApp {
             sweep: Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 },
             lecture_applied: None,
             live_scene: None,
+            defaults: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
         }
     }
 
     /// The current scene's parameters.
     pub fn params(&self) -> &SceneParams {
-        &self.session.params[self.session.scene]
+        match self.session.params.get(&self.session.scene) {
+            Some(p) => p,
+            None => &self.defaults[self.session.index()],
+        }
+    }
+
+    /// The current scene's parameters, for editing.
+    fn params_mut(&mut self) -> &mut SceneParams {
+        let i = self.session.index();
+        let default = &self.defaults[i];
+        self.session.params.entry(SCENES[i].id.to_string()).or_insert_with(|| default.clone())
+    }
+
+    /// The parameters of scene `i` of [`SCENES`].
+    fn params_of(&self, i: usize) -> &SceneParams {
+        self.session.params.get(SCENES[i].id).unwrap_or(&self.defaults[i])
+    }
+
+    /// Opens scene `i` of [`SCENES`].
+    fn open_scene(&mut self, i: usize) {
+        self.session.scene = SCENES[i].id.to_string();
     }
 
     /// The current scene's last good output.
     pub fn output(&self) -> Option<&SceneOutput> {
-        self.outputs[self.session.scene].as_deref()
+        self.outputs[self.session.index()].as_deref()
     }
 
     /// The status line (last message).
@@ -190,27 +222,34 @@ impl GrainscopeApp {
     /// Switches to the preset's scene and parameters.
     pub fn apply_preset(&mut self, preset: Preset, origin: &str) {
         let id = preset.scene.info().id;
-        if let Some(i) = SCENES.iter().position(|s| s.id == id) {
-            self.session.scene = i;
-            self.session.params[i] = preset.scene;
-            self.status = format!("loaded preset '{}' from {origin}", preset.title);
-            self.error = None;
-        }
+        self.session.scene = id.to_string();
+        self.session.params.insert(id.to_string(), preset.scene);
+        self.status = format!("loaded preset '{}' from {origin}", preset.title);
+        self.error = None;
     }
 
-    /// Loads measurements from a CSV file into the fit scene and opens it.
-    /// A rejected file changes nothing.
+    /// Loads measurements from a CSV file into the open scene if it takes
+    /// measurements, else into the first scene that does, and opens it. A
+    /// rejected file changes nothing.
     pub fn import_data(&mut self, path: &Path) {
+        let takes = |p: &SceneParams| p.clone().measurements().is_some();
+        let target = if takes(self.params()) {
+            Some(self.session.index())
+        } else {
+            (0..SCENES.len()).find(|&i| takes(self.params_of(i)))
+        };
+        let Some(i) = target else {
+            self.error = Some("no scene takes measurements (nothing imported)".into());
+            return;
+        };
         match crate::measurements::load(path) {
             Ok(data) => {
-                if let Some(i) = SCENES.iter().position(|s| s.id == "fit")
-                    && let SceneParams::Fit(p) = &mut self.session.params[i]
-                {
-                    self.status = format!("imported {} measurements from {}", data.len(), path.display());
-                    p.data = data;
-                    self.session.scene = i;
-                    self.error = None;
+                self.open_scene(i);
+                self.status = format!("imported {} measurements from {}", data.len(), path.display());
+                if let Some(slot) = self.params_mut().measurements() {
+                    *slot = data;
                 }
+                self.error = None;
             }
             Err(e) => self.error = Some(format!("{}: {e} (nothing imported)", path.display())),
         }
@@ -239,13 +278,13 @@ impl GrainscopeApp {
     /// Starts (or runs inline) the computation of the current scene if its
     /// computed parameters changed.
     fn request(&mut self) {
-        let i = self.session.scene;
-        let key = self.session.params[i].compute_key();
+        let i = self.session.index();
+        let key = self.params().compute_key();
         if self.requested[i].as_ref() == Some(&key) {
             return;
         }
         self.requested[i] = Some(key);
-        let params = self.session.params[i].clone();
+        let params = self.params().clone();
         if SCENES[i].heavy {
             let caches = Arc::clone(&self.caches);
             self.stale = true;
@@ -323,8 +362,8 @@ impl GrainscopeApp {
     fn export(&mut self, fig: &Figure, path: &Path) {
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
         let result = match ext.as_str() {
-            "png" => figure::write_png(fig, path, crate::cli::FIGURE_SIZE),
-            "svg" => figure::write_svg(fig, path, crate::cli::FIGURE_SIZE),
+            "png" => figure::write_png(fig, path, figure::EXPORT_SIZE),
+            "svg" => figure::write_svg(fig, path, figure::EXPORT_SIZE),
             "csv" => figure::write_csv(fig, path),
             _ => {
                 self.error = Some(format!("cannot export to {}: use a .png, .svg or .csv file name", path.display()));
@@ -413,11 +452,7 @@ impl GrainscopeApp {
         ui.horizontal(|ui| {
             if self.worker.busy() {
                 ui.add(egui::ProgressBar::new(self.worker.progress() as f32).desired_width(160.0).show_percentage());
-                if self.live_scene.is_some_and(|i| {
-                    SCENES[i].id == "mass-distribution"
-                        || SCENES[i].id == "families"
-                        || SCENES[i].id == "erosion-balance"
-                }) {
+                if self.live_scene.is_some_and(|i| self.params_of(i).pausable()) {
                     let paused = self.worker.paused();
                     if ui.button(if paused { "Resume" } else { "Pause" }).clicked() {
                         self.worker.set_paused(!paused);
@@ -427,7 +462,7 @@ impl GrainscopeApp {
                 if ui.button("Cancel").clicked() {
                     self.worker.cancel();
                     self.stale = false;
-                    self.requested[self.session.scene] = None;
+                    self.requested[self.session.index()] = None;
                     self.status = "cancelled; showing the last good result".into();
                 }
             }
@@ -442,8 +477,8 @@ impl GrainscopeApp {
     fn side_panel(&mut self, ui: &mut egui::Ui) {
         ui.label(egui::RichText::new("Scenes").strong());
         for (i, s) in SCENES.iter().enumerate() {
-            if ui.selectable_label(self.session.scene == i, s.title).clicked() {
-                self.session.scene = i;
+            if ui.selectable_label(self.session.scene == s.id, s.title).clicked() {
+                self.open_scene(i);
             }
         }
         ui.separator();
@@ -474,9 +509,10 @@ impl GrainscopeApp {
 
     fn controls(&mut self, ui: &mut egui::Ui) {
         let mut material_changed = false;
-        let scene = self.session.scene;
-        if let SceneParams::Fit(p) = &mut self.session.params[scene] {
-            let n = p.data.len();
+        let data_path = &mut self.session.data_path;
+        let mut load_typed = false;
+        if let Some(data) = self.session.params.get_mut(&self.session.scene).and_then(|p| p.measurements()) {
+            let n = data.len();
             ui.horizontal(|ui| {
                 ui.label(if n == 0 {
                     "data: synthetic example".to_string()
@@ -484,7 +520,7 @@ impl GrainscopeApp {
                     format!("data: {n} measurements")
                 });
                 if n > 0 && ui.button("Clear data").clicked() {
-                    p.data.clear();
+                    data.clear();
                 }
             });
             let mut import = false;
@@ -496,11 +532,8 @@ impl GrainscopeApp {
                     )
                     .clicked();
                 let label = ui.label("or path");
-                ui.text_edit_singleline(&mut self.session.data_path).labelled_by(label.id);
-                if ui.button("Load data").clicked() {
-                    let path = PathBuf::from(&self.session.data_path);
-                    self.import_data(&path);
-                }
+                ui.text_edit_singleline(data_path).labelled_by(label.id);
+                load_typed = ui.button("Load data").clicked();
             });
             if import {
                 self.spawn_dialog(|| {
@@ -508,8 +541,12 @@ impl GrainscopeApp {
                 });
             }
         }
+        if load_typed {
+            let path = PathBuf::from(&self.session.data_path);
+            self.import_data(&path);
+        }
         {
-            let params = &mut self.session.params[scene];
+            let params = self.params_mut();
             let mut controls = params.controls();
             egui::Grid::new("controls").num_columns(1).striped(false).show(ui, |ui| {
                 for c in controls.iter_mut() {
@@ -561,12 +598,11 @@ impl GrainscopeApp {
             });
         }
         if material_changed {
-            self.session.params[scene].material_changed();
+            self.params_mut().material_changed();
         }
-        if ui.button("Reset to defaults").clicked()
-            && let Some(p) = SceneParams::default_for(SCENES[scene].id)
-        {
-            self.session.params[scene] = p;
+        if ui.button("Reset to defaults").clicked() {
+            let default = self.defaults[self.session.index()].clone();
+            *self.params_mut() = default;
         }
     }
 
@@ -685,7 +721,7 @@ impl GrainscopeApp {
             Ok(Job::Sweep(pins))
         });
         // The scene itself must be recomputed when the sweep is done.
-        self.requested[self.session.scene] = None;
+        self.requested[self.session.index()] = None;
     }
 
     fn overlay_for(&self, fig: &Figure, cursor: Option<[f64; 2]>) -> plot::Overlay {
@@ -715,7 +751,7 @@ impl GrainscopeApp {
     }
 
     fn figures(&mut self, ui: &mut egui::Ui) {
-        let Some(out) = self.outputs[self.session.scene].clone() else {
+        let Some(out) = self.outputs[self.session.index()].clone() else {
             ui.centered_and_justified(|ui| ui.spinner());
             return;
         };
@@ -733,22 +769,15 @@ impl GrainscopeApp {
         let rows = n_panels.div_ceil(cols);
         let avail = ui.available_size();
         let size = egui::vec2((avail.x / cols as f32 - 12.0).max(200.0), (avail.y / rows as f32 - 40.0).max(160.0));
-        let cursor_fraction = match self.params() {
-            SceneParams::Hysteresis(p) => p.cursor,
-            _ => 0.0,
-        };
-        let cursor_sample = trajectory.as_ref().and_then(|t| sketch::sample_at(t, cursor_fraction));
+        let cursor = self.params().cursor(&out);
+        let cursor_fraction = cursor.as_ref().map_or(0.0, |c| c.fraction);
         let mut export: Option<(Figure, &'static str)> = None;
         let mut save_as: Option<Figure> = None;
         egui::Grid::new("figures").num_columns(cols).show(ui, |ui| {
             for (k, fig) in out.figures.iter().enumerate() {
-                let cursor = cursor_sample.and_then(|s| match fig.id.as_str() {
-                    "contact-radius" => Some([s[1] * 1e9, s[2] * 1e9]),
-                    "elastic-force" => Some([s[1] * 1e9, s[3] * 1e6]),
-                    "energy-budget" => None,
-                    _ => None,
-                });
-                let overlay = self.overlay_for(fig, cursor);
+                let point =
+                    cursor.as_ref().and_then(|c| c.points.iter().find(|(id, _)| *id == fig.id).map(|(_, p)| *p));
+                let overlay = self.overlay_for(fig, point);
                 ui.vertical(|ui| {
                     plot::show(ui, fig, &overlay, size, self.stale);
                     ui.horizontal(|ui| {

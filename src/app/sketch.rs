@@ -1,22 +1,14 @@
 //! A sketch of the two spheres and their contact neck at the time cursor.
 
-use crate::scene::hysteresis::Trajectory;
+use crate::scene::Trajectory;
 use egui::{Color32, Pos2, Stroke, pos2, vec2};
-
-/// The sample (t, δ, a, F_E) at a fraction of the run's duration.
-pub fn sample_at(t: &Trajectory, fraction: f64) -> Option<[f64; 4]> {
-    let last = t.samples.last()?;
-    let target = fraction.clamp(0.0, 1.0) * last[0];
-    let i = t.samples.partition_point(|s| s[0] < target).min(t.samples.len() - 1);
-    Some(t.samples[i])
-}
 
 /// Draws the sketch into a rectangle of `size`.
 pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) {
     let (rect, _) = ui.allocate_exact_size(vec2(size.x, size.y - 60.0), egui::Sense::hover());
     let painter = ui.painter_at(rect);
     painter.rect_filled(rect, 4.0, ui.visuals().extreme_bg_color);
-    let Some(s) = sample_at(t, fraction) else {
+    let Some(s) = t.sample_at(fraction) else {
         return;
     };
     let text_color = ui.visuals().text_color();

@@ -80,6 +80,9 @@ impl Series {
     }
 }
 
+/// Size of exported figures, pixels.
+pub const EXPORT_SIZE: (u32, u32) = (900, 620);
+
 /// Colours shared by the window and the file writers (RGB).
 pub const PALETTE: [[u8; 3]; 8] = [
     [214, 39, 40],

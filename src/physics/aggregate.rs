@@ -323,13 +323,23 @@ pub enum Outcome {
     Stick,
     /// The larger body loses ε_eros = c₁ v/v_eros (4.13, γ = 1) projectile masses.
     Erode {
-        /// Normalised erosion efficiency.
+        /// Erosion efficiency (4.13) for c₁ = 1 ([`erosion_efficiency`]).
         efficiency: f64,
     },
     /// Catastrophic fragmentation (v ≥ v_frag, mass ratio ≥ R_crit).
     Fragment,
     /// Compact grains bounce (v above the bouncing threshold).
     Bounce,
+}
+
+/// Mass ratio below which a collision erodes the larger body rather than
+/// fragmenting both, R_crit = 10⁻² (Sect. 4.2.3).
+pub const R_CRIT: f64 = 1e-2;
+
+/// Erosion efficiency ε_eros = c₁ v/v_eros (4.13, γ = 1): projectile masses
+/// the larger body loses per collision.
+pub fn erosion_efficiency(c1: f64, v: f64, v_eros: f64) -> f64 {
+    c1 * (v / v_eros)
 }
 
 /// Thresholds of the collision model.
@@ -349,7 +359,11 @@ pub struct Thresholds {
 pub fn outcome(m1: f64, m2: f64, v: f64, th: &Thresholds) -> Outcome {
     let ratio = m1.min(m2) / m1.max(m2);
     if ratio < th.r_crit {
-        if v > th.v_eros { Outcome::Erode { efficiency: v / th.v_eros } } else { Outcome::Stick }
+        if v > th.v_eros {
+            Outcome::Erode { efficiency: erosion_efficiency(1.0, v, th.v_eros) }
+        } else {
+            Outcome::Stick
+        }
     } else if v >= th.v_frag {
         Outcome::Fragment
     } else if v >= th.v_bounce {

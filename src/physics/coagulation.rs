@@ -174,7 +174,7 @@ impl Model for Column {
         match outcome(t.mass, p.mass, v, &self.thresholds) {
             Outcome::Stick => Collision::Stick { filling: self.filling_after(t, p, v) },
             Outcome::Erode { efficiency } => {
-                let eps = self.c1 * efficiency;
+                let eps = self.c1 * efficiency; // erosion_efficiency(c1, v, v_eros)
                 let lost = eps * p.mass;
                 if lost >= t.mass {
                     let mf = fragments_of(t.mass + p.mass);

@@ -46,7 +46,7 @@ impl Setup {
     /// The reference set of the thesis (Figs. 2.2–2.4): two water-ice spheres
     /// of radius 2 µm, γ = 0.74 J/m², z₀ = 0.3 nm, k = 0.02, T_vis = 10⁻¹¹ s.
     pub fn reference_ice() -> Setup {
-        let m = 1000.0 * 4.0 / 3.0 * PI * (2e-6f64).powi(3);
+        let m = super::sphere_mass(1000.0, 2e-6);
         Setup {
             pair: Pair {
                 modulus: 7e9 / (2.0 * (1.0 - 0.25 * 0.25)),

@@ -137,7 +137,7 @@ mod tests {
     use super::*;
 
     fn ice() -> Pair {
-        let m = 1000.0 * 4.0 / 3.0 * PI * (2e-6f64).powi(3);
+        let m = crate::physics::sphere_mass(1000.0, 2e-6);
         Pair { modulus: 7e9 / (2.0 * 0.9375), radius: 1e-6, mass: m / 2.0, surface_energy: 0.74 }
     }
 

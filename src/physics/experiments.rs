@@ -4,9 +4,8 @@
 use super::collision::Setup;
 use super::contact::Pair;
 use super::crack::CrackLaw;
-use super::material::{Material, combined_modulus, combined_surface_energy};
+use super::material::{Bodies, Material, TwoBodies, combined_surface_energy};
 use serde::{Deserialize, Serialize};
-use std::f64::consts::PI;
 use std::sync::OnceLock;
 
 /// A fitted quantity: a value with asymmetric uncertainty, or a one-sided limit.
@@ -110,13 +109,13 @@ impl Experiment {
     /// no plasticity); z₀ = 0.3 nm and k = 0.02 as in the thesis.
     pub fn setup(&self, gamma: f64, t_vis: f64, yield_strength: Option<f64>) -> Option<Setup> {
         let (a, b) = self.materials()?;
-        let r1 = self.diameter / 2.0;
-        let m1 = a.density * 4.0 / 3.0 * PI * r1.powi(3);
-        let (radius, mass) = if self.wall { (r1, m1) } else { (r1 / 2.0, m1 / 2.0) };
+        let radius = self.diameter / 2.0;
+        let bodies = if self.wall { Bodies::Wall { radius } } else { Bodies::Twins { radius } };
+        let two = TwoBodies::new(a, b, bodies);
         Some(Setup {
-            pair: Pair { modulus: combined_modulus(a, b), radius, mass, surface_energy: gamma },
+            pair: Pair { modulus: two.modulus, radius: two.radius, mass: two.mass, surface_energy: gamma },
             t_vis,
-            poisson_ratio: 0.5 * (a.poisson_ratio + b.poisson_ratio),
+            poisson_ratio: two.poisson_ratio,
             z0: 3e-10,
             crack: CrackLaw { k: 0.02, low_speed_fit: true },
             yield_strength,

@@ -14,7 +14,7 @@
 //! closed forms φ ∝ m^{-1/8}, const and m^{-1/5}.
 
 use super::aggregate::{
-    Aggregate, Monomer, Particle, Thresholds, TurbulenceModel, dust_scale_height, gas_compaction_filling,
+    Aggregate, Monomer, Particle, R_CRIT, Thresholds, TurbulenceModel, dust_scale_height, gas_compaction_filling,
     gravity_compaction_filling, radial_drift, relative_velocity, stopping_time,
 };
 use super::disk::GasDisk;
@@ -142,7 +142,7 @@ impl GrowthModel {
                 v_frag: f64::INFINITY,
                 v_eros: f64::INFINITY,
                 v_bounce: f64::INFINITY,
-                r_crit: 1e-2,
+                r_crit: R_CRIT,
             },
             turbulence: TurbulenceModel::Thesis,
             epsilon: 0.1,

@@ -51,6 +51,62 @@ pub fn combined_modulus(a: &Material, b: &Material) -> f64 {
     1.0 / ((1.0 - a.poisson_ratio.powi(2)) / a.youngs_modulus + (1.0 - b.poisson_ratio.powi(2)) / b.youngs_modulus)
 }
 
+/// The bodies of a head-on collision, by geometry. SI units.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Bodies {
+    /// Sphere 1 of radius `radius` on a flat wall (R₂ → ∞, m₂ → ∞).
+    Wall {
+        /// Radius of sphere 1, m.
+        radius: f64,
+    },
+    /// Two spheres of radii `r1` and `r2`.
+    Spheres {
+        /// Radius of sphere 1, m.
+        r1: f64,
+        /// Radius of sphere 2, m.
+        r2: f64,
+    },
+    /// Two identical spheres of radius `radius` (the sphere–sphere experiments).
+    Twins {
+        /// Radius of either sphere, m.
+        radius: f64,
+    },
+}
+
+/// The reduced properties of two bodies in contact: the one place the
+/// two-sphere set-up of ch. 2 is written.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TwoBodies {
+    /// Combined modulus E* (2.1), Pa.
+    pub modulus: f64,
+    /// Reduced radius R = R₁R₂/(R₁ + R₂), m.
+    pub radius: f64,
+    /// Reduced mass m* = m₁m₂/(m₁ + m₂), kg.
+    pub mass: f64,
+    /// Mean Poisson ratio of the two materials (for A = T_vis/ν², exact for like materials).
+    pub poisson_ratio: f64,
+}
+
+impl TwoBodies {
+    /// Sphere 1 of material `a` against body 2 of material `b`.
+    pub fn new(a: &Material, b: &Material, bodies: Bodies) -> TwoBodies {
+        let (radius, mass) = match bodies {
+            Bodies::Wall { radius } => (radius, super::sphere_mass(a.density, radius)),
+            Bodies::Spheres { r1, r2 } => {
+                let (m1, m2) = (super::sphere_mass(a.density, r1), super::sphere_mass(b.density, r2));
+                (1.0 / (1.0 / r1 + 1.0 / r2), m1 * m2 / (m1 + m2))
+            }
+            Bodies::Twins { radius } => (radius / 2.0, super::sphere_mass(a.density, radius) / 2.0),
+        };
+        TwoBodies {
+            modulus: combined_modulus(a, b),
+            radius,
+            mass,
+            poisson_ratio: 0.5 * (a.poisson_ratio + b.poisson_ratio),
+        }
+    }
+}
+
 /// Combined surface energy of a contact, γ = 2 (γ₁γ₂)^{1/2}, J/m² (twice γ_L for like materials).
 pub fn combined_surface_energy(a: &Material, b: &Material) -> f64 {
     2.0 * (a.surface_energy * b.surface_energy).sqrt()

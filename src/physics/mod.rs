@@ -10,6 +10,7 @@ pub mod contact;
 pub mod crack;
 pub mod debris;
 pub mod disk;
+pub mod equations;
 pub mod experiments;
 pub mod fit;
 pub mod growth;
@@ -37,6 +38,11 @@ pub enum PhysicsError {
     /// The integrator failed.
     #[error("integration failed: {0}")]
     Solver(#[from] crate::solver::SolverError),
+}
+
+/// Mass of a homogeneous sphere, m = (4/3)πρr³, kg (density in kg m⁻³, radius in m).
+pub fn sphere_mass(density: f64, radius: f64) -> f64 {
+    density * 4.0 / 3.0 * std::f64::consts::PI * radius.powi(3)
 }
 
 /// Returns `Ok(value)` if `value` is finite and strictly positive.

@@ -83,7 +83,63 @@ pub enum ControlKind<'a> {
     },
 }
 
-/// One documented parameter.
+/// The default value of a control, as written once in its declaration.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DefaultValue {
+    /// A real number, SI.
+    Number(f64),
+    /// A whole number.
+    Count(usize),
+    /// A switch.
+    Toggle(bool),
+    /// A material name or an option key.
+    Text(String),
+}
+
+impl From<f64> for DefaultValue {
+    fn from(v: f64) -> Self {
+        DefaultValue::Number(v)
+    }
+}
+
+impl From<usize> for DefaultValue {
+    fn from(v: usize) -> Self {
+        DefaultValue::Count(v)
+    }
+}
+
+impl From<bool> for DefaultValue {
+    fn from(v: bool) -> Self {
+        DefaultValue::Toggle(v)
+    }
+}
+
+impl From<&str> for DefaultValue {
+    fn from(v: &str) -> Self {
+        DefaultValue::Text(v.to_string())
+    }
+}
+
+impl From<String> for DefaultValue {
+    fn from(v: String) -> Self {
+        DefaultValue::Text(v)
+    }
+}
+
+/// One documented parameter, declared with a builder:
+///
+/// ```
+/// # use grainscope::scene::Control;
+/// let mut velocity = 8.0;
+/// let c = Control::number("velocity", "impact velocity v", &mut velocity)
+///     .unit("m s^-1")
+///     .shown("m/s", 1.0)
+///     .range(1e-3, 1e3)
+///     .log()
+///     .default(8.0)
+///     .doc("relative velocity at first contact");
+/// assert!(c.check().is_ok());
+/// ```
 #[derive(Debug)]
 pub struct Control<'a> {
     /// Key in presets and on the command line.
@@ -94,8 +150,10 @@ pub struct Control<'a> {
     pub unit: &'static str,
     /// SI unit of the stored value (empty if dimensionless).
     pub si_unit: &'static str,
-    /// Meaning, default and trade-offs.
+    /// Meaning and trade-offs.
     pub doc: &'static str,
+    /// The value of the scene's `Default` parameters.
+    pub default: Option<DefaultValue>,
     /// Changing it only restyles the output; nothing is recomputed.
     pub style_only: bool,
     /// The value.
@@ -103,53 +161,32 @@ pub struct Control<'a> {
 }
 
 impl<'a> Control<'a> {
-    /// A real-valued control.
-    #[allow(clippy::too_many_arguments)]
-    pub fn number(
-        key: &'static str,
-        label: &'static str,
-        value: &'a mut f64,
-        si_unit: &'static str,
-        (min, max): (f64, f64),
-        log: bool,
-        (unit, display_scale): (&'static str, f64),
-        doc: &'static str,
-    ) -> Self {
-        Control {
-            key,
-            label,
-            unit,
-            si_unit,
-            doc,
-            style_only: false,
-            kind: ControlKind::Number { value, min, max, log, display_scale },
-        }
+    /// A control of `kind` with no unit, documentation or default yet.
+    fn new(key: &'static str, label: &'static str, kind: ControlKind<'a>) -> Self {
+        Control { key, label, unit: "", si_unit: "", doc: "", default: None, style_only: false, kind }
+    }
+
+    /// A real-valued control (SI); set its unit, range and default with the
+    /// builder methods.
+    pub fn number(key: &'static str, label: &'static str, value: &'a mut f64) -> Self {
+        let kind =
+            ControlKind::Number { value, min: f64::NEG_INFINITY, max: f64::INFINITY, log: false, display_scale: 1.0 };
+        Control::new(key, label, kind)
     }
 
     /// A whole-number control.
-    pub fn count(
-        key: &'static str,
-        label: &'static str,
-        value: &'a mut usize,
-        (min, max): (usize, usize),
-        doc: &'static str,
-    ) -> Self {
-        Control::unitless(key, label, doc, ControlKind::Count { value, min, max })
-    }
-
-    /// A control without a unit.
-    fn unitless(key: &'static str, label: &'static str, doc: &'static str, kind: ControlKind<'a>) -> Self {
-        Control { key, label, unit: "", si_unit: "", doc, style_only: false, kind }
+    pub fn count(key: &'static str, label: &'static str, value: &'a mut usize) -> Self {
+        Control::new(key, label, ControlKind::Count { value, min: 0, max: usize::MAX })
     }
 
     /// A switch.
-    pub fn toggle(key: &'static str, label: &'static str, value: &'a mut bool, doc: &'static str) -> Self {
-        Control::unitless(key, label, doc, ControlKind::Toggle(value))
+    pub fn toggle(key: &'static str, label: &'static str, value: &'a mut bool) -> Self {
+        Control::new(key, label, ControlKind::Toggle(value))
     }
 
     /// A material picker.
-    pub fn material(key: &'static str, label: &'static str, value: &'a mut Material, doc: &'static str) -> Self {
-        Control::unitless(key, label, doc, ControlKind::Material(value))
+    pub fn material(key: &'static str, label: &'static str, value: &'a mut Material) -> Self {
+        Control::new(key, label, ControlKind::Material(value))
     }
 
     /// A choice among fixed options (stored by key).
@@ -158,15 +195,87 @@ impl<'a> Control<'a> {
         label: &'static str,
         value: &'a mut String,
         options: Vec<(&'static str, &'static str)>,
-        doc: &'static str,
     ) -> Self {
-        Control::unitless(key, label, doc, ControlKind::Choice { value, options })
+        Control::new(key, label, ControlKind::Choice { value, options })
+    }
+
+    /// The SI unit of the value, also shown in the window unless [`Control::shown`] says otherwise.
+    pub fn unit(mut self, si_unit: &'static str) -> Self {
+        self.si_unit = si_unit;
+        self.unit = si_unit;
+        self
+    }
+
+    /// Shows the value in `unit`, as `value × display_scale`.
+    pub fn shown(mut self, unit: &'static str, scale: f64) -> Self {
+        self.unit = unit;
+        if let ControlKind::Number { display_scale, .. } = &mut self.kind {
+            *display_scale = scale;
+        }
+        self
+    }
+
+    /// The valid range, SI (whole numbers for counts).
+    pub fn range(mut self, lo: f64, hi: f64) -> Self {
+        match &mut self.kind {
+            ControlKind::Number { min, max, .. } => (*min, *max) = (lo, hi),
+            ControlKind::Count { min, max, .. } => (*min, *max) = (lo as usize, hi as usize),
+            _ => {}
+        }
+        self
+    }
+
+    /// A logarithmic slider (the parameter spans decades).
+    pub fn log(mut self) -> Self {
+        if let ControlKind::Number { log, .. } = &mut self.kind {
+            *log = true;
+        }
+        self
+    }
+
+    /// The default value (that of the scene's `Default` parameters; a test checks they agree).
+    pub fn default(mut self, value: impl Into<DefaultValue>) -> Self {
+        self.default = Some(value.into());
+        self
+    }
+
+    /// Meaning and trade-offs.
+    pub fn doc(mut self, doc: &'static str) -> Self {
+        self.doc = doc;
+        self
     }
 
     /// Marks the control as styling only.
     pub fn style_only(mut self) -> Self {
         self.style_only = true;
         self
+    }
+
+    /// Whether the current value equals the declared default (false when none is declared).
+    pub fn is_default(&self) -> bool {
+        match (&self.kind, &self.default) {
+            (ControlKind::Number { value, .. }, Some(DefaultValue::Number(d))) => **value == *d,
+            (ControlKind::Count { value, .. }, Some(DefaultValue::Count(d))) => **value == *d,
+            (ControlKind::Toggle(v), Some(DefaultValue::Toggle(d))) => **v == *d,
+            (ControlKind::Material(m), Some(DefaultValue::Text(d))) => m.name == *d,
+            (ControlKind::Choice { value, .. }, Some(DefaultValue::Text(d))) => **value == *d,
+            _ => false,
+        }
+    }
+
+    /// The declared default as short text in display units.
+    pub fn default_text(&self) -> Option<String> {
+        let d = self.default.as_ref()?;
+        Some(match (d, &self.kind) {
+            (DefaultValue::Number(v), ControlKind::Number { display_scale, .. }) => {
+                let s = crate::figure::tick_label(v * display_scale);
+                if self.unit.is_empty() { s } else { format!("{s} {}", self.unit) }
+            }
+            (DefaultValue::Number(v), _) => v.to_string(),
+            (DefaultValue::Count(v), _) => v.to_string(),
+            (DefaultValue::Toggle(v), _) => v.to_string(),
+            (DefaultValue::Text(v), _) => v.to_string(),
+        })
     }
 
     /// Checks the value against the documented range.
@@ -297,6 +406,36 @@ impl<'a> Control<'a> {
             ControlKind::Material(_) => "material of Table 2.2".into(),
             ControlKind::Choice { options, .. } => options.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(" | "),
         };
-        format!("{}: {} [{}] — {}", self.key, self.label, range.trim(), self.doc)
+        let default = self.default_text().map(|d| format!("; default {d}")).unwrap_or_default();
+        format!("{}: {} [{}{default}] — {}", self.key, self.label, range.trim(), self.doc)
+    }
+}
+
+/// A parameter range sampled on a grid, such as `r_min … r_max` with `n`
+/// points: the one place that checks the lower end is below the upper end.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogRange {
+    /// Lower end.
+    pub min: f64,
+    /// Upper end.
+    pub max: f64,
+    /// Number of points (at least 2).
+    pub n: usize,
+}
+
+impl LogRange {
+    /// The range `min … max` of the parameters named `keys` (e.g. "r_min/r_max"),
+    /// refused unless `min < max`.
+    pub fn new(keys: &str, min: f64, max: f64, n: usize) -> Result<LogRange, ParamError> {
+        if min < max {
+            Ok(LogRange { min, max, n })
+        } else {
+            Err(ParamError::Inconsistent(format!("{keys}: the lower end must be below the upper end")))
+        }
+    }
+
+    /// The `n` values, evenly spaced in log space.
+    pub fn values(&self) -> Vec<f64> {
+        super::core::logspace(self.min, self.max, self.n)
     }
 }

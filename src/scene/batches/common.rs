@@ -1,0 +1,165 @@
+//! Parameters shared by the global dust-batch scenes (thesis ch. 5).
+
+use crate::scene::controls::Control;
+use crate::scene::disk::common::DiskParams;
+use crate::scene::core::{Progress, SceneError};
+use crate::physics::batches::{BatchConfig, BatchRun, run};
+use crate::physics::constants::{AU, YEAR};
+use crate::physics::growth::{GrowthModel, Porosity};
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// A batch-model run. SI units except where stated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct BatchParams {
+    /// Disk and monomers (default: the truncated power law, 0.01 M☉, R_c = 30 AU, γ = 1, Z₀ = 0.02).
+    pub disk: DiskParams,
+    /// "porous" or "compact" growth.
+    pub growth: String,
+    /// Let particles grow (off: the drift-only test of Fig. 5.1).
+    pub coagulation: bool,
+    /// Fragmentation/bouncing threshold, m s⁻¹ (default 10⁴: none; 5 for compact silicates).
+    pub v_frag: f64,
+    /// Erosion threshold, m s⁻¹ (default 10⁴: none).
+    pub v_eros: f64,
+    /// Innermost initial radius, AU (default 3).
+    pub r_in_au: f64,
+    /// Outermost initial radius, AU (default 200).
+    pub r_out_au: f64,
+    /// Number of batches (default 250).
+    pub batches: usize,
+    /// Duration, yr (default 10⁶).
+    pub duration_yr: f64,
+}
+
+impl Default for BatchParams {
+    fn default() -> Self {
+        BatchParams {
+            disk: DiskParams { profile: "power-law".into(), metallicity: 0.02, ..DiskParams::default() },
+            growth: "porous".into(),
+            coagulation: true,
+            v_frag: 1e4,
+            v_eros: 1e4,
+            r_in_au: 3.0,
+            r_out_au: 200.0,
+            batches: 250,
+            duration_yr: 1e6,
+        }
+    }
+}
+
+impl BatchParams {
+    /// The documented parameters.
+    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
+        let mut c = self.disk.controls(&d.disk);
+        c.push(Control::choice("growth", "growth", &mut self.growth, vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")]).default(d.growth.clone()).doc("porosity treatment"));
+        c.push(Control::toggle("coagulation", "coagulation", &mut self.coagulation).default(d.coagulation).doc("off: drift only (Fig. 5.1)"));
+        let v = ("m/s", 1.0);
+        c.push(Control::number("v_frag", "fragmentation/bouncing threshold", &mut self.v_frag).default(d.v_frag).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("same-size collisions above it stop growth (1e4: none)"));
+        c.push(Control::number("v_eros", "erosion threshold", &mut self.v_eros).default(d.v_eros).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("collisions with monomers above it stop growth (1e4: none)"));
+        c.push(Control::number("r_in_au", "innermost batch", &mut self.r_in_au).default(d.r_in_au).unit("AU").range(1.1, 100.0).log().doc("initial radius of the first batch"));
+        c.push(Control::number("r_out_au", "outermost batch", &mut self.r_out_au).default(d.r_out_au).unit("AU").range(2.0, 1000.0).log().doc("initial radius of the last batch"));
+        c.push(Control::count("batches", "batches", &mut self.batches).default(d.batches).range(10 as f64, 2000 as f64).doc("number of batches (10²–10³ in the thesis)"));
+        c.push(Control::number("duration_yr", "duration", &mut self.duration_yr).default(d.duration_yr).unit("yr").range(1e2, 1e7).log().doc("time followed"));
+        c
+    }
+
+    /// The run configuration.
+    pub fn config(&self) -> BatchConfig {
+        let porosity = if self.growth == "compact" { Porosity::Compact } else { Porosity::Full };
+        let mut model = GrowthModel::chapter4(porosity);
+        model.disk = self.disk.disk();
+        model.monomer = self.disk.monomer();
+        model.thresholds.v_frag = self.v_frag;
+        model.thresholds.v_bounce = self.v_frag;
+        model.thresholds.v_eros = self.v_eros;
+        model.dlnm = 0.2;
+        BatchConfig {
+            model,
+            r_in: self.r_in_au * AU,
+            r_out: self.r_out_au * AU,
+            batches: self.batches,
+            t_end: self.duration_yr * YEAR,
+            coagulation: self.coagulation,
+            syncs_per_decade: 160,
+            smoothing: 2,
+            frame_every: 4,
+        }
+    }
+
+    /// Runs the model with progress and cancellation.
+    pub fn run(&self, progress: &Progress) -> Result<BatchRun, SceneError> {
+        self.run_reporting(progress, &|f| progress.set(f))
+    }
+
+    /// Runs the model as one of `total` runs of a sweep: progress counts the
+    /// finished runs (in `done`), so parallel runs report one monotonic figure.
+    pub fn run_in_sweep(&self, progress: &Progress, done: &AtomicUsize, total: usize) -> Result<BatchRun, SceneError> {
+        let r = self.run_reporting(progress, &|_| {})?;
+        let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+        progress.set(finished as f64 / total.max(1) as f64);
+        Ok(r)
+    }
+
+    fn run_reporting(&self, progress: &Progress, report: &(dyn Fn(f64) + Sync)) -> Result<BatchRun, SceneError> {
+        let cfg = self.config();
+        let keep = |f: f64| {
+            report(f);
+            progress.cancelled()
+        };
+        match run(&cfg, &keep) {
+            Ok(r) => Ok(r),
+            Err(_) if progress.cancelled() => Err(SceneError::Cancelled),
+            Err(e) => Err(e.into()),
+        }
+    }
+}
+
+/// `n` log-spaced values from `lo` to `hi` (just `lo` when n ≤ 1).
+pub fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n <= 1 { vec![lo] } else { crate::scene::core::logspace(lo, hi.max(lo * 1.000001), n) }
+}
+
+/// Controls of a sweep over disk mass (M_sun) and metallicity, each given as
+/// (smallest, largest, count).
+pub fn sweep_controls<'a>(
+    mass: (&'a mut f64, &'a mut f64, &'a mut usize),
+    metallicity: (&'a mut f64, &'a mut f64, &'a mut usize),
+    defaults: [(f64, f64, usize); 2],
+) -> Vec<Control<'a>> {
+    let [dm, dz] = defaults;
+    let msun = ("M_sun", 1.0);
+    let unit = ("", 1.0);
+    vec![
+        Control::number("mass_min", "smallest disk mass", mass.0).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.0).doc("first disk mass"),
+        Control::number("mass_max", "largest disk mass", mass.1).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.1).doc("last disk mass"),
+        Control::count("n_mass", "disk masses", mass.2).range(1 as f64, 12 as f64).default(dm.2).doc("log-spaced"),
+        Control::number("z_min", "smallest Z₀", metallicity.0).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.0).doc("first metallicity"),
+        Control::number("z_max", "largest Z₀", metallicity.1).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.1).doc("last metallicity"),
+        Control::count("n_z", "metallicities", metallicity.2).range(1 as f64, 6 as f64).default(dz.2).doc("log-spaced"),
+    ]
+}
+
+/// The last batch run, shared by the batch scenes: a change of a display
+/// parameter (colouring, thinning) or a switch between them reuses it.
+#[derive(Debug, Default)]
+pub struct RunCache {
+    last: Option<(BatchParams, Arc<BatchRun>)>,
+}
+
+impl RunCache {
+    /// The run for `p`, computed only if `p` differs from the cached one.
+    pub fn get(&mut self, p: &BatchParams, progress: &Progress) -> Result<Arc<BatchRun>, SceneError> {
+        if let Some((key, run)) = &self.last
+            && key == p
+        {
+            progress.set(1.0);
+            return Ok(Arc::clone(run));
+        }
+        let run = Arc::new(p.run(progress)?);
+        self.last = Some((p.clone(), Arc::clone(&run)));
+        Ok(run)
+    }
+}

@@ -1,0 +1,146 @@
+//! Scene "Planetesimal yield" (thesis Figs. 5.7, 5.8): planetesimal mass and
+//! converted fraction against time for a grid of disks.
+
+use super::common::{BatchParams, log_grid, sweep_controls};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::constants::YEAR;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct PlanetesimalYield;
+
+impl Scene for PlanetesimalYield {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "planetesimal-yield",
+        title: "Planetesimal yield",
+        source: "Sect. 5.3.2; Figs. 5.7, 5.8",
+        explanation: "Total planetesimal mass and the fraction of the dust converted, against time, for \
+disks of several masses and metallicities (porous perfect sticking unless set otherwise). The runs \
+are independent and go in parallel.",
+        heavy: true,
+    };
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress)
+    }
+}
+
+/// Parameters of the yield scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The base run (its disk mass and metallicity are swept).
+    pub run: BatchParams,
+    /// Smallest disk mass, M☉.
+    pub mass_min: f64,
+    /// Largest disk mass, M☉.
+    pub mass_max: f64,
+    /// Disk masses (log-spaced).
+    pub n_mass: usize,
+    /// Smallest metallicity Z₀.
+    pub z_min: f64,
+    /// Largest metallicity.
+    pub z_max: f64,
+    /// Metallicities (log-spaced).
+    pub n_z: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            run: BatchParams { batches: 150, ..BatchParams::default() },
+            mass_min: 0.01,
+            mass_max: 0.1,
+            n_mass: 3,
+            z_min: 0.01,
+            z_max: 0.02,
+            n_z: 2,
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        // The sweep sets these for every disk.
+        c.retain(|c| !["profile", "disk_mass", "metallicity"].contains(&c.key));
+        c.extend(sweep_controls(
+            (&mut self.mass_min, &mut self.mass_max, &mut self.n_mass),
+            (&mut self.z_min, &mut self.z_max, &mut self.n_z),
+            [(d.mass_min, d.mass_max, d.n_mass), (d.z_min, d.z_max, d.n_z)],
+        ));
+        c
+    }
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    let combos: Vec<(f64, f64)> = log_grid(p.mass_min, p.mass_max, p.n_mass)
+        .into_iter()
+        .flat_map(|m| log_grid(p.z_min, p.z_max, p.n_z).into_iter().map(move |z| (m, z)))
+        .collect();
+    if combos.is_empty() {
+        return Err(crate::scene::controls::ParamError::Inconsistent("the sweep is empty".into()).into());
+    }
+    let done = std::sync::atomic::AtomicUsize::new(0);
+    let total = combos.len();
+    let runs: Vec<_> = combos
+        .par_iter()
+        .map(|&(m, z)| {
+            let mut b = p.run.clone();
+            b.disk.profile = "power-law".into();
+            b.disk.disk_mass = m;
+            b.disk.metallicity = z;
+            b.run_in_sweep(progress, &done, total).map(|r| (m, z, r))
+        })
+        .collect::<Result<_, _>>()?;
+    let mut fig_m = Figure::new(
+        "planetesimal-mass",
+        "Planetesimal mass (Fig. 5.7)",
+        Axis::log("time", "yr"),
+        Axis::log("planetesimal mass", "M_earth"),
+    );
+    let mut fig_f = Figure::new(
+        "converted-fraction",
+        "Converted fraction (Fig. 5.8)",
+        Axis::log("time", "yr"),
+        Axis::linear("fraction of the dust in planetesimals", ""),
+    );
+    let mut scalars = Vec::new();
+    let mut min_fraction: f64 = 1.0;
+    for (k, (m, z, run)) in runs.iter().enumerate() {
+        let name = format!("M_D = {} M_sun, Z₀ = {}", crate::figure::tick_label(*m), crate::figure::tick_label(*z));
+        let earth = 5.972e24;
+        fig_m = fig_m.with(Series::new(
+            name.clone(),
+            run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / earth]).collect(),
+            Style::Line,
+            k,
+        ));
+        fig_f = fig_f.with(Series::new(
+            name,
+            run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / run.total_mass]).collect(),
+            Style::Line,
+            k,
+        ));
+        min_fraction = min_fraction.min(run.converted_fraction());
+    }
+    scalars.push(Scalar {
+        key: "min_converted",
+        label: "smallest converted fraction at the end",
+        value: min_fraction,
+        unit: "",
+    });
+    scalars.push(Scalar { key: "runs", label: "disks run", value: runs.len() as f64, unit: "" });
+    Ok(SceneOutput { scalars, figures: vec![fig_m, fig_f], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+}

@@ -1,0 +1,132 @@
+//! Scene "Surface density" (thesis Figs. 5.1, 5.3 top, 5.5 top, 5.11): gas,
+//! dust and planetesimal surface densities of the batch model at chosen times.
+
+use super::common::{BatchParams, RunCache};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
+use crate::physics::constants::{AU, YEAR};
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct SurfaceDensity;
+
+impl Scene for SurfaceDensity {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "surface-density",
+        title: "Surface density",
+        source: "Sects. 5.2.2–5.3; Eqs. 5.1, 5.6–5.8; Figs. 5.1, 5.3, 5.5, 5.11",
+        explanation: "Dust starts as monomers in batches between the inner and outer radius with Σ_d = Z₀Σ_g \
+    (5.1). Each batch keeps its total mass; its particles grow by (5.10) and drift by (5.8). The dust \
+surface density follows from the batch positions: Σ_d = (1/2πR) dM_C/dR (5.6)–(5.7), computed over each \
+batch and two neighbours on either side so that a few batches in a depleted region do not make \
+spikes. Batches whose particles reach 10¹⁶ g become planetesimals (Σ_p); batches inside 1 AU are no \
+longer followed. Without coagulation (Fig. 5.1) the dust drifts and piles up inside; compact silicates \
+with v_frag = 5 m/s empty the disk within 10⁶ yr (Fig. 5.3); porous ices form planetesimals in the \
+inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
+        heavy: true,
+    };
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress, ctx.caches.get())
+    }
+}
+
+/// Parameters of the surface-density scene.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The run.
+    pub run: BatchParams,
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        self.run.controls(&d.run)
+    }
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let run = cache.get(&p.run, progress)?;
+    let disk = p.run.config().model.disk;
+    let rs = logspace(1.0, p.run.r_out_au * 1.5, 120);
+    let mut fig = Figure::new(
+        "surface-density",
+        "Surface densities",
+        Axis::log("radius R", "AU"),
+        Axis::log("surface density", "g/cm²"),
+    )
+    .with(Series::new(
+        "gas Σ_g",
+        rs.iter().map(|&r| [r, disk.surface_density(r * AU) * 0.1]).collect(),
+        Style::Dashed,
+        6,
+    ))
+    .with(Series::new(
+        "initial dust Z₀Σ_g",
+        rs.iter().map(|&r| [r, disk.dust_surface_density(r * AU) * 0.1]).collect(),
+        Style::Dashed,
+        7,
+    ));
+    // Frames at roughly each decade of time.
+    let mut shown = Vec::new();
+    for (k, decade) in [1e3, 1e4, 1e5, 1e6, 1e7].iter().enumerate() {
+        let Some(f) = run.frames.iter().rfind(|f| f.t <= decade * YEAR * 1.0001) else { continue };
+        if shown.contains(&f.t) {
+            continue;
+        }
+        shown.push(f.t);
+        let dust: Vec<(f64, f64)> =
+            f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
+        let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
+        let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
+        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::tick_label(f.t / YEAR)), pts, Style::Line, k));
+    }
+    // Planetesimals where they formed.
+    let formed: Vec<(f64, f64)> = run
+        .fates
+        .iter()
+        .zip(&run.masses)
+        .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
+        .collect();
+    if !formed.is_empty() {
+        let sp = surface_density(&formed, 2, MIN_HALF_WIDTH);
+        let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
+        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));
+    }
+    let last = run.frames.last().map(|f| f.budget).unwrap_or([0.0; 3]);
+    let scalars = vec![
+        Scalar { key: "dust_fraction", label: "dust left at the end", value: last[0] / run.total_mass, unit: "" },
+        Scalar {
+            key: "planetesimal_fraction",
+            label: "converted into planetesimals",
+            value: last[1] / run.total_mass,
+            unit: "",
+        },
+        Scalar {
+            key: "lost_fraction",
+            label: "drifted inside the inner edge",
+            value: last[2] / run.total_mass,
+            unit: "",
+        },
+        Scalar {
+            key: "outermost_planetesimals",
+            label: "outermost planetesimal formation",
+            value: run.outermost_planetesimals() / AU,
+            unit: "AU",
+        },
+        Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
+    ];
+    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+}

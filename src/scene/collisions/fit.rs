@@ -1,0 +1,348 @@
+//! Scene "Fit measurements" (thesis Sect. 2.4.1): fit γ, T_vis and Y of the
+//! restitution model to measured coefficients of restitution.
+
+use super::common::CollisionParams;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use super::common::describe;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Heatmap, Series, Style};
+use crate::physics::collision::{Options, Setup};
+use crate::physics::experiments::experiment;
+use crate::physics::fit::{Fit as FitResult, FitError, Measurement, Search, fit, model_restitution};
+use crate::physics::material::Material;
+use rand::{Rng, SeedableRng};
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct Fit;
+
+impl Scene for Fit {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "fit",
+        title: "Fit measurements",
+        source: "Sect. 2.4.1, Eq. 2.31",
+        explanation: "Fits the surface energy γ, the relaxation time T_vis and the yield strength Y to \
+measured coefficients of restitution, with E, ν, ρ and the radii fixed by the chosen materials. \
+χ² = (1/N) Σ [e_exp(v_n) − e(v_n)]² (2.31) is computed on a logarithmic grid (in parallel); the \
+uncertainty of each parameter is the range over which χ² stays below twice its minimum, and the \
+best grid point is refined with a Nelder–Mead search. A range that reaches the edge of the grid is a \
+one-sided limit (e.g. no plastic yield in the measured range gives Y > …). Any parameter can be held \
+fixed. Import measurements from CSV (columns 'velocity [m/s]', 'restitution', optional 'uncertainty') \
+with Import data… or by dropping the file on the window; without data the scene fits a synthetic \
+example drawn from the Wall et al. mica fit with noise 0.01.",
+        heavy: true,
+    };
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress)
+    }
+
+    fn measurements(p: &mut Params) -> Option<&mut Vec<Measurement>> {
+        Some(&mut p.data)
+    }
+}
+
+/// Parameters of the fit scene. SI units.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// Measurements; empty means the synthetic example.
+    pub data: Vec<Measurement>,
+    /// Projectile material.
+    pub projectile: Material,
+    /// Target material.
+    pub target: Material,
+    /// Sphere on a flat target.
+    pub wall: bool,
+    /// Projectile radius, m.
+    pub radius_1: f64,
+    /// Target sphere radius, m (unused for a wall).
+    pub radius_2: f64,
+    /// γ search: smallest, largest (J m⁻²), points, held fixed at `gamma`.
+    pub gamma_min: f64,
+    /// Largest γ, J m⁻².
+    pub gamma_max: f64,
+    /// Grid points in γ.
+    pub n_gamma: usize,
+    /// Hold γ fixed.
+    pub fix_gamma: bool,
+    /// Fixed γ, J m⁻².
+    pub gamma: f64,
+    /// Smallest T_vis, s.
+    pub t_vis_min: f64,
+    /// Largest T_vis, s.
+    pub t_vis_max: f64,
+    /// Grid points in T_vis.
+    pub n_t_vis: usize,
+    /// Hold T_vis fixed.
+    pub fix_t_vis: bool,
+    /// Fixed T_vis, s.
+    pub t_vis: f64,
+    /// Smallest Y, Pa.
+    pub y_min: f64,
+    /// Largest Y, Pa.
+    pub y_max: f64,
+    /// Grid points in Y.
+    pub n_y: usize,
+    /// Hold Y fixed.
+    pub fix_y: bool,
+    /// Fixed Y, Pa.
+    pub yield_strength: f64,
+    /// Relative tolerance of the integrator (default 1e-4: fits need many collisions).
+    pub rtol: f64,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        let af = Material::named("AF").cloned().unwrap_or_else(Material::water_ice);
+        let mica = Material::named("mica").cloned().unwrap_or_else(Material::water_ice);
+        Params {
+            data: Vec::new(),
+            projectile: af,
+            target: mica,
+            wall: true,
+            radius_1: 2.45e-6,
+            radius_2: 2.45e-6,
+            gamma_min: 0.02,
+            gamma_max: 1.0,
+            n_gamma: 16,
+            fix_gamma: false,
+            gamma: 0.13,
+            t_vis_min: 1e-12,
+            t_vis_max: 1e-9,
+            n_t_vis: 16,
+            fix_t_vis: false,
+            t_vis: 1e-10,
+            y_min: 3e7,
+            y_max: 3e10,
+            n_y: 16,
+            fix_y: false,
+            yield_strength: 2e8,
+            rtol: 1e-4,
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let um = ("µm", 1e6);
+        let j = ("J/m²", 1.0);
+        let s = ("s", 1.0);
+        let mpa = ("MPa", 1e-6);
+        vec![
+            Control::material("projectile", "material 1", &mut self.projectile).default(d.projectile.name.clone()).doc("projectile material"),
+            Control::material("target", "material 2", &mut self.target).default(d.target.name.clone()).doc("target material"),
+            Control::toggle("wall", "sphere on wall", &mut self.wall).default(d.wall).doc("projectile hits a flat target"),
+            Control::number("radius_1", "radius 1", &mut self.radius_1).default(d.radius_1).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("projectile radius"),
+            Control::number("radius_2", "radius 2", &mut self.radius_2).default(d.radius_2).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("target radius (spheres)"),
+            Control::number("gamma_min", "γ from", &mut self.gamma_min).default(d.gamma_min).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("smallest γ of the grid"),
+            Control::number("gamma_max", "γ to", &mut self.gamma_max).default(d.gamma_max).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("largest γ of the grid"),
+            Control::count("n_gamma", "γ points", &mut self.n_gamma).default(d.n_gamma).range(2 as f64, 100 as f64).doc("grid points in γ"),
+            Control::toggle("fix_gamma", "hold γ fixed", &mut self.fix_gamma).default(d.fix_gamma).doc("do not fit γ"),
+            Control::number("gamma", "fixed γ", &mut self.gamma).default(d.gamma).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("γ when held fixed"),
+            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("smallest T_vis of the grid"),
+            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("largest T_vis of the grid"),
+            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis).default(d.n_t_vis).range(2 as f64, 100 as f64).doc("grid points in T_vis"),
+            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis).default(d.fix_t_vis).doc("do not fit T_vis"),
+            Control::number("t_vis", "fixed T_vis", &mut self.t_vis).default(d.t_vis).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("T_vis when held fixed"),
+            Control::number("y_min", "Y from", &mut self.y_min).default(d.y_min).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("smallest Y of the grid"),
+            Control::number("y_max", "Y to", &mut self.y_max).default(d.y_max).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("largest Y of the grid"),
+            Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2 as f64, 100 as f64).doc("grid points in Y"),
+            Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
+            Control::number("yield_strength", "fixed Y", &mut self.yield_strength).default(d.yield_strength).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("Y when held fixed"),
+            Control::number("rtol", "solver tolerance", &mut self.rtol).default(d.rtol).range(1e-10, 1e-3).log().doc("integrator tolerance (default 1e-4)"),
+        ]
+    }
+
+    fn searches(&self) -> Result<[Search; 3], ParamError> {
+        let check = |name: &str, lo: f64, hi: f64| LogRange::new(name, lo, hi, 2).map(|_| ());
+        check("gamma_min/gamma_max", self.gamma_min, self.gamma_max)?;
+        check("t_vis_min/t_vis_max", self.t_vis_min, self.t_vis_max)?;
+        check("y_min/y_max", self.y_min, self.y_max)?;
+        Ok([
+            Search {
+                min: self.gamma_min,
+                max: self.gamma_max,
+                points: self.n_gamma,
+                fixed: self.fix_gamma.then_some(self.gamma),
+            },
+            Search {
+                min: self.t_vis_min,
+                max: self.t_vis_max,
+                points: self.n_t_vis,
+                fixed: self.fix_t_vis.then_some(self.t_vis),
+            },
+            Search {
+                min: self.y_min,
+                max: self.y_max,
+                points: self.n_y,
+                fixed: self.fix_y.then_some(self.yield_strength),
+            },
+        ])
+    }
+
+    /// The model for given γ, T_vis and Y with this scene's materials and radii.
+    pub fn setup(&self, gamma: f64, t_vis: f64, yield_strength: Option<f64>) -> Setup {
+        CollisionParams {
+            projectile: self.projectile.clone(),
+            target: self.target.clone(),
+            wall: self.wall,
+            radius_1: self.radius_1,
+            radius_2: self.radius_2,
+            surface_energy: gamma,
+            t_vis,
+            plasticity: yield_strength.is_some(),
+            yield_strength: yield_strength.unwrap_or(1e8),
+            ..CollisionParams::default()
+        }
+        .setup()
+    }
+}
+
+/// Synthetic measurements: the Wall et al. mica best fit at 20 velocities with
+/// Gaussian noise of standard deviation `noise` (fixed seed).
+pub fn example_data(noise: f64) -> Result<Vec<Measurement>, SceneError> {
+    let e = experiment("wall-mica").ok_or_else(|| ParamError::Inconsistent("example experiment missing".into()))?;
+    let setup = e.best_fit_setup().ok_or_else(|| ParamError::Inconsistent("example materials missing".into()))?;
+    let velocities = logspace(e.v_min, e.v_max, 20);
+    let y = setup.yield_strength.unwrap_or(f64::INFINITY);
+    let exact = model_restitution(
+        &|g, t, y| {
+            Some(Setup {
+                pair: crate::physics::contact::Pair { surface_energy: g, ..setup.pair },
+                t_vis: t,
+                yield_strength: y,
+                ..setup
+            })
+        },
+        [setup.pair.surface_energy, setup.t_vis, y],
+        &velocities,
+        &Options { rtol: 1e-7, ..Options::default() },
+    )?;
+    let mut rng = rand::rngs::StdRng::seed_from_u64(2015);
+    Ok(velocities
+        .iter()
+        .zip(exact)
+        .map(|(&v, e)| {
+            // Box–Muller.
+            let (u1, u2): (f64, f64) = (rng.random::<f64>().max(1e-300), rng.random());
+            let z = (-2.0 * u1.ln()).sqrt() * (2.0 * std::f64::consts::PI * u2).cos();
+            Measurement { velocity: v, restitution: (e + noise * z).clamp(0.0, 1.2), uncertainty: Some(noise) }
+        })
+        .collect())
+}
+
+/// Runs the fit of the scene (also used by the command line).
+pub fn run_fit(p: &Params, data: &[Measurement], progress: &Progress) -> Result<FitResult, SceneError> {
+    let searches = p.searches()?;
+    let opts = Options { rtol: p.rtol, ..Options::default() };
+    let setup_for = |g: f64, t: f64, y: Option<f64>| Some(p.setup(g, t, y));
+    let keep_going = |f: f64| {
+        progress.set(f);
+        !progress.cancelled()
+    };
+    fit(&setup_for, data, searches, &opts, &keep_going).map_err(|e| match e {
+        FitError::Cancelled => SceneError::Cancelled,
+        FitError::Physics(p) => SceneError::Physics(p),
+        other => SceneError::Param(ParamError::Inconsistent(other.to_string())),
+    })
+}
+
+fn slice(f: &FitResult, a: usize, b: usize, fixed: usize) -> Heatmap {
+    let idx = |p: usize| f.grids[p].iter().position(|&v| v == f.grid_best[p]).unwrap_or(0);
+    let k = idx(fixed);
+    let (na, nb) = (f.grids[a].len(), f.grids[b].len());
+    let mut values = Vec::with_capacity(na * nb);
+    for jb in 0..nb {
+        for ia in 0..na {
+            let mut ix = [0; 3];
+            ix[a] = ia;
+            ix[b] = jb;
+            ix[fixed] = k;
+            values.push(f.chi2_at(ix[0], ix[1], ix[2]).max(1e-300).log10());
+        }
+    }
+    Heatmap { x: f.grids[a].clone(), y: f.grids[b].clone(), values, label: "log10 χ²".into() }
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    let synthetic = p.data.is_empty();
+    let data = if synthetic { example_data(0.01)? } else { p.data.clone() };
+    let result = run_fit(p, &data, progress)?;
+    let [g, t, y] = result.best;
+    let opts = Options { rtol: p.rtol, ..Options::default() };
+    let (v_lo, v_hi) = data.iter().fold((f64::INFINITY, 0.0f64), |(a, b), d| (a.min(d.velocity), b.max(d.velocity)));
+    let vs = logspace(v_lo * 0.8, v_hi * 1.25, 60);
+    let setup_for = |g: f64, t: f64, y: Option<f64>| Some(p.setup(g, t, y));
+    let best_curve = model_restitution(&setup_for, result.best, &vs, &opts)?;
+    let grid_curve = model_restitution(&setup_for, result.grid_best, &vs, &opts)?;
+
+    let mut fig = Figure::new(
+        "fit",
+        "Fit to the measurements",
+        Axis::log("impact velocity v", "m/s"),
+        Axis::linear("coefficient of restitution", ""),
+    )
+    .with(Series::new("measured", data.iter().map(|d| [d.velocity, d.restitution]).collect(), Style::Points, 1))
+    .with(Series::new("best fit", vs.iter().zip(&best_curve).map(|(&v, &e)| [v, e]).collect(), Style::Line, 0))
+    .with(Series::new(
+        "best grid point",
+        vs.iter().zip(&grid_curve).map(|(&v, &e)| [v, e]).collect(),
+        Style::Dashed,
+        6,
+    ));
+    for d in &data {
+        if let Some(s) = d.uncertainty {
+            fig.series.push(Series::new(
+                "",
+                vec![[d.velocity, d.restitution - s], [d.velocity, d.restitution + s]],
+                Style::Line,
+                1,
+            ));
+        }
+    }
+    let names = ["surface energy γ", "relaxation time T_vis", "yield strength Y"];
+    let units = ["J/m²", "s", "Pa"];
+    let axis = |i: usize| Axis::log(names[i], units[i]);
+    let mut figures = vec![fig];
+    for (a, b, c, id) in [(0, 1, 2, "chi2-gamma-tvis"), (0, 2, 1, "chi2-gamma-y"), (1, 2, 0, "chi2-tvis-y")] {
+        if result.grids[a].len() > 1 && result.grids[b].len() > 1 {
+            let mut f = Figure::new(id, &format!("χ² over {} and {}", names[a], names[b]), axis(a), axis(b))
+                .with(Series::new("best fit", vec![[result.best[a], result.best[b]]], Style::Marker, 0));
+            f.heatmap = Some(slice(&result, a, b, c));
+            figures.push(f);
+        }
+    }
+    let range = |b: &crate::physics::experiments::Bounded| b.range();
+    let scalars = vec![
+        Scalar { key: "gamma", label: "best γ", value: g, unit: "J m^-2" },
+        Scalar { key: "t_vis", label: "best T_vis", value: t, unit: "s" },
+        Scalar { key: "yield_strength", label: "best Y", value: y, unit: "Pa" },
+        Scalar { key: "chi2", label: "χ² (2.31) of the best fit", value: result.chi2_min, unit: "" },
+        Scalar { key: "gamma_low", label: "γ range, low end", value: range(&result.ranges[0]).0, unit: "J m^-2" },
+        Scalar { key: "gamma_high", label: "γ range, high end", value: range(&result.ranges[0]).1, unit: "J m^-2" },
+        Scalar { key: "t_vis_low", label: "T_vis range, low end", value: range(&result.ranges[1]).0, unit: "s" },
+        Scalar { key: "t_vis_high", label: "T_vis range, high end", value: range(&result.ranges[1]).1, unit: "s" },
+        Scalar { key: "y_low", label: "Y range, low end", value: range(&result.ranges[2]).0, unit: "Pa" },
+        Scalar { key: "y_high", label: "Y range, high end", value: range(&result.ranges[2]).1, unit: "Pa" },
+        Scalar { key: "collisions", label: "collisions integrated", value: result.collisions as f64, unit: "" },
+    ];
+    let mut notes = vec![format!(
+        "γ = {}, T_vis = {}, Y = {} (range where χ² < 2 χ²_min).",
+        describe(&result.ranges[0], "J/m²", 1.0),
+        describe(&result.ranges[1], "s", 1.0),
+        describe(&result.ranges[2], "MPa", 1e-6)
+    )];
+    if synthetic {
+        notes.push("No data imported: fitting a synthetic example (Wall et al. mica best fit, noise 0.01).".into());
+    }
+    Ok(SceneOutput { scalars, figures, notes, extra: crate::scene::core::Extra::None })
+}

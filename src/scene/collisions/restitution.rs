@@ -1,0 +1,375 @@
+//! Scene "Restitution" (thesis Figs. 2.4, 2.5): the coefficient of
+//! restitution against velocity and against reduced radius, and the sticking
+//! velocity against radius for several relaxation times.
+
+use super::common::CollisionParams;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::collision::{restitution, sticking_velocity};
+use crate::physics::contact::e_independent;
+use crate::physics::plasticity;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// The scene (see [`Scene`]).
+pub struct Restitution;
+
+impl Scene for Restitution {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "restitution",
+        title: "Restitution",
+        source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
+        explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
+compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
+v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
+e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
+Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
+combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is found by bisection \
+on the outcome of the full model; viscosity at the crack raises it far above v_c for small grains.",
+        heavy: true,
+    };
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress, ctx.caches.get())
+    }
+
+    fn material_changed(p: &mut Params) {
+        p.collision.material_changed();
+    }
+}
+
+/// Parameters of the restitution scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The collision; its velocity is the fixed velocity of e(R).
+    pub collision: CollisionParams,
+    /// Lowest velocity of e(v), m/s (default 0.5).
+    pub v_min: f64,
+    /// Highest velocity of e(v), m/s (default 100).
+    pub v_max: f64,
+    /// Number of velocities of e(v) (default 200).
+    pub n_velocities: usize,
+    /// Smallest reduced radius of e(R) and v_s(R), m (default 0.1 µm).
+    pub r_min: f64,
+    /// Largest reduced radius of e(R) and v_s(R), m (default 100 µm).
+    pub r_max: f64,
+    /// Number of radii (default 16).
+    pub n_radii: usize,
+    /// Smallest T_vis of the v_s(R) family, s (default 1e-13).
+    pub t_vis_min: f64,
+    /// Largest T_vis of the v_s(R) family, s (default 1e-10).
+    pub t_vis_max: f64,
+    /// Number of curves in the v_s(R) family, log-spaced in T_vis (default 4).
+    pub n_t_vis: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            collision: CollisionParams::default(),
+            v_min: 0.5,
+            v_max: 100.0,
+            n_velocities: 200,
+            r_min: 1e-7,
+            r_max: 1e-4,
+            n_radii: 16,
+            t_vis_min: 1e-13,
+            t_vis_max: 1e-10,
+            n_t_vis: 4,
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.collision.controls(&d.collision);
+        let v = ("m/s", 1.0);
+        c.push(Control::number("v_min", "lowest velocity", &mut self.v_min).default(d.v_min).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("start of e(v)"));
+        c.push(Control::number("v_max", "highest velocity", &mut self.v_max).default(d.v_max).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("end of e(v)"));
+        c.push(Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(2 as f64, 2000 as f64).doc("points of e(v)"));
+        let um = ("µm", 1e6);
+        c.push(Control::number("r_min", "smallest reduced radius", &mut self.r_min).default(d.r_min).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("start of e(R), v_s(R)"));
+        c.push(Control::number("r_max", "largest reduced radius", &mut self.r_max).default(d.r_max).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("end of e(R), v_s(R)"));
+        c.push(Control::count("n_radii", "radii", &mut self.n_radii).default(d.n_radii).range(2 as f64, 200 as f64).doc("points of e(R) and v_s(R)"));
+        let s = ("s", 1.0);
+        c.push(Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("first v_s(R) curve"));
+        c.push(Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("last v_s(R) curve"));
+        c.push(Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis).default(d.n_t_vis).range(1 as f64, 8 as f64).doc("curves of v_s(R)"));
+        c
+    }
+
+    fn check_ranges(&self) -> Result<(), ParamError> {
+        LogRange::new("v_min/v_max", self.v_min, self.v_max, 2)?;
+        LogRange::new("r_min/r_max", self.r_min, self.r_max, 2)?;
+        // One T_vis curve is allowed: equal ends.
+        if self.t_vis_min != self.t_vis_max {
+            LogRange::new("t_vis_min/t_vis_max", self.t_vis_min, self.t_vis_max, 2)?;
+        }
+        Ok(())
+    }
+
+    /// The collision with equal spheres of reduced radius `r` (or a sphere of
+    /// radius `r` on a wall).
+    fn at_radius(&self, r: f64) -> CollisionParams {
+        let mut c = self.collision.clone();
+        if c.wall {
+            c.radius_1 = r;
+        } else {
+            c.radius_1 = 2.0 * r;
+            c.radius_2 = 2.0 * r;
+        }
+        c
+    }
+}
+
+/// Results of the three panels, kept so that a change of one parameter
+/// recomputes only the panels it touches.
+#[derive(Debug, Default, Clone)]
+pub struct Cache {
+    velocity: Option<(RangeKey, Panel)>,
+    radius: Option<(RangeKey, Panel)>,
+    sticking: Option<(RangeKey, (f64, f64, usize), Panel)>,
+}
+
+/// The inputs of a panel: collision parameters and a (low, high, count) range.
+type RangeKey = (CollisionParams, f64, f64, usize);
+
+#[derive(Debug, Clone)]
+struct Panel {
+    figure: Figure,
+    scalars: Vec<Scalar>,
+    notes: Vec<String>,
+}
+
+/// The collision parameters with the velocity cleared (for cache keys of
+/// panels that do not depend on it).
+fn without_velocity(c: &CollisionParams) -> CollisionParams {
+    CollisionParams { velocity: 0.0, ..c.clone() }
+}
+
+/// Runs `f` over `items` in parallel with progress and cancellation.
+fn par_map<T: Sync, R: Send>(
+    items: &[T],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+    f: impl Fn(&T) -> Result<R, SceneError> + Sync + Send,
+) -> Result<Vec<R>, SceneError> {
+    items
+        .par_iter()
+        .map(|x| {
+            progress.check()?;
+            let r = f(x)?;
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / total as f64);
+            Ok(r)
+        })
+        .collect()
+}
+
+/// Computes the scene, reusing panels of `cache` whose inputs did not change.
+pub fn compute(p: &Params, progress: &Progress, cache: &mut Cache) -> Result<SceneOutput, SceneError> {
+    p.check_ranges()?;
+    let key_c = without_velocity(&p.collision);
+    let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
+    let radii = logspace(p.r_min, p.r_max, p.n_radii);
+    let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
+        .into_iter()
+        .take(p.n_t_vis)
+        .collect();
+    let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
+    let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
+    let key_s: RangeKey = (key_c, p.r_min, p.r_max, p.n_radii);
+    let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
+    let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
+    let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
+    let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
+    // Rough work units: a bisection costs ~20 collisions.
+    let total = usize::from(need_v) * (velocities.len() + 20)
+        + usize::from(need_r) * radii.len()
+        + usize::from(need_s) * radii.len() * t_vis.len() * 20;
+    let done = AtomicUsize::new(0);
+    let total = total.max(1);
+
+    if need_v {
+        let panel = velocity_panel(p, &velocities, progress, &done, total)?;
+        cache.velocity = Some((key_v, panel));
+    }
+    if need_r {
+        let panel = radius_panel(p, &radii, progress, &done, total)?;
+        cache.radius = Some((key_r, panel));
+    }
+    if need_s {
+        let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
+        cache.sticking = Some((key_s, family, panel));
+    }
+    let mut out = SceneOutput::default();
+    let panels = [
+        cache.velocity.as_ref().map(|x| &x.1),
+        cache.radius.as_ref().map(|x| &x.1),
+        cache.sticking.as_ref().map(|x| &x.2),
+    ];
+    for panel in panels.into_iter().flatten() {
+        out.figures.push(panel.figure.clone());
+        out.scalars.extend(panel.scalars.iter().cloned());
+        out.notes.extend(panel.notes.iter().cloned());
+    }
+    if p.collision.plasticity {
+        out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+    }
+    Ok(out)
+}
+
+fn velocity_panel(
+    p: &Params,
+    velocities: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let setup = p.collision.setup();
+    let opts = p.collision.options();
+    // The bisection for v_s is sequential: run it beside the velocity sweep.
+    let (results, v_s) = rayon::join(
+        || par_map(velocities, progress, done, total, |&v| Ok(restitution(&setup, v, &opts)?)),
+        || sticking_velocity(&setup, &opts, 1e-4),
+    );
+    let (results, v_s) = (results?, v_s?);
+    progress.check()?;
+    let pair = setup.pair;
+    let a = setup.dissipation_time();
+    let v_y = setup.yield_velocity();
+    let mut fig = Figure::new(
+        "restitution-velocity",
+        "Restitution against velocity",
+        Axis::log("impact velocity v", "m/s"),
+        Axis::linear("coefficient of restitution", ""),
+    )
+    .with(Series::new("e (model)", results.iter().map(|r| [r.velocity, r.e]).collect(), Style::Line, 0))
+    .with(Series::new("e_JKR (2.24)", velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(), Style::Dashed, 1))
+    .with(Series::new("e_D (2.26)", velocities.iter().map(|&v| [v, pair.e_viscous(a, v)]).collect(), Style::Dashed, 2))
+    .with(Series::new(
+        "e_I (2.27)",
+        velocities.iter().map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))]).collect(),
+        Style::Dashed,
+        3,
+    ));
+    if p.collision.plasticity {
+        fig = fig.with(Series::new(
+            "e_P (2.29)",
+            velocities.iter().map(|&v| [v, plasticity::e_plastic(v, v_y)]).collect(),
+            Style::Dashed,
+            4,
+        ));
+    }
+    fig = fig.with(Series::new("sticking velocity v_s", vec![[v_s, 0.0], [v_s, 1.0]], Style::Dashed, 6));
+    let e_max = results.iter().map(|r| r.e).fold(0.0, f64::max);
+    let mut notes = Vec::new();
+    if v_s.is_infinite() {
+        notes.push("The spheres stick at every velocity up to 10⁴ m/s.".to_string());
+    }
+    Ok(Panel {
+        notes,
+        figure: fig,
+        scalars: vec![
+            Scalar { key: "v_stick", label: "sticking velocity v_s (model)", value: v_s, unit: "m s^-1" },
+            Scalar {
+                key: "v_c",
+                label: "JKR sticking velocity v_c (2.25)",
+                value: pair.jkr_sticking_velocity(),
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "v_y",
+                label: "yield velocity v_y (2.28; inf without plasticity)",
+                value: v_y,
+                unit: "m s^-1",
+            },
+            Scalar { key: "e_max", label: "largest e on the velocity grid", value: e_max, unit: "" },
+        ],
+    })
+}
+
+fn radius_panel(
+    p: &Params,
+    radii: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let v = p.collision.velocity;
+    let rows = par_map(radii, progress, done, total, |&r| {
+        let c = p.at_radius(r);
+        let setup = c.setup();
+        let res = restitution(&setup, v, &c.options())?;
+        let pair = setup.pair;
+        Ok([
+            r,
+            res.e_adhesive,
+            e_independent(pair.e_jkr(v), pair.e_viscous(setup.dissipation_time(), v)),
+            pair.e_jkr(v),
+        ])
+    })?;
+    let fig = Figure::new(
+        "restitution-radius",
+        "Restitution against reduced radius",
+        Axis::log("reduced radius R", "µm"),
+        Axis::linear("coefficient of restitution", ""),
+    )
+    .with(Series::new("e_A (model)", rows.iter().map(|r| [r[0] * 1e6, r[1]]).collect(), Style::Line, 0))
+    .with(Series::new("e_I (2.27)", rows.iter().map(|r| [r[0] * 1e6, r[2]]).collect(), Style::Dashed, 3))
+    .with(Series::new("e_JKR (2.24)", rows.iter().map(|r| [r[0] * 1e6, r[3]]).collect(), Style::Dashed, 1));
+    Ok(Panel { figure: fig, scalars: Vec::new(), notes: Vec::new() })
+}
+
+fn sticking_panel(
+    p: &Params,
+    radii: &[f64],
+    t_vis: &[f64],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+) -> Result<Panel, SceneError> {
+    let jobs: Vec<(usize, f64)> =
+        t_vis.iter().enumerate().flat_map(|(i, _)| radii.iter().map(move |&r| (i, r))).collect();
+    let vs = par_map(&jobs, progress, done, total, |&(i, r)| {
+        let mut c = p.at_radius(r);
+        c.t_vis = t_vis[i];
+        let v = sticking_velocity(&c.setup(), &c.options(), 1e-3)?;
+        done.fetch_add(19, Ordering::Relaxed);
+        Ok(v)
+    })?;
+    let mut fig = Figure::new(
+        "sticking-velocity",
+        "Sticking velocity against reduced radius",
+        Axis::log("reduced radius R", "µm"),
+        Axis::log("sticking velocity", "m/s"),
+    );
+    for (i, tv) in t_vis.iter().enumerate() {
+        let pts = radii.iter().enumerate().map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]]).collect();
+        fig = fig.with(Series::new(format!("T_vis = {tv:.0e} s"), pts, Style::Line, i % 6));
+    }
+    let jkr = radii.iter().map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()]).collect();
+    fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));
+    let mut notes = Vec::new();
+    for (i, tv) in t_vis.iter().enumerate() {
+        let stuck = vs[i * radii.len()..(i + 1) * radii.len()].iter().filter(|v| v.is_infinite()).count();
+        if stuck > 0 {
+            notes.push(format!(
+                "T_vis = {tv:.0e} s: at {stuck} of {} radii the spheres stick even at 10⁴ m/s (not drawn).",
+                radii.len()
+            ));
+        }
+    }
+    Ok(Panel { figure: fig, scalars: Vec::new(), notes })
+}

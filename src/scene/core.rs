@@ -1,0 +1,252 @@
+//! What every scene shares: the [`Scene`] trait, its output, errors, progress
+//! and caches. This module imports no scene, so each scene file can import it
+//! without a cycle; the registry in [`crate::scene`] sits on top of both.
+
+use super::controls::Control;
+use crate::figure::Figure;
+use crate::physics::fit::Measurement;
+use serde::Serialize;
+use serde::de::DeserializeOwned;
+use std::any::{Any, TypeId};
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+
+/// Static description of a scene.
+#[derive(Debug, Clone, Copy)]
+pub struct SceneInfo {
+    /// Identifier used on the command line and in presets.
+    pub id: &'static str,
+    /// Title shown in the scene list.
+    pub title: &'static str,
+    /// Thesis sections and figures it covers.
+    pub source: &'static str,
+    /// Explanation with the key equations, for teaching.
+    pub explanation: &'static str,
+    /// Whether a recompute is slow enough to need the worker thread.
+    pub heavy: bool,
+}
+
+/// One scene of the explorer: its description, its parameters, its controls
+/// and its pure computation. Each scene implements it in its own file; the
+/// window, the command line and the tests reach scenes only through it (by
+/// way of [`crate::scene::SceneParams`]).
+pub trait Scene {
+    /// The scene's parameters, as stored in presets (every field defaults,
+    /// so old presets keep loading).
+    type Params: Clone + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static;
+
+    /// Identifier, title, thesis reference and explanation.
+    const INFO: SceneInfo;
+
+    /// Whether the computation honours [`Progress::set_paused`].
+    const PAUSABLE: bool = false;
+
+    /// The documented parameters, with mutable access for the window and `--set`.
+    fn controls(p: &mut Self::Params) -> Vec<Control<'_>>;
+
+    /// Computes the scene. Pure: the same parameters give the same output;
+    /// the caches only save work.
+    fn compute(p: &Self::Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError>;
+
+    /// After a material was picked: re-derives what depends on it (e.g. the
+    /// combined surface energy). Does nothing by default.
+    fn material_changed(_p: &mut Self::Params) {}
+
+    /// A time cursor over the computed history: where it stands and the
+    /// points it marks on the figures. None by default.
+    fn cursor(_p: &Self::Params, _out: &SceneOutput) -> Option<Cursor> {
+        None
+    }
+
+    /// Imported measurements the scene works on, if it takes any.
+    fn measurements(_p: &mut Self::Params) -> Option<&mut Vec<Measurement>> {
+        None
+    }
+}
+
+/// What a computation may use besides its parameters.
+pub struct Context<'a> {
+    /// Progress, cancellation and intermediate results.
+    pub progress: &'a Progress,
+    /// Partial results kept between computations.
+    pub caches: &'a mut Caches,
+}
+
+/// A time cursor: the fraction of the history it stands at and the point it
+/// marks on each figure (by figure id, in the figure's display units).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Cursor {
+    /// Fraction of the run, 0–1.
+    pub fraction: f64,
+    /// (figure id, point) pairs.
+    pub points: Vec<(&'static str, [f64; 2])>,
+}
+
+/// A scalar result, e.g. the coefficient of restitution.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct Scalar {
+    /// Key in JSON output, e.g. "e".
+    pub key: &'static str,
+    /// Label as shown, e.g. "restitution e".
+    pub label: &'static str,
+    /// Value in SI units (or dimensionless).
+    pub value: f64,
+    /// Unit of `value`, empty for dimensionless quantities.
+    pub unit: &'static str,
+}
+
+/// A recorded collision for the contact sketch: time, approach and contact radius.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Trajectory {
+    /// Radius of sphere 1, m.
+    pub radius_1: f64,
+    /// Radius of sphere 2, m (infinite for a wall).
+    pub radius_2: f64,
+    /// Samples (t [s], δ [m], a [m], F_E [N]).
+    pub samples: Vec<[f64; 4]>,
+}
+
+impl Trajectory {
+    /// The sample nearest after `fraction` (0–1) of the run's duration.
+    pub fn sample_at(&self, fraction: f64) -> Option<[f64; 4]> {
+        let last = self.samples.last()?;
+        let target = fraction.clamp(0.0, 1.0) * last[0];
+        let i = self.samples.partition_point(|s| s[0] < target).min(self.samples.len() - 1);
+        Some(self.samples[i])
+    }
+}
+
+/// Extra, scene-specific data the window needs beyond figures.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub enum Extra {
+    /// Nothing beyond figures.
+    #[default]
+    None,
+    /// A recorded collision, for the sketch of the two spheres.
+    Collision(Arc<Trajectory>),
+}
+
+/// What a scene computes.
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct SceneOutput {
+    /// Scalar results.
+    pub scalars: Vec<Scalar>,
+    /// Figures, in display order.
+    pub figures: Vec<Figure>,
+    /// Remarks for the user (regime, discrepancies with the printed thesis).
+    pub notes: Vec<String>,
+    /// Scene-specific data for the window.
+    pub extra: Extra,
+}
+
+impl SceneOutput {
+    /// Scalars as one JSON object `{key: value}`.
+    pub fn scalars_json(&self) -> serde_json::Value {
+        let map: serde_json::Map<String, serde_json::Value> =
+            self.scalars.iter().map(|s| (s.key.to_string(), serde_json::json!(s.value))).collect();
+        serde_json::Value::Object(map)
+    }
+
+    /// Looks a scalar up by key.
+    pub fn scalar(&self, key: &str) -> Option<f64> {
+        self.scalars.iter().find(|s| s.key == key).map(|s| s.value)
+    }
+}
+
+/// Why a scene could not be computed.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SceneError {
+    /// A parameter is out of range.
+    #[error(transparent)]
+    Param(#[from] super::controls::ParamError),
+    /// The model rejected its input or failed.
+    #[error(transparent)]
+    Physics(#[from] crate::physics::PhysicsError),
+    /// The computation was cancelled.
+    #[error("cancelled")]
+    Cancelled,
+}
+
+/// Progress reporting and cancellation shared between a worker and the UI.
+#[derive(Debug, Clone, Default)]
+pub struct Progress {
+    cancel: Arc<AtomicBool>,
+    pause: Arc<AtomicBool>,
+    permille: Arc<AtomicU32>,
+    partial: Arc<std::sync::Mutex<Option<Arc<SceneOutput>>>>,
+}
+
+impl Progress {
+    /// Requests cancellation.
+    pub fn cancel(&self) {
+        self.cancel.store(true, Ordering::Relaxed);
+    }
+    /// Whether cancellation was requested.
+    pub fn cancelled(&self) -> bool {
+        self.cancel.load(Ordering::Relaxed)
+    }
+    /// Pauses (true) or resumes (false) a computation that honours it.
+    pub fn set_paused(&self, paused: bool) {
+        self.pause.store(paused, Ordering::Relaxed);
+    }
+    /// Whether a pause was requested.
+    pub fn paused(&self) -> bool {
+        self.pause.load(Ordering::Relaxed)
+    }
+    /// Blocks while paused (and not cancelled).
+    pub fn wait_while_paused(&self) {
+        while self.paused() && !self.cancelled() {
+            std::thread::sleep(std::time::Duration::from_millis(50));
+        }
+    }
+    /// Errors out if cancellation was requested.
+    pub fn check(&self) -> Result<(), SceneError> {
+        if self.cancelled() { Err(SceneError::Cancelled) } else { Ok(()) }
+    }
+    /// Sets the fraction done (0–1).
+    pub fn set(&self, fraction: f64) {
+        self.permille.store((fraction.clamp(0.0, 1.0) * 1000.0) as u32, Ordering::Relaxed);
+    }
+    /// The fraction done (0–1).
+    pub fn fraction(&self) -> f64 {
+        self.permille.load(Ordering::Relaxed) as f64 / 1000.0
+    }
+    /// Offers an intermediate result of a long computation for display.
+    pub fn publish(&self, output: SceneOutput) {
+        if let Ok(mut slot) = self.partial.lock() {
+            *slot = Some(Arc::new(output));
+        }
+    }
+    /// The newest intermediate result, if any.
+    pub fn partial(&self) -> Option<Arc<SceneOutput>> {
+        self.partial.lock().ok().and_then(|slot| slot.clone())
+    }
+}
+
+/// Partial results kept between computations, one slot per cache type, so
+/// that a changed parameter recomputes only what it touches and scenes that
+/// share a model share its runs. Results never depend on the cache.
+#[derive(Debug, Default)]
+pub struct Caches {
+    slots: HashMap<TypeId, Box<dyn Any + Send>>,
+}
+
+impl Caches {
+    /// The cache of type `T`, created empty on first use.
+    pub fn get<T: Any + Send + Default>(&mut self) -> &mut T {
+        let slot = self.slots.entry(TypeId::of::<T>()).or_insert_with(|| Box::new(T::default()));
+        match slot.downcast_mut::<T>() {
+            Some(cache) => cache,
+            // The slot is keyed by the type it holds, so this cannot happen.
+            None => unreachable!("cache slot holds another type"),
+        }
+    }
+}
+
+/// Evenly spaced values in log space, `n ≥ 2` points from `lo` to `hi`.
+pub fn logspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    let n = n.max(2);
+    let (a, b) = (lo.ln(), hi.ln());
+    (0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp()).collect()
+}

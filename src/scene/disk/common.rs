@@ -1,0 +1,184 @@
+//! What the disk scenes (thesis ch. 4) share: the gas disk, the monomers and
+//! the semi-analytical growth model.
+
+use crate::scene::controls::Control;
+use crate::physics::aggregate::Monomer;
+use crate::physics::disk::{GasDisk, Profile};
+use crate::physics::aggregate::{R_CRIT, Thresholds, TurbulenceModel};
+use crate::physics::constants::{AU, YEAR};
+use crate::physics::growth::{GrowthModel, Porosity, Track};
+use serde::{Deserialize, Serialize};
+
+/// A gas disk and its dust monomers. SI units except where stated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct DiskParams {
+    /// "mmsn" (4.1) or "power-law" (5.1).
+    pub profile: String,
+    /// Disk mass for the power law, solar masses (default 0.01).
+    pub disk_mass: f64,
+    /// Characteristic radius R_c for the power law, AU (default 30).
+    pub r_c: f64,
+    /// Power-law slope γ (default 1).
+    pub slope: f64,
+    /// Halve the temperature (cold disk).
+    pub cold: bool,
+    /// Turbulence strength α (default 10⁻³).
+    pub alpha: f64,
+    /// Dust-to-gas ratio Z₀ (default 0.01).
+    pub metallicity: f64,
+    /// Monomer radius a₀, m (default 0.1 µm).
+    pub monomer_radius: f64,
+    /// Icy monomers (ρ₀ = 1.4 g cm⁻³) or silicate (2.6 g cm⁻³).
+    pub icy: bool,
+}
+
+impl Default for DiskParams {
+    fn default() -> Self {
+        DiskParams {
+            profile: "mmsn".into(),
+            disk_mass: 0.01,
+            r_c: 30.0,
+            slope: 1.0,
+            cold: false,
+            alpha: 1e-3,
+            metallicity: 0.01,
+            monomer_radius: 1e-7,
+            icy: true,
+        }
+    }
+}
+
+impl DiskParams {
+    /// The documented parameters.
+    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
+        vec![
+            Control::choice("profile", "gas disk", &mut self.profile, vec![("mmsn", "MMSN (4.1)"), ("power-law", "truncated power law (5.1)")]).default(d.profile.clone()).doc("surface density profile"),
+            Control::number("disk_mass", "disk mass", &mut self.disk_mass).default(d.disk_mass).unit("M_sun").range(1e-4, 0.5).log().doc("power-law disk mass"),
+            Control::number("r_c", "R_c", &mut self.r_c).default(d.r_c).unit("AU").range(5.0, 300.0).log().doc("power-law characteristic radius"),
+            Control::number("slope", "slope γ", &mut self.slope).default(d.slope).range(0.5, 1.9).doc("power-law slope"),
+            Control::toggle("cold", "cold disk (T/2)", &mut self.cold).default(d.cold).doc("halve the temperature"),
+            Control::number("alpha", "turbulence α", &mut self.alpha).default(d.alpha).range(1e-6, 1e-1).log().doc("Shakura–Sunyaev α"),
+            Control::number("metallicity", "dust-to-gas Z₀", &mut self.metallicity).default(d.metallicity).range(1e-4, 0.1).log().doc("Σ_d/Σ_g"),
+            Control::number("monomer_radius", "monomer radius a₀", &mut self.monomer_radius).default(d.monomer_radius).unit("m").shown("µm", 1e6).range(1e-8, 1e-5).log().doc("radius of the monomers"),
+            Control::toggle("icy", "icy monomers", &mut self.icy).default(d.icy).doc("ice (1.4 g/cm³) or silicate (2.6 g/cm³)"),
+        ]
+    }
+
+    /// The gas disk.
+    pub fn disk(&self) -> GasDisk {
+        let profile = if self.profile == "power-law" {
+            Profile::TruncatedPowerLaw { mass: self.disk_mass, r_c: self.r_c, slope: self.slope }
+        } else {
+            Profile::Mmsn
+        };
+        GasDisk { profile, cold: self.cold, alpha: self.alpha, metallicity: self.metallicity }
+    }
+
+    /// The monomers.
+    pub fn monomer(&self) -> Monomer {
+        Monomer { radius: self.monomer_radius, density: if self.icy { 1400.0 } else { 2600.0 }, icy: self.icy }
+    }
+}
+
+/// The control of a local scene's disk radius, AU (0.5–300 AU); `meaning`
+/// says what sits there.
+pub fn radius_control<'a>(value: &'a mut f64, meaning: &'static str) -> Control<'a> {
+    Control::number("radius_au", "disk radius", value).unit("AU").range(0.5, 300.0).log().doc(meaning)
+}
+
+
+/// The semi-analytical growth model. SI units except where stated.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct GrowthParams {
+    /// Disk and monomers.
+    pub disk: DiskParams,
+    /// Fragmentation velocity, m s⁻¹ (default: (4.12) for ice, 10 for compact tracks).
+    pub v_frag: f64,
+    /// Erosion threshold, m s⁻¹ (default 10⁴: no erosion).
+    pub v_eros: f64,
+    /// Bouncing threshold of compact grains, m s⁻¹ (default 10⁴: none).
+    pub v_bounce: f64,
+    /// Use the full Ormel & Cuzzi turbulence form.
+    pub ormel_cuzzi: bool,
+    /// Include Newton drag.
+    pub newton: bool,
+    /// Growth per step, Δln m (default 0.1).
+    pub dlnm: f64,
+}
+
+impl Default for GrowthParams {
+    fn default() -> Self {
+        GrowthParams {
+            disk: DiskParams::default(),
+            v_frag: 80.0,
+            v_eros: 1e4,
+            v_bounce: 1e4,
+            ormel_cuzzi: false,
+            newton: true,
+            dlnm: 0.1,
+        }
+    }
+}
+
+impl GrowthParams {
+    /// The documented parameters.
+    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
+        let mut c = self.disk.controls(&d.disk);
+        let v = ("m/s", 1.0);
+        c.push(Control::number("v_frag", "fragmentation velocity", &mut self.v_frag).default(d.v_frag).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"));
+        c.push(Control::number("v_eros", "erosion threshold", &mut self.v_eros).default(d.v_eros).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("collisions with monomers above it erode (1e4: none)"));
+        c.push(Control::number("v_bounce", "bouncing threshold", &mut self.v_bounce).default(d.v_bounce).unit("m s^-1").shown(v.0, v.1).range(0.01, 1e4).log().doc("compact grains bounce above it (1e4: none)"));
+        c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
+        c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));
+        c.push(Control::number("dlnm", "step Δln m", &mut self.dlnm).default(d.dlnm).range(0.01, 1.0).log().doc("mass growth per step"));
+        c
+    }
+
+    /// The model with a given porosity treatment.
+    pub fn model(&self, porosity: Porosity) -> GrowthModel {
+        let mut m = GrowthModel::chapter4(porosity);
+        m.disk = self.disk.disk();
+        m.monomer = self.disk.monomer();
+        m.thresholds = Thresholds { v_frag: self.v_frag, v_eros: self.v_eros, v_bounce: self.v_bounce, r_crit: R_CRIT };
+        m.turbulence = if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis };
+        m.newton = self.newton;
+        m.dlnm = self.dlnm;
+        m.inner_edge = AU;
+        m
+    }
+}
+
+/// Local growth of one aggregate at a fixed radius: the parameters of the
+/// porosity-track scene, shared with the timescales scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct TrackParams {
+    /// The growth model.
+    pub growth: GrowthParams,
+    /// Radius, AU (default 5).
+    pub radius_au: f64,
+}
+
+impl Default for TrackParams {
+    fn default() -> Self {
+        TrackParams { growth: GrowthParams { v_frag: 1e4, ..GrowthParams::default() }, radius_au: 5.0 }
+    }
+}
+
+impl TrackParams {
+    /// The documented parameters.
+    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
+        let mut c = self.growth.controls(&d.growth);
+        c.push(radius_control(&mut self.radius_au, "where the dust grows").default(d.radius_au));
+        c
+    }
+
+    /// The local track with the given porosity treatment.
+    pub fn track(&self, porosity: Porosity) -> Track {
+        let mut model = self.growth.model(porosity);
+        model.drift = false;
+        model.run(self.radius_au * AU, 1e8 * YEAR)
+    }
+}

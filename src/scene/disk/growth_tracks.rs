@@ -1,0 +1,182 @@
+//! Scene "Growth and drift tracks" (thesis Figs. 4.13, 4.14): m(t) and a(t)
+//! against R(t) from many starting radii.
+
+use crate::scene::controls::{Control, LogRange};
+use super::common::GrowthParams;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::constants::{AU, YEAR};
+use crate::physics::growth::{Porosity, Stop, Track};
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct GrowthTracks;
+
+impl Scene for GrowthTracks {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "growth-tracks",
+        title: "Growth and drift tracks",
+        source: "Sect. 4.5; Eqs. 4.35, 4.36; Figs. 4.13, 4.14",
+        explanation: "The semi-analytical model grows the mass-dominating particle by (4.35) while it drifts by \
+    (4.36), from monomers at many starting radii, for a fixed time. Compact grains (φ = 1) are stopped by \
+fragmentation (v_frag = 10 m/s here, as in Fig. 4.13 left) in the inner disk, by drift further out, and \
+grow too slowly beyond ~100 AU. Porous aggregates (compaction by collisions, gas and self-gravity) \
+outgrow the drift barrier in the inner disk unless erosion by small projectiles (v_eros) halts them \
+near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
+        heavy: true,
+    };
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress)
+    }
+}
+
+/// Parameters of the growth-track scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The growth model (its v_frag applies to porous tracks).
+    pub growth: GrowthParams,
+    /// Fragmentation velocity of the compact tracks, m s⁻¹ (default 10).
+    pub v_frag_compact: f64,
+    /// Innermost starting radius, AU.
+    pub r_min_au: f64,
+    /// Outermost starting radius, AU.
+    pub r_max_au: f64,
+    /// Number of starting radii (default 30).
+    pub tracks: usize,
+    /// Duration, yr (default 10⁶).
+    pub duration_yr: f64,
+    /// Include the compact tracks.
+    pub compact: bool,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            growth: GrowthParams::default(),
+            v_frag_compact: 10.0,
+            r_min_au: 3.0,
+            r_max_au: 300.0,
+            tracks: 30,
+            duration_yr: 1e6,
+            compact: true,
+        }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.growth.controls(&d.growth);
+        c.push(Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact).default(d.v_frag_compact).unit("m s^-1").shown("m/s", 1.0).range(0.1, 1e3).log().doc("fragmentation velocity of compact grains"));
+        c.push(Control::number("r_min_au", "innermost start", &mut self.r_min_au).default(d.r_min_au).unit("AU").range(1.1, 300.0).log().doc("first starting radius"));
+        c.push(Control::number("r_max_au", "outermost start", &mut self.r_max_au).default(d.r_max_au).unit("AU").range(1.1, 1000.0).log().doc("last starting radius"));
+        c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1 as f64, 200 as f64).doc("starting radii, log-spaced"));
+        c.push(Control::number("duration_yr", "duration", &mut self.duration_yr).default(d.duration_yr).unit("yr").range(1e2, 1e8).log().doc("time followed"));
+        c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
+        c
+    }
+
+    /// All tracks: (compact, porous), computed in parallel.
+    pub fn run(&self, progress: &Progress) -> Result<(Vec<Track>, Vec<Track>), SceneError> {
+        let starts = if self.tracks <= 1 {
+            vec![self.r_min_au]
+        } else {
+            logspace(self.r_min_au, self.r_max_au.max(self.r_min_au * 1.000001), self.tracks)
+        };
+        let porous = self.growth.model(Porosity::Full);
+        let mut compact = self.growth.model(Porosity::Compact);
+        compact.thresholds.v_frag = self.v_frag_compact;
+        let t_end = self.duration_yr * YEAR;
+        let run = |model: &crate::physics::growth::GrowthModel| -> Result<Vec<Track>, SceneError> {
+            starts
+                .par_iter()
+                .map(|&r| {
+                    progress.check()?;
+                    Ok(model.run(r * AU, t_end))
+                })
+                .collect()
+        };
+        let c = if self.compact { run(&compact)? } else { Vec::new() };
+        let p = run(&porous)?;
+        Ok((c, p))
+    }
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    if p.tracks > 1 {
+        LogRange::new("r_min_au/r_max_au", p.r_min_au, p.r_max_au, p.tracks)?;
+    }
+    let (compact, porous) = p.run(progress)?;
+    let mut fig_m = Figure::new(
+        "growth-tracks-mass",
+        "Peak mass against radius (Fig. 4.13)",
+        Axis::log("radius R", "AU"),
+        Axis::log("mass m_p", "g"),
+    );
+    let mut fig_a = Figure::new(
+        "growth-tracks-size",
+        "Particle radius against radius (Fig. 4.14)",
+        Axis::log("radius R", "AU"),
+        Axis::log("particle radius a", "cm"),
+    );
+    let add = |fig: Figure,
+               tracks: &[Track],
+               name: &str,
+               color: usize,
+               f: &dyn Fn(&crate::physics::growth::TrackPoint) -> f64| {
+        let mut fig = fig;
+        for (i, t) in tracks.iter().enumerate() {
+            let pts = t.points.iter().map(|q| [q.r / AU, f(q)]).collect();
+            fig = fig.with(Series::new(
+                if i == 0 { name.to_string() } else { String::new() },
+                pts,
+                if color == 1 { Style::Dashed } else { Style::Line },
+                color,
+            ));
+        }
+        fig
+    };
+    fig_m = add(fig_m, &compact, "compact, v_frag = compact value", 1, &|q| q.mass * 1e3);
+    fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
+    fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
+    fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
+    let planetesimals: Vec<f64> =
+        porous.iter().filter(|t| t.stop == Stop::Planetesimal).map(|t| t.points[0].r / AU).collect();
+    let outermost = planetesimals.iter().copied().fold(0.0, f64::max);
+    let max_st_eroded = porous
+        .iter()
+        .filter(|t| t.halted_by == Some("erosion"))
+        .flat_map(|t| t.points.iter().map(|q| q.stokes))
+        .fold(0.0, f64::max);
+    let scalars = vec![
+        Scalar {
+            key: "porous_planetesimal_tracks",
+            label: "porous tracks reaching 10¹⁶ g",
+            value: planetesimals.len() as f64,
+            unit: "",
+        },
+        Scalar {
+            key: "outermost_planetesimal_start",
+            label: "outermost start forming a planetesimal",
+            value: outermost,
+            unit: "AU",
+        },
+        Scalar {
+            key: "max_stokes_eroded",
+            label: "largest Ωt_s of tracks halted by erosion",
+            value: max_st_eroded,
+            unit: "",
+        },
+    ];
+    Ok(SceneOutput { scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+}

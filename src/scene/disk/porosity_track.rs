@@ -1,0 +1,108 @@
+//! Scene "Mass–porosity track" (thesis Figs. 4.8, 5.2): the filling factor of
+//! the mass-dominating particle against its mass.
+
+use crate::scene::controls::Control;
+use super::common::TrackParams;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::growth::{Porosity, Track};
+
+/// The scene (see [`Scene`]).
+pub struct PorosityTrack;
+
+impl Scene for PorosityTrack {
+    type Params = TrackParams;
+    const INFO: SceneInfo = SceneInfo {
+        id: "porosity-track",
+        title: "Mass–porosity track",
+        source: "Sects. 4.2.4, 4.5, App. 5.C; Figs. 4.8, 5.2",
+        explanation: "Aggregates start as monomers and grow by hit-and-stick collisions with D_f ≈ 2, \
+φ ≈ (m/m₀)^{-1/2} (5.25, with the sign the text drops). Collisional compaction starts when same-size \
+impacts exceed 3bE_roll (b = 0.15, E_roll from (5.26)); from there φ follows Suyama et al.'s law for \
+equal-mass compressive collisions (this project's reconstruction of Okuzumi et al. 2012, see the \
+model notes), which keeps φ roughly constant. The compressive strength P_c = E_roll φ³/a₀³ (4.15) \
+against the gas ram pressure and self-gravity (4.16) sets the other two limits; φ is the largest of \
+the three. Markers: a = λ_mfp, t_s = t_η, Ωt_s = α, Ωt_s = 1 (open in the thesis) and the first \
+collisional, gas and self-gravity compaction. Local growth at fixed R (no drift), perfect sticking.",
+        heavy: false,
+    };
+
+    fn controls(p: &mut TrackParams) -> Vec<Control<'_>> {
+        p.controls(&TrackParams::default())
+    }
+
+    fn compute(p: &TrackParams, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p)
+    }
+}
+
+/// Computes the scene.
+pub fn compute(p: &TrackParams) -> Result<SceneOutput, SceneError> {
+    let full = p.track(Porosity::Full);
+    let coll = p.track(Porosity::Collisional);
+    let line = |t: &Track| t.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect::<Vec<_>>();
+    let mut fig = Figure::new(
+        "porosity-track",
+        "Filling factor of the mass-dominating particle (Fig. 4.8)",
+        Axis::log("mass", "g"),
+        Axis::log("filling factor φ", ""),
+    )
+    .with(Series::new("collisional compaction only", line(&coll), Style::Dashed, 1))
+    .with(Series::new("collisional + gas + self-gravity", line(&full), Style::Line, 0));
+    let mut scalars = Vec::new();
+    for (tag, t, off) in [("full", &full, 0), ("collisional", &coll, 1)] {
+        let m = &t.markers;
+        let marks = [
+            ("a = λ_mfp", m.radius_mfp),
+            ("t_s = t_η", m.kolmogorov),
+            ("Ωt_s = α", m.settling),
+            ("Ωt_s = 1", m.stokes_one),
+            ("first collisional compaction", m.collisional),
+            ("first gas compaction", m.gas),
+            ("first self-gravity compaction", m.gravity),
+        ];
+        for (k, (name, at)) in marks.iter().enumerate() {
+            if let Some([mass, phi]) = at {
+                fig = fig.with(Series::new(
+                    format!("{name} ({tag})"),
+                    vec![[mass * 1e3, *phi]],
+                    if k < 4 { Style::Points } else { Style::Marker },
+                    2 + k + off,
+                ));
+            }
+        }
+    }
+    let phi_min_coll = coll.points.iter().map(|q| q.filling).fold(1.0, f64::min);
+    scalars.push(Scalar {
+        key: "phi_min_collisional",
+        label: "lowest φ, collisional compaction only",
+        value: phi_min_coll,
+        unit: "",
+    });
+    if let Some([m, _]) = full.markers.stokes_one {
+        scalars.push(Scalar { key: "mass_st1", label: "mass at Ωt_s = 1 (full)", value: m, unit: "kg" });
+    }
+    if let Some([m, _]) = full.markers.gravity {
+        scalars.push(Scalar {
+            key: "mass_gravity",
+            label: "mass at first self-gravity compaction",
+            value: m,
+            unit: "kg",
+        });
+    }
+    if let Some(last) = full.points.last() {
+        scalars.push(Scalar {
+            key: "phi_final",
+            label: "φ at the planetesimal mass (full)",
+            value: last.filling,
+            unit: "",
+        });
+        scalars.push(Scalar {
+            key: "time_final",
+            label: "time to the planetesimal mass (full)",
+            value: last.t,
+            unit: "s",
+        });
+    }
+    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+}

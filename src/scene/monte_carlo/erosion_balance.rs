@@ -1,0 +1,183 @@
+//! Scene "Erosion balance" (thesis Figs. 4.10, 4.11): the projectile
+//! distribution of the largest body and ζ (4.34) against Ωt_s(m_max) for
+//! three erosion thresholds.
+
+use super::common::{ColumnParams, RunCache};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::coagulation::Run;
+use crate::physics::constants::YEAR;
+use rayon::prelude::*;
+use serde::{Deserialize, Serialize};
+use std::sync::Arc;
+
+/// The scene (see [`Scene`]).
+pub struct ErosionBalance;
+
+impl Scene for ErosionBalance {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "erosion-balance",
+        title: "Erosion balance",
+        source: "Sect. 4.4.2; Figs. 4.10, 4.11",
+        explanation: "Why erosion stops the largest bodies. The projectile distribution of the largest body m_max \
+gives, for every projectile mass, the rate at which collisions change m_max: positive where projectiles \
+stick, negative where projectiles below R_crit = 10⁻² m_max hit faster than v_eros and excavate \
+ε_eros = c₁ v/v_eros projectile masses (4.13). ζ = (ΣC₊ − ΣC₋)/(ΣC₊ + ΣC₋) (4.34) is 1 without erosion, \
+    0 at balance, −1 for erosion only. Plotted against Ωt_s(m_max) for three thresholds: at 20 m/s ζ turns \
+negative near Ωt_s ~ 1 and the largest bodies settle into a steady state; at 40 m/s they reach ~10× larger \
+masses first; at 60 m/s erosion is never strong enough to stop growth.",
+        heavy: true,
+    };
+    const PAUSABLE: bool = true;
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress, ctx.caches.get())
+    }
+}
+
+/// Parameters of the scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The runs (their v_eros is replaced by the three thresholds below).
+    pub run: ColumnParams,
+    /// First erosion threshold, m s⁻¹ (default 20).
+    pub v_eros_1: f64,
+    /// Second erosion threshold, m s⁻¹ (default 40).
+    pub v_eros_2: f64,
+    /// Third erosion threshold, m s⁻¹ (default 60).
+    pub v_eros_3: f64,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        let run = ColumnParams { runs: 1, stop_mass_g: 1e18, ..ColumnParams::default() };
+        Params { run, v_eros_1: 20.0, v_eros_2: 40.0, v_eros_3: 60.0 }
+    }
+}
+
+impl Params {
+    /// The documented parameters (the base run's own v_eros is not used).
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c: Vec<Control<'_>> = self.run.controls(&d.run).into_iter().filter(|c| c.key != "v_eros").collect();
+        let v = ("m/s", 1.0);
+        for (key, label, value, default) in [
+            ("v_eros_1", "v_eros (first)", &mut self.v_eros_1, d.v_eros_1),
+            ("v_eros_2", "v_eros (second)", &mut self.v_eros_2, d.v_eros_2),
+            ("v_eros_3", "v_eros (third)", &mut self.v_eros_3, d.v_eros_3),
+        ] {
+            c.push(Control::number(key, label, value).unit("m s^-1").shown(v.0, v.1).range(1.0, 1e4).log().default(default).doc("erosion threshold of one set of runs"));
+        }
+        c
+    }
+
+    fn thresholds(&self) -> [f64; 3] {
+        [self.v_eros_1, self.v_eros_2, self.v_eros_3]
+    }
+}
+
+/// The steady state of a run: medians of Ωt_s(m_max) and m_max over the
+/// last 40 % of its duration.
+pub fn steady_state(run: &Run) -> (f64, f64) {
+    let t_end = run.history.last().map_or(0.0, |s| s.t);
+    let tail: Vec<_> = run.history.iter().filter(|s| s.t >= 0.6 * t_end).collect();
+    let median = |f: &dyn Fn(&crate::physics::coagulation::Sample) -> f64| {
+        let mut v: Vec<f64> = tail.iter().map(|s| f(s)).collect();
+        v.sort_by(|a, b| a.total_cmp(b));
+        v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
+    };
+    (median(&|s| s.stokes_max), median(&|s| s.m_max))
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    // The three thresholds run side by side; cached sets are reused.
+    let params: Vec<ColumnParams> =
+        p.thresholds().iter().map(|&v| ColumnParams { v_eros: v, ..p.run.clone() }).collect();
+    let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
+    let fractions: Vec<std::sync::atomic::AtomicU32> =
+        missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
+    let fresh: Vec<Vec<Run>> = missing
+        .par_iter()
+        .enumerate()
+        .map(|(k, q)| {
+            let cfg = q.config()?;
+            let runs = cfg.run_seeds(q.runs.max(1), &|f| {
+                fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+                let sum: f64 =
+                    fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                progress.set(sum / fractions.len() as f64);
+                progress.wait_while_paused();
+                !progress.cancelled()
+            })?;
+            progress.check()?;
+            Ok(runs)
+        })
+        .collect::<Result<_, SceneError>>()?;
+    for (q, runs) in missing.into_iter().zip(fresh) {
+        cache.insert(q.clone(), runs);
+    }
+    let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();
+    for (v, q) in p.thresholds().into_iter().zip(&params) {
+        sets.push((v, cache.get(q, progress)?));
+    }
+    let mut zeta = Figure::new(
+        "zeta",
+        "ζ of the largest body against its Stokes number",
+        Axis::log("Ωt_s(m_max)", ""),
+        Axis::linear("ζ (4.34)", ""),
+    );
+    let mut scalars = Vec::new();
+    let keys =
+        [("st_1", "m_max_1", "zeta_min_1"), ("st_2", "m_max_2", "zeta_min_2"), ("st_3", "m_max_3", "zeta_min_3")];
+    for (k, (v, runs)) in sets.iter().enumerate() {
+        for (j, r) in runs.iter().enumerate() {
+            let name = if j == 0 { format!("v_eros = {v} m/s") } else { String::new() };
+            let pts = r.history.iter().map(|s| [s.stokes_max, s.zeta]).collect();
+            zeta = zeta.with(Series::new(name, pts, Style::Line, k));
+        }
+        if let Some(r) = runs.first() {
+            let (st, m) = steady_state(r);
+            zeta = zeta.with(Series::new("", vec![[st, r.history.last().map_or(1.0, |s| s.zeta)]], Style::Marker, k));
+            let zmin = r.history.iter().map(|s| s.zeta).fold(1.0, f64::min);
+            scalars.push(Scalar { key: keys[k].0, label: "steady Ωt_s(m_max)", value: st, unit: "" });
+            scalars.push(Scalar { key: keys[k].1, label: "steady m_max", value: m, unit: "kg" });
+            scalars.push(Scalar { key: keys[k].2, label: "lowest ζ", value: zmin, unit: "" });
+        }
+    }
+    let mut proj = Figure::new(
+        "projectile-distribution",
+        &format!("Projectile distribution of m_max (v_eros = {} m/s)", p.v_eros_1),
+        Axis::log("projectile mass", "g"),
+        Axis::linear("share of |dm_max/dt|", ""),
+    );
+    if let Some(r) = sets.first().and_then(|s| s.1.first()) {
+        for (k, snap) in r.snapshots.iter().enumerate() {
+            let norm: f64 = snap.projectiles.iter().map(|q| q.1.abs()).sum();
+            if norm > 0.0 {
+                let pts = snap.projectiles.iter().map(|q| [q.0 * 1e3, q.1 / norm]).collect();
+                let label = format!(
+                    "{:.0} yr, Ωt_s = {:.2}, ζ = {:.2}",
+                    snap.t / YEAR,
+                    snap.sample.stokes_max,
+                    snap.sample.zeta
+                );
+                proj = proj.with(Series::new(label, pts, Style::Points, k));
+            }
+        }
+    }
+    let mut notes = Vec::new();
+    for (v, runs) in &sets {
+        for line in super::common::endings(runs) {
+            notes.push(format!("v_eros = {v} m/s, {line}"));
+        }
+    }
+    Ok(SceneOutput { scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None })
+}

@@ -1,0 +1,118 @@
+//! Scene "Families" (thesis Figs. 4.12, 5.2 bottom): every Monte Carlo
+//! family as a dot in mass–filling-factor space at the snapshot times, with
+//! the peak track φ_p(m_p) and the semi-analytical track for comparison.
+
+use super::common::{ColumnParams, RunCache};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::coagulation::Run;
+use crate::physics::constants::{AU, YEAR};
+use crate::physics::growth::{GrowthModel, Porosity};
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct Families;
+
+impl Scene for Families {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "families",
+        title: "Monte Carlo families",
+        source: "Sects. 4.3–4.4; Figs. 4.8, 4.12, 5.2 (bottom)",
+        explanation: "Each dot is one family of identical aggregates (its mass and filling factor φ) at a snapshot \
+time; a dot says nothing about how many particles the family holds. The line φ_p(m_p) follows the peak \
+mass (4.29) over the run; the dashed line is the semi-analytical track of the mass-dominating particle \
+    (Sect. 4.5) with the same compaction. Hit-and-stick growth keeps D_f ≈ 2 (φ ∝ m^{-1/2}); collisional \
+compaction flattens the track; gas and self-gravity compress the largest bodies. With erosion, fragments \
+inherit the fractal dimension of their target (4.14) and the distribution of φ turns bimodal.",
+        heavy: true,
+    };
+    const PAUSABLE: bool = true;
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress, ctx.caches.get())
+    }
+}
+
+/// Parameters of the scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The runs.
+    pub run: ColumnParams,
+    /// Show the semi-analytical track.
+    pub track: bool,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params { run: ColumnParams::default(), track: true }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(Control::toggle("track", "semi-analytical track", &mut self.track).default(d.track).doc("the Sect. 4.5 model for comparison"));
+        c
+    }
+}
+
+/// The semi-analytical track matching a column: (mass, φ) points.
+pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
+    let porosity = if run.compaction == "full" { Porosity::Full } else { Porosity::Collisional };
+    let mut model = GrowthModel::chapter4(porosity);
+    model.disk = run.disk.disk();
+    model.monomer = run.disk.monomer();
+    model.newton = run.newton;
+    model.drift = false;
+    model.planetesimal_mass = run.stop_mass_g * 1e-3;
+    let track = model.run(run.radius_au * AU, run.t_end_yr * YEAR * 10.0);
+    track.points.iter().map(|q| [q.mass, q.filling]).collect()
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let live = super::common::live_view(progress, |runs| output(p, runs));
+    let runs = cache.get_observed(&p.run, progress, &live)?;
+    Ok(output(p, &runs))
+}
+
+/// The scene's figures from a set of runs.
+fn output(p: &Params, runs: &[Run]) -> SceneOutput {
+    let mut fig = Figure::new(
+        "families",
+        "Families in mass and filling factor",
+        Axis::log("mass m", "g"),
+        Axis::log("filling factor φ", ""),
+    );
+    if let Some(first) = runs.first() {
+        for (k, s) in first.snapshots.iter().enumerate() {
+            let pts = s.families.iter().map(|f| [f.mass * 1e3, f.filling]).collect();
+            fig = fig.with(Series::new(format!("{:.3} yr", s.t / YEAR), pts, Style::Points, k));
+        }
+        let peak = first.history.iter().map(|s| [s.m_p * 1e3, s.phi_p]).collect();
+        fig = fig.with(Series::new("φ_p(m_p)", peak, Style::Line, 6));
+    }
+    if p.track {
+        let track = semi_analytical(&p.run).into_iter().map(|q| [q[0] * 1e3, q[1]]).collect();
+        fig = fig.with(Series::new("semi-analytical", track, Style::Dashed, 7));
+    }
+    let mut notes = super::common::endings(runs);
+    if runs.len() > 1 {
+        notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
+    }
+    SceneOutput {
+        scalars: super::common::summary(runs),
+        figures: vec![fig],
+        notes,
+        extra: crate::scene::core::Extra::None,
+    }
+}

@@ -1,0 +1,165 @@
+//! Scene "Mass distribution" (thesis Figs. 4.4–4.7, 4.9): the Monte Carlo
+//! mass distribution m²f(m)/ρ_d of a disk column at chosen times, mean ± 1σ
+//! over runs, with the growth and drift timescales of the peak mass.
+
+use super::common::{ColumnParams, RunCache, endings, summary};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Series, Style};
+use crate::physics::coagulation::{Run, Sample, mass_distribution};
+use crate::physics::constants::YEAR;
+use serde::{Deserialize, Serialize};
+
+/// The scene (see [`Scene`]).
+pub struct MassDistribution;
+
+impl Scene for MassDistribution {
+    type Params = Params;
+    const INFO: SceneInfo = SceneInfo {
+        id: "mass-distribution",
+        title: "Monte Carlo mass distribution",
+        source: "Sects. 4.3–4.4; Figs. 4.4–4.7, 4.9",
+        explanation: "A vertical column of the disk followed with the distribution method of Ormel & Spaans (2008): \
+families of identical aggregates (mass m, filling factor φ), w groups of 2^z particles each, collide as \
+groups at the rates λ_ij = w_i w_j 2^{z_i+N_ε} K_ij/V (4.25) with the column kernel \
+K = σ h_{d,ij}/((2π)^{1/2} h_i h_j) v_rel (4.19). N_ε (4.22)–(4.24) limits how much a large particle changes \
+in one group event; zoom factors z* = [log₂(N₁₀/w*)] (4.26) keep about w* groups in every mass decade, so \
+the distribution is resolved many decades below its peak. Shown: m²f(m)/ρ_d, the mass fraction per ln m, \
+at the snapshot times (mean of the runs, dashed ±1σ), and t_grow = m_p/ṁ_p (4.30) against \
+t_drift = R/v_drift (4.31) of the peak mass m_p = ⟨m²⟩/⟨m⟩ (4.29). Perfect sticking grows through the \
+drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies stall near Ωt_s ~ 1.",
+        heavy: true,
+    };
+    const PAUSABLE: bool = true;
+
+    fn controls(p: &mut Params) -> Vec<Control<'_>> {
+        p.controls()
+    }
+
+    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        compute(p, ctx.progress, ctx.caches.get())
+    }
+}
+
+/// Parameters of the scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The runs.
+    pub run: ColumnParams,
+    /// Histogram bins per mass decade (default 2).
+    pub bins_per_decade: usize,
+}
+
+impl Default for Params {
+    fn default() -> Self {
+        Params { run: ColumnParams::default(), bins_per_decade: 2 }
+    }
+}
+
+impl Params {
+    /// The documented parameters.
+    pub fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1 as f64, 10 as f64).doc("histogram"));
+        c
+    }
+}
+
+/// Growth time t_grow = m_p/(dm_p/dt) (4.30) from the history, over steps in
+/// which m_p grew by at least a factor 10^{1/8} (the peak mass is noisy
+/// between samples): (m_p at the step's midpoint, t_grow, t_drift), s.
+pub fn growth_times(history: &[Sample]) -> Vec<(f64, f64, f64)> {
+    let step = 10f64.powf(0.125);
+    let mut out = Vec::new();
+    let Some(mut anchor) = history.first() else { return out };
+    for s in &history[1..] {
+        if s.m_p < anchor.m_p {
+            // Shrinking (erosion): restart from here.
+            anchor = s;
+        } else if s.m_p >= anchor.m_p * step && s.t > anchor.t {
+            let rate = (s.m_p / anchor.m_p).ln() / (s.t - anchor.t);
+            out.push(((anchor.m_p * s.m_p).sqrt(), 1.0 / rate, (anchor.t_drift * s.t_drift).sqrt()));
+            anchor = s;
+        }
+    }
+    out
+}
+
+/// Computes the scene.
+pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
+    let live = super::common::live_view(progress, |runs| output(p, runs));
+    let runs = cache.get_observed(&p.run, progress, &live)?;
+    Ok(output(p, &runs))
+}
+
+/// The scene's figures from a set of runs.
+fn output(p: &Params, runs: &[Run]) -> SceneOutput {
+    let n_snap = runs.iter().map(|r| r.snapshots.len()).max().unwrap_or(0);
+    let mut dist = Figure::new(
+        "mass-distribution",
+        "Mass distribution m²f(m)/ρ_d",
+        Axis::log("mass m", "g"),
+        Axis::log("m²f(m)/ρ_d", ""),
+    );
+    for k in 0..n_snap {
+        let t = runs.iter().filter_map(|r| r.snapshots.get(k)).map(|s| s.t).fold(0.0, f64::max);
+        let rows = mass_distribution(runs, k, p.bins_per_decade);
+        let label = format!("{:.3} yr", t / YEAR);
+        let mean: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1]).collect();
+        dist = dist.with(Series::new(label, mean, Style::Line, k));
+        if runs.len() > 1 {
+            let hi: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1 + r.2]).collect();
+            let lo: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 - r.2 > 0.0).map(|r| [r.0 * 1e3, r.1 - r.2]).collect();
+            dist = dist.with(Series::new("", hi, Style::Dashed, k)).with(Series::new("", lo, Style::Dashed, k));
+        }
+    }
+    let mut times = Figure::new(
+        "growth-drift-times",
+        "Growth and drift times of the peak mass",
+        Axis::log("peak mass m_p", "g"),
+        Axis::log("time", "yr"),
+    );
+    for (k, r) in runs.iter().enumerate() {
+        let g = growth_times(&r.history);
+        let name = |what: &str| if k == 0 { what.to_string() } else { String::new() };
+        times = times
+            .with(Series::new(name("t_grow"), g.iter().map(|x| [x.0 * 1e3, x.1 / YEAR]).collect(), Style::Line, 0))
+            .with(Series::new(name("t_drift"), g.iter().map(|x| [x.0 * 1e3, x.2 / YEAR]).collect(), Style::Line, 1))
+            .with(Series::new(
+                name("t_drift/30"),
+                g.iter().map(|x| [x.0 * 1e3, x.2 / 30.0 / YEAR]).collect(),
+                Style::Dashed,
+                1,
+            ));
+    }
+    let mut peak = Figure::new(
+        "peak-mass-history",
+        "Peak and largest mass over time",
+        Axis::log("time", "yr"),
+        Axis::log("mass", "g"),
+    );
+    for (k, r) in runs.iter().enumerate() {
+        let name = |what: &str| if k == 0 { what.to_string() } else { String::new() };
+        peak = peak
+            .with(Series::new(
+                name("m_p"),
+                r.history.iter().map(|s| [s.t / YEAR, s.m_p * 1e3]).collect(),
+                Style::Line,
+                0,
+            ))
+            .with(Series::new(
+                name("m_max"),
+                r.history.iter().map(|s| [s.t / YEAR, s.m_max * 1e3]).collect(),
+                Style::Dashed,
+                1,
+            ));
+    }
+    SceneOutput {
+        scalars: summary(runs),
+        figures: vec![dist, times, peak],
+        notes: endings(runs),
+        extra: crate::scene::core::Extra::None,
+    }
+}

@@ -245,6 +245,12 @@ impl<'a> Control<'a> {
         self
     }
 
+    /// Another label for the same quantity in this context.
+    pub fn labelled(mut self, label: &'static str) -> Self {
+        self.label = label;
+        self
+    }
+
     /// Marks the control as styling only.
     pub fn style_only(mut self) -> Self {
         self.style_only = true;

@@ -15,6 +15,7 @@
 
 pub mod controls;
 pub mod core;
+pub mod quantities;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{

@@ -1,5 +1,6 @@
 //! Parameters shared by the global dust-batch scenes (thesis ch. 5).
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::disk::common::DiskParams;
 use crate::scene::core::{Progress, SceneError};
@@ -56,13 +57,12 @@ impl BatchParams {
         let mut c = self.disk.controls(&d.disk);
         c.push(Control::choice("growth", "growth", &mut self.growth, vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")]).default(d.growth.clone()).doc("porosity treatment"));
         c.push(Control::toggle("coagulation", "coagulation", &mut self.coagulation).default(d.coagulation).doc("off: drift only (Fig. 5.1)"));
-        let v = ("m/s", 1.0);
-        c.push(Control::number("v_frag", "fragmentation/bouncing threshold", &mut self.v_frag).default(d.v_frag).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("same-size collisions above it stop growth (1e4: none)"));
-        c.push(Control::number("v_eros", "erosion threshold", &mut self.v_eros).default(d.v_eros).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("collisions with monomers above it stop growth (1e4: none)"));
+        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).labelled("fragmentation/bouncing threshold").doc("same-size collisions above it stop growth (1e4: none)"));
+        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it stop growth (1e4: none)"));
         c.push(Control::number("r_in_au", "innermost batch", &mut self.r_in_au).default(d.r_in_au).unit("AU").range(1.1, 100.0).log().doc("initial radius of the first batch"));
         c.push(Control::number("r_out_au", "outermost batch", &mut self.r_out_au).default(d.r_out_au).unit("AU").range(2.0, 1000.0).log().doc("initial radius of the last batch"));
         c.push(Control::count("batches", "batches", &mut self.batches).default(d.batches).range(10 as f64, 2000 as f64).doc("number of batches (10²–10³ in the thesis)"));
-        c.push(Control::number("duration_yr", "duration", &mut self.duration_yr).default(d.duration_yr).unit("yr").range(1e2, 1e7).log().doc("time followed"));
+        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c
     }
 

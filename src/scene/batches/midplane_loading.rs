@@ -1,6 +1,7 @@
 //! Scene "Midplane loading" (thesis Fig. 5.15): the largest midplane
 //! dust-to-gas ratio allowed by the turbulence that settled dust drives itself.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -64,7 +65,7 @@ impl Params {
             Control::number("z_min_solar", "smallest Z* / solar", &mut self.z_min_solar).default(d.z_min_solar).range(0.1, 20.0).log().doc("first metallicity of settled particles"),
             Control::number("z_max_solar", "largest Z* / solar", &mut self.z_max_solar).default(d.z_max_solar).range(0.1, 20.0).log().doc("last metallicity"),
             Control::count("n_z", "metallicities", &mut self.n_z).default(d.n_z).range(1 as f64, 8 as f64).doc("log-spaced"),
-            Control::number("disk_mass", "disk mass", &mut self.disk_mass).default(d.disk_mass).unit("M_sun").range(1e-3, 0.5).log().doc("mass of the three disks"),
+            quantities::disk_mass(&mut self.disk_mass).default(d.disk_mass).doc("mass of the three disks"),
         ]
     }
 }

@@ -2,6 +2,7 @@
 //! contact of two equal monomers, its characteristic energies, and the
 //! collision regimes of aggregates.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -87,8 +88,8 @@ impl Params {
         vec![
             Control::material("material", "material", &mut self.material).default(d.material.name.clone()).doc("monomer material (Table 2.2)"),
             Control::number("radius", "monomer radius r₀", &mut self.radius).default(d.radius).unit("m").shown("µm", 1e6).range(1e-8, 1e-2).log().doc("radius of one monomer (default 0.1 µm)"),
-            Control::number("surface_energy", "surface energy γ", &mut self.surface_energy).default(d.surface_energy).unit("J m^-2").shown("J/m²", 1.0).range(1e-3, 10.0).log().doc("combined surface energy (2γ_L; default 0.74)"),
-            Control::number("z0", "force range z₀", &mut self.z0).default(d.z0).unit("m").shown("nm", 1e9).range(1e-10, 1e-9).doc("range of surface forces (default 0.3 nm)"),
+            quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy (2γ_L; default 0.74)"),
+            quantities::force_range(&mut self.z0).default(d.z0).doc("range of surface forces (default 0.3 nm)"),
             Control::number("xi", "rolling displacement ξ", &mut self.xi).default(d.xi).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("critical rolling displacement (default 0.1 nm)"),
             Control::number("monomers", "monomers per aggregate N", &mut self.monomers).default(d.monomers).range(1.0, 1e9).log().doc("monomers in each of two equal aggregates"),
             Control::number("contacts", "contacts n_c", &mut self.contacts).default(d.contacts).range(1.0, 1e9).log().doc("contacts in the colliding pair"),

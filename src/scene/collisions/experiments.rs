@@ -1,6 +1,7 @@
 //! Scene "Experiments" (thesis Sect. 2.4, Figs. 2.6 and 2.11): the best-fit
 //! restitution curves of the 17 collision experiments of Table 2.1.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -74,7 +75,7 @@ impl Params {
             Control::choice("experiment", "experiment", &mut self.experiment, options()).default(d.experiment.clone()).doc("experiment of Table 2.1"),
             Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all).default(d.all).doc("also show every experiment as a small plot"),
             Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(4 as f64, 400 as f64).doc("points per curve"),
-            Control::number("rtol", "solver tolerance", &mut self.rtol).default(d.rtol).range(1e-10, 1e-3).log().doc("relative tolerance of the integrator (default 1e-5)"),
+            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("relative tolerance of the integrator (default 1e-5)"),
         ]
     }
 }

@@ -2,6 +2,7 @@
 //! restitution model to measured coefficients of restitution.
 
 use super::common::CollisionParams;
+use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange, ParamError};
 use super::common::describe;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -157,7 +158,7 @@ impl Params {
             Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2 as f64, 100 as f64).doc("grid points in Y"),
             Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
             Control::number("yield_strength", "fixed Y", &mut self.yield_strength).default(d.yield_strength).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("Y when held fixed"),
-            Control::number("rtol", "solver tolerance", &mut self.rtol).default(d.rtol).range(1e-10, 1e-3).log().doc("integrator tolerance (default 1e-4)"),
+            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("integrator tolerance (default 1e-4)"),
         ]
     }
 

@@ -3,6 +3,7 @@
 //! JKR curves, and its energy budget.
 
 use super::common::{CollisionParams, reference_curves};
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Cursor, Extra, Trajectory, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -80,8 +81,7 @@ impl Params {
         let mut c = self.collision.controls(&d.collision);
         c.push(Control::number("follow", "follow sticking", &mut self.follow).default(d.follow).unit("t_H").range(0.0, 50.0).doc("Hertz times to follow a sticking collision after sticking is certain"));
         c.push(
-            Control::number("cursor", "time cursor", &mut self.cursor).default(d.cursor).range(0.0, 1.0).doc("time of the sketch, as a fraction of the run")
-            .style_only(),
+            quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time of the sketch, as a fraction of the run").style_only(),
         );
         c
     }

@@ -1,5 +1,6 @@
 //! Parameters shared by the debris-disk scenes (thesis ch. 6).
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::physics::debris::{DebrisMaterial, TABLE_6_1};
 use serde::{Deserialize, Serialize};
@@ -30,7 +31,7 @@ impl FragmentParams {
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         vec![
             Control::number("velocity", "relative velocity", &mut self.velocity).default(d.velocity).unit("m s^-1").shown("m/s", 1.0).range(1e-2, 1e4).log().doc("collision velocity"),
-            Control::number("eta", "efficiency η", &mut self.eta).default(d.eta).range(1e-6, 1.0).log().doc("fraction of the kinetic energy that makes surface"),
+            quantities::efficiency(&mut self.eta).default(d.eta).doc("fraction of the kinetic energy that makes surface"),
             Control::number("alpha", "slope α", &mut self.alpha).default(d.alpha).range(3.01, 3.99).doc("fragment distribution n(s) ~ s^-α, 3 < α < 4"),
             Control::number("largest_fraction", "largest fragment / collider mass", &mut self.largest_fraction).default(d.largest_fraction).range(1e-3, 1.0).log().doc("s_max = (fraction)^{1/3} s₀ (default 1/2)"),
         ]

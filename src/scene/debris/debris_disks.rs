@@ -1,6 +1,7 @@
 //! Scene "Debris disks" (thesis Fig. 6.2): the smallest fragment relative to
 //! the blow-out size against disk radius, with observed systems.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -86,7 +87,7 @@ impl Params {
         let d = Self::default();
         vec![
             Control::number("gamma", "surface energy γ", &mut self.gamma).default(d.gamma).unit("J m^-2").shown("J/m²", 1.0).range(1e-5, 10.0).log().doc("surface energy per unit surface"),
-            Control::number("eta", "efficiency η", &mut self.eta).default(d.eta).range(1e-6, 1.0).log().doc("fraction of kinetic energy into surface"),
+            quantities::efficiency(&mut self.eta).default(d.eta).doc("fraction of kinetic energy into surface"),
             Control::number("f", "velocity factor f", &mut self.f).default(d.f).range(1e-4, 1.0).log().doc("v_rel / v_K = (1.25e² + i²)^{1/2}"),
             Control::number("luminosity", "luminosity L", &mut self.luminosity).default(d.luminosity).unit("L_sun").range(1e-3, 1e3).log().doc("star of the reference line"),
             Control::toggle("show_printed", "printed (6.8)", &mut self.show_printed).default(d.show_printed).doc("the printed prefactor 2.4"),

@@ -1,6 +1,7 @@
 //! Scene "Collision speeds" (thesis Fig. 4.2): the relative velocity of two
 //! particles over both masses, and its dominant source.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -79,7 +80,7 @@ impl Params {
         let mut c = self.disk.controls(&d.disk);
         c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
         c.push(Control::number("filling", "filling factor φ", &mut self.filling).default(d.filling).range(1e-6, 1.0).log().doc("of both particles"));
-        c.push(Control::number("max_monomers", "largest m/m₀", &mut self.max_monomers).default(d.max_monomers).range(1e3, 1e34).log().doc("end of both mass axes"));
+        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of both mass axes"));
         c.push(Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10 as f64, 400 as f64).doc("per axis"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full closed form instead of (4.11)"));
         c.push(Control::number("epsilon", "dispersion ε", &mut self.epsilon).default(d.epsilon).range(0.0, 1.0).doc("of the mass-to-area ratio"));

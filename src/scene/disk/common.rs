@@ -1,6 +1,7 @@
 //! What the disk scenes (thesis ch. 4) share: the gas disk, the monomers and
 //! the semi-analytical growth model.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::physics::aggregate::Monomer;
 use crate::physics::disk::{GasDisk, Profile};
@@ -54,7 +55,7 @@ impl DiskParams {
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         vec![
             Control::choice("profile", "gas disk", &mut self.profile, vec![("mmsn", "MMSN (4.1)"), ("power-law", "truncated power law (5.1)")]).default(d.profile.clone()).doc("surface density profile"),
-            Control::number("disk_mass", "disk mass", &mut self.disk_mass).default(d.disk_mass).unit("M_sun").range(1e-4, 0.5).log().doc("power-law disk mass"),
+            quantities::disk_mass(&mut self.disk_mass).default(d.disk_mass).doc("power-law disk mass"),
             Control::number("r_c", "R_c", &mut self.r_c).default(d.r_c).unit("AU").range(5.0, 300.0).log().doc("power-law characteristic radius"),
             Control::number("slope", "slope γ", &mut self.slope).default(d.slope).range(0.5, 1.9).doc("power-law slope"),
             Control::toggle("cold", "cold disk (T/2)", &mut self.cold).default(d.cold).doc("halve the temperature"),
@@ -127,8 +128,8 @@ impl GrowthParams {
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         let mut c = self.disk.controls(&d.disk);
         let v = ("m/s", 1.0);
-        c.push(Control::number("v_frag", "fragmentation velocity", &mut self.v_frag).default(d.v_frag).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"));
-        c.push(Control::number("v_eros", "erosion threshold", &mut self.v_eros).default(d.v_eros).unit("m s^-1").shown(v.0, v.1).range(0.1, 1e4).log().doc("collisions with monomers above it erode (1e4: none)"));
+        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"));
+        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it erode (1e4: none)"));
         c.push(Control::number("v_bounce", "bouncing threshold", &mut self.v_bounce).default(d.v_bounce).unit("m s^-1").shown(v.0, v.1).range(0.01, 1e4).log().doc("compact grains bounce above it (1e4: none)"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
         c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));

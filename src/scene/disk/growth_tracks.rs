@@ -1,6 +1,7 @@
 //! Scene "Growth and drift tracks" (thesis Figs. 4.13, 4.14): m(t) and a(t)
 //! against R(t) from many starting radii.
 
+use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange};
 use super::common::GrowthParams;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -80,7 +81,7 @@ impl Params {
         c.push(Control::number("r_min_au", "innermost start", &mut self.r_min_au).default(d.r_min_au).unit("AU").range(1.1, 300.0).log().doc("first starting radius"));
         c.push(Control::number("r_max_au", "outermost start", &mut self.r_max_au).default(d.r_max_au).unit("AU").range(1.1, 1000.0).log().doc("last starting radius"));
         c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1 as f64, 200 as f64).doc("starting radii, log-spaced"));
-        c.push(Control::number("duration_yr", "duration", &mut self.duration_yr).default(d.duration_yr).unit("yr").range(1e2, 1e8).log().doc("time followed"));
+        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
         c
     }

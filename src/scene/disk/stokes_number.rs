@@ -1,6 +1,7 @@
 //! Scene "Stokes number" (thesis Fig. 4.1): Ωt_s against mass for compact
 //! grains and porous aggregates, with and without Newton drag.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -73,7 +74,7 @@ impl Params {
         c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
         c.push(Control::number("porous_filling", "porous φ", &mut self.porous_filling).default(d.porous_filling).range(1e-6, 1.0).log().doc("filling factor of the constant-φ family"));
         c.push(Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension).default(d.fractal_dimension).range(1.5, 3.0).doc("D_f of the fractal family"));
-        c.push(Control::number("max_monomers", "largest m/m₀", &mut self.max_monomers).default(d.max_monomers).range(1e3, 1e32).log().doc("end of the mass axis"));
+        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of the mass axis"));
         c
     }
 }

@@ -2,6 +2,7 @@
 //! exact solutions of the Smoluchowski equation for the constant, linear and
 //! product kernels (thesis Sect. 4.3; Ormel & Spaans 2008).
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -83,7 +84,7 @@ impl Params {
             Control::choice("kernel", "kernel", &mut self.kernel, vec![("constant", "constant K = 1"), ("linear", "linear K = m₁ + m₂"), ("product", "product K = m₁m₂")]).default(d.kernel.clone()).doc("the analytic test problem"),
             Control::number("time", "time t", &mut self.time).default(d.time).shown(one.0, one.1).range(1e-3, 1e5).log().doc("in units 1/(K₀N₀); the product kernel gels at t = 1"),
             Control::number("particles", "initial particles N₀V", &mut self.particles).default(d.particles).shown(one.0, one.1).range(1e3, 1e100).log().doc("monomers in the simulated volume"),
-            Control::number("groups_per_decade", "groups per decade w*", &mut self.groups_per_decade).default(d.groups_per_decade).shown(one.0, one.1).range(5.0, 400.0).log().doc("resolution of the distribution method (4.26)"),
+            quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26)"),
             Control::number("f_m", "sequence limit f_m", &mut self.f_m).default(d.f_m).shown(one.0, one.1).range(0.01, 1.0).log().doc("(4.22)"),
             Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1 as f64, 64 as f64).doc("independent seeds, run in parallel"),
             Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0 as f64, 1_000_000 as f64).doc("runs use seed, seed + 1, …"),

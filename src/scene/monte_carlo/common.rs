@@ -3,6 +3,7 @@
 //! the last runs, so that switching between these scenes or changing a
 //! display parameter does not rerun.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::disk::common::{DiskParams, radius_control};
 use crate::scene::core::{Progress, Scalar, SceneError};
@@ -84,16 +85,15 @@ impl ColumnParams {
     /// The documented parameters.
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         let mut c = self.disk.controls(&d.disk);
-        let v = ("m/s", 1.0);
         let yr = ("yr", 1.0);
         c.push(radius_control(&mut self.radius_au, "radius of the column").default(d.radius_au));
         c.push(Control::choice("compaction", "compaction", &mut self.compaction, vec![("collisional", "collisional only (Fig. 4.4)"), ("full", "with gas and self-gravity (Fig. 4.6)")]).default(d.compaction.clone()).doc("how aggregates are compressed"));
-        c.push(Control::number("v_eros", "erosion threshold v_eros", &mut self.v_eros).default(d.v_eros).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e4).log().doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"));
-        c.push(Control::number("v_frag", "fragmentation velocity", &mut self.v_frag).default(d.v_frag).unit("m s^-1").shown(v.0, v.1).range(1.0, 1e4).log().doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"));
+        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).labelled("erosion threshold v_eros").doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"));
+        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"));
         c.push(Control::number("c1", "erosion prefactor c₁", &mut self.c1).default(d.c1).range(0.1, 10.0).log().doc("ε_eros = c₁ v/v_eros (4.13)"));
         c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
-        c.push(Control::number("groups_per_decade", "groups per decade w*", &mut self.groups_per_decade).default(d.groups_per_decade).range(5.0, 400.0).log().doc("resolution of the distribution method (4.26); cost grows about as w*²"));
+        c.push(quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26); cost grows about as w*²"));
         c.push(Control::number("f_limit", "sequence limit f_m = f_φ", &mut self.f_limit).default(d.f_limit).range(0.01, 1.0).log().doc("largest relative change of a particle per group event (4.22)–(4.24)"));
         c.push(Control::number("column_mass", "column mass", &mut self.column_mass).default(d.column_mass).unit("kg").range(1e10, 1e30).log().doc("mass in the simulated column; sets its area M/Σ_d"));
         c.push(Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1 as f64, 16 as f64).doc("independent seeds, run in parallel"));

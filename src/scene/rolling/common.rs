@@ -1,6 +1,7 @@
 //! Parameters shared by the rolling scenes (thesis ch. 3): a sphere on a flat
 //! substrate or on an equal sphere.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::core::logspace;
 use crate::physics::contact::Pair;
@@ -53,7 +54,7 @@ impl RollingParams {
         if with_radius {
             c.push(Control::number("radius", "sphere radius", &mut self.radius).default(d.radius).unit("m").shown("µm", 1e6).range(1e-7, 1e-3).log().doc("radius of the rolling sphere"));
         }
-        c.push(Control::number("surface_energy", "surface energy γ", &mut self.surface_energy).default(d.surface_energy).unit("J m^-2").shown("J/m²", 1.0).range(1e-3, 10.0).log().doc("combined surface energy (2γ_L for like materials)"));
+        c.push(quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy (2γ_L for like materials)"));
         c
     }
 

@@ -2,6 +2,7 @@
 //! sideways rocks on its pinned contact at f₀, rolls once ξ passes ξ_crit,
 //! and is damped by the bulk loss of quality factor Q.
 
+use crate::scene::quantities;
 use crate::scene::controls::Control;
 use super::common::RollingParams;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
@@ -82,13 +83,12 @@ impl Params {
         let d = Self::default();
         let mut c = self.contact.controls(&d.contact, true);
         c.push(Control::number("hysteresis", "hysteresis Δγ/γ", &mut self.hysteresis).default(d.hysteresis).range(1e-3, 100.0).log().doc("sets ξ_crit (3.16)"));
-        c.push(Control::number("q", "quality factor Q", &mut self.q).default(d.q).range(1.0, 1e12).log().doc("bulk loss; 1e12 ≈ none"));
+        c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss; 1e12 ≈ none"));
         c.push(Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude).default(d.kick_amplitude).range(1e-4, 1.0).log().doc("amplitude the kick gives an undamped pinned contact"));
         c.push(Control::number("periods", "duration", &mut self.periods).default(d.periods).unit("periods").range(1.0, 200.0).log().doc("length of the run"));
         c.push(Control::count("steps_per_period", "steps per period", &mut self.steps_per_period).default(d.steps_per_period).range(20 as f64, 5000 as f64).doc("Runge–Kutta steps per period"));
         c.push(
-            Control::number("cursor", "time cursor", &mut self.cursor).default(d.cursor).range(0.0, 1.0).doc("time of the marker, fraction of the run")
-            .style_only(),
+            quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time of the marker, fraction of the run").style_only(),
         );
         c
     }

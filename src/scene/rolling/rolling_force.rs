@@ -2,6 +2,7 @@
 //! F = M/R from adhesion hysteresis against radius, with the Dominik &
 //! Tielens and bulk-loss lines and the measured silica forces.
 
+use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange};
 use super::common::{RollingParams, family, family_controls};
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
@@ -108,7 +109,7 @@ impl Params {
             ((d.r_min, d.r_max), (d.h_min, d.h_max, d.n_h)),
         ));
         c.push(Control::number("xi_dt", "DT displacement ξ", &mut self.xi_dt).default(d.xi_dt).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("ξ of the Dominik & Tielens line"));
-        c.push(Control::number("q", "quality factor Q", &mut self.q).default(d.q).range(1.0, 1e6).log().doc("bulk loss line (3.22)"));
+        c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss line (3.22)"));
         c.push(Control::toggle("silica_data", "silica measurements", &mut self.silica_data).default(d.silica_data).doc("Heim, Blum & Wurm, Gundlach"));
         c
     }

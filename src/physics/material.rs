@@ -77,7 +77,7 @@ pub enum Bodies {
 /// two-sphere set-up of ch. 2 is written.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TwoBodies {
-    /// Combined modulus E* (2.1), Pa.
+    /// Combined modulus E* (defined with (2.1)), Pa.
     pub modulus: f64,
     /// Reduced radius R = R₁R₂/(R₁ + R₂), m.
     pub radius: f64,

@@ -1,10 +1,12 @@
 //! The headless harness: the same scenes as the window, from the command line.
 
-use crate::figure::{write_atomically, write_csv, write_png, write_svg};
+use crate::figure::{csv_bytes, png_bytes, svg_string};
+use crate::files::{FileSet, write_atomically};
 use crate::preset::{Preset, SHIPPED, resolve};
 use crate::scene::{self, Progress, SceneOutput};
 use anyhow::{Context, Result, bail};
 use clap::{Parser, Subcommand};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 
 /// grainscope: an explorer of dust microphysics. Without a command it opens the window.
@@ -106,33 +108,62 @@ pub fn apply_sets(preset: &mut Preset, sets: &[String]) -> Result<()> {
 }
 
 /// Writes every figure of `out` as CSV, SVG and PNG into `dir`, plus the
-/// scalars as JSON. Returns the files written.
+/// scalars as JSON, all or nothing: every file is rendered and staged before
+/// any is put in place, so a failure (a full disk, a read-only folder) leaves
+/// the folder as it was and no temporary file behind. Returns the files written.
 pub fn write_outputs(out: &SceneOutput, dir: &Path) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
-    let mut files = Vec::new();
-    for fig in &out.figures {
-        let csv = dir.join(format!("{}.csv", fig.id));
-        write_csv(fig, &csv)?;
-        let svg = dir.join(format!("{}.svg", fig.id));
-        write_svg(fig, &svg, crate::figure::EXPORT_SIZE)?;
-        let png = dir.join(format!("{}.png", fig.id));
-        write_png(fig, &png, crate::figure::EXPORT_SIZE)?;
-        files.extend([csv, svg, png]);
+    let mut set = FileSet::new();
+    let staged = (|| -> Result<()> {
+        for fig in &out.figures {
+            let csv = csv_bytes(fig).with_context(|| format!("cannot write the data of figure '{}'", fig.id))?;
+            set.stage(&dir.join(format!("{}.csv", fig.id)), &csv)?;
+            let svg = svg_string(fig, crate::figure::EXPORT_SIZE)?;
+            set.stage(&dir.join(format!("{}.svg", fig.id)), svg.as_bytes())?;
+            let png = png_bytes(fig, crate::figure::EXPORT_SIZE)?;
+            set.stage(&dir.join(format!("{}.png", fig.id)), &png)?;
+        }
+        let text = serde_json::to_string_pretty(&out.scalars_json())?;
+        set.stage(&dir.join("scalars.json"), text.as_bytes())?;
+        Ok(())
+    })();
+    if let Err(e) = staged {
+        drop(set);
+        return Err(e.context(format!("nothing was written to {} (files already there are unchanged)", dir.display())));
     }
-    let json = dir.join("scalars.json");
-    let text = serde_json::to_string_pretty(&out.scalars_json())?;
-    write_atomically(&json, text.as_bytes())?;
-    files.push(json);
-    Ok(files)
+    Ok(set.commit()?)
 }
 
-fn print_scalars(out: &SceneOutput) {
+/// Whether `error` comes from writing to a closed standard output (the
+/// reader of a pipe went away, as in `grainscope presets | head -1`): the
+/// command then ends quietly.
+pub fn is_closed_pipe(error: &anyhow::Error) -> bool {
+    error
+        .chain()
+        .any(|cause| cause.downcast_ref::<std::io::Error>().is_some_and(|e| e.kind() == std::io::ErrorKind::BrokenPipe))
+}
+
+/// Prints `text` and a newline on standard output, returning the error of a
+/// closed pipe instead of panicking.
+fn say(text: impl std::fmt::Display) -> Result<()> {
+    let mut stdout = std::io::stdout().lock();
+    writeln!(stdout, "{text}")?;
+    Ok(())
+}
+
+/// Prints a message on standard error; a closed standard error is ignored.
+fn tell(text: impl std::fmt::Display) {
+    let _ = writeln!(std::io::stderr(), "{text}");
+}
+
+fn print_scalars(out: &SceneOutput) -> Result<()> {
     for s in &out.scalars {
-        println!("{:<45} {:>12.6e} {}", s.label, s.value, s.unit);
+        say(format_args!("{:<45} {:>12.6e} {}", s.label, s.value, s.unit))?;
     }
     for n in &out.notes {
-        println!("note: {n}");
+        say(format_args!("note: {n}"))?;
     }
+    Ok(())
 }
 
 /// Runs a command of the harness. `Gui` is handled by the caller.
@@ -146,20 +177,15 @@ pub fn run(command: Command) -> Result<()> {
             if let Some(dir) = &out {
                 let files = write_outputs(&result, dir)?;
                 if !json {
-                    eprintln!("wrote {} files to {}", files.len(), dir.display());
+                    tell(format_args!("wrote {} files to {}", files.len(), dir.display()));
                 }
             }
-            if json {
-                println!("{}", serde_json::to_string(&result.scalars_json())?);
-            } else {
-                print_scalars(&result);
-            }
-            Ok(())
+            if json { say(serde_json::to_string(&result.scalars_json())?) } else { print_scalars(&result) }
         }
         Command::Presets => {
             for (file, text) in SHIPPED {
                 let p = Preset::from_ron(text, file)?;
-                println!("{:<30} {:<12} {}", file, p.scene.info().id, p.title);
+                say(format_args!("{:<30} {:<12} {}", file, p.scene.info().id, p.title))?;
             }
             Ok(())
         }
@@ -169,7 +195,7 @@ pub fn run(command: Command) -> Result<()> {
                 format!("unknown scene '{scene}' (scenes: {})", ids.join(", "))
             })?;
             for c in params.controls() {
-                println!("{}", c.doc_line());
+                say(c.doc_line())?;
             }
             Ok(())
         }
@@ -233,7 +259,15 @@ fn fit_command(
         }
         Bounded::Above(x) => serde_json::json!({"best": best, "low": x, "high": null, "kind": "lower limit"}),
         Bounded::Below(x) => serde_json::json!({"best": best, "low": null, "high": x, "kind": "upper limit"}),
+        Bounded::Fixed(x) => serde_json::json!({"best": x, "low": null, "high": null, "kind": "held fixed"}),
+        Bounded::Undetermined { best } => {
+            serde_json::json!({"best": best, "low": null, "high": null, "kind": "undetermined"})
+        }
     };
+    let warning = fit.warning();
+    if let Some(w) = &warning {
+        tell(format_args!("warning: {w}"));
+    }
     let result = serde_json::json!({
         "gamma": describe(&fit.ranges[0], fit.best[0]),
         "t_vis": describe(&fit.ranges[1], fit.best[1]),
@@ -241,18 +275,14 @@ fn fit_command(
         "chi2": fit.chi2_min,
         "collisions": fit.collisions,
         "points": measurements.len(),
+        "warning": warning,
         "units": {"gamma": "J m^-2", "t_vis": "s", "yield_strength": "Pa"},
     });
     if let Some(dir) = out {
         let output = scene::compute(&preset.scene, &progress)?;
         write_outputs(&output, dir)?;
     }
-    if json {
-        println!("{}", serde_json::to_string(&result)?);
-    } else {
-        println!("{}", serde_json::to_string_pretty(&result)?);
-    }
-    Ok(())
+    if json { say(serde_json::to_string(&result)?) } else { say(serde_json::to_string_pretty(&result)?) }
 }
 
 fn reproduce(dir: &Path, quick: bool) -> Result<()> {
@@ -313,7 +343,7 @@ fn reproduce(dir: &Path, quick: bool) -> Result<()> {
     for (name, out) in &monte_carlo.figures {
         write_outputs(out, &dir.join(name))?;
     }
-    print!("{md}");
+    std::io::stdout().lock().write_all(md.as_bytes())?;
     let failures = checks.iter().filter(|c| !c.pass() && !c.known).count();
     if failures > 0 {
         bail!("{failures} published numbers are not reproduced");

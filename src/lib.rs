@@ -4,13 +4,14 @@
 //! The crate is split so that the models never know about the window:
 //! [`physics`] and [`solver`] hold the models, [`scene`] turns parameters into
 //! results and figures through pure `compute` functions, [`figure`] describes
-//! and writes figures, and [`app`] is the eframe front end. The command line
+//! and writes figures, [`files`] writes files so that nothing is lost, and [`app`] is the eframe front end. The command line
 //! ([`cli`]) and the tests call the same `compute` functions as the window.
 
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
 pub mod figure;
+pub mod files;
 pub mod measurements;
 pub mod physics;
 pub mod preset;

@@ -3,6 +3,7 @@
 
 use clap::Parser;
 use grainscope::cli::{Cli, Command};
+use std::io::Write;
 use std::process::ExitCode;
 
 fn main() -> ExitCode {
@@ -11,11 +12,14 @@ fn main() -> ExitCode {
         None => open_window(None),
         Some(Command::Gui { preset }) => open_window(preset),
         Some(command) => grainscope::cli::run(command),
-    };
+    }
+    .and_then(|()| Ok(std::io::stdout().flush()?));
     match result {
         Ok(()) => ExitCode::SUCCESS,
+        // The reader of our output went away (`grainscope presets | head -1`): nothing to say.
+        Err(e) if grainscope::cli::is_closed_pipe(&e) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("error: {e:#}");
+            let _ = writeln!(std::io::stderr(), "error: {e:#}");
             ExitCode::from(2)
         }
     }

@@ -12,7 +12,7 @@
 //! presets keep loading when parameters are added. Unknown keys and bad values
 //! are reported with their line and column. All values are SI.
 
-use crate::figure::write_atomically;
+use crate::files::{WriteError, write_atomically};
 use crate::scene::{ParamError, SceneParams};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -35,12 +35,12 @@ pub struct Preset {
 #[derive(Debug, thiserror::Error)]
 pub enum PresetError {
     /// The file could not be read.
-    #[error("cannot read {path}: {source}")]
+    #[error("cannot read {}: {cause}", path.display())]
     Read {
         /// File.
         path: PathBuf,
-        /// Cause.
-        source: std::io::Error,
+        /// What the operating system said.
+        cause: std::io::Error,
     },
     /// The RON text is malformed or has unknown keys or wrong types.
     #[error("{origin}:{line}:{column}: {message}")]
@@ -55,16 +55,16 @@ pub enum PresetError {
         message: String,
     },
     /// A value is outside its documented range.
-    #[error("{origin}: {source}")]
+    #[error("{origin}: {error}")]
     Invalid {
         /// File name or "<text>".
         origin: String,
         /// The range error.
-        source: Box<ParamError>,
+        error: Box<ParamError>,
     },
     /// The file could not be written.
     #[error(transparent)]
-    Write(#[from] crate::figure::ExportError),
+    Write(#[from] WriteError),
     /// Serialisation failed.
     #[error("cannot serialise preset: {0}")]
     Serialise(String),
@@ -79,13 +79,13 @@ impl Preset {
             column: e.span.start.col,
             message: e.code.to_string(),
         })?;
-        preset.scene.validate().map_err(|e| PresetError::Invalid { origin: origin.into(), source: Box::new(e) })?;
+        preset.scene.validate().map_err(|e| PresetError::Invalid { origin: origin.into(), error: Box::new(e) })?;
         Ok(preset)
     }
 
     /// Reads a preset file.
     pub fn load(path: &Path) -> Result<Preset, PresetError> {
-        let text = std::fs::read_to_string(path).map_err(|source| PresetError::Read { path: path.into(), source })?;
+        let text = std::fs::read_to_string(path).map_err(|cause| PresetError::Read { path: path.into(), cause })?;
         Preset::from_ron(&text, &path.display().to_string())
     }
 
@@ -180,10 +180,7 @@ pub fn resolve(name: &str) -> Result<Preset, PresetError> {
         Some((file, text)) => Preset::from_ron(text, file),
         None => Err(PresetError::Read {
             path: path.into(),
-            source: std::io::Error::new(
-                std::io::ErrorKind::NotFound,
-                "no such file and no shipped preset of that name",
-            ),
+            cause: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file and no shipped preset of that name"),
         }),
     }
 }

@@ -1,25 +1,21 @@
-//! Writing figures to SVG, PNG and CSV files. Every file is written to a
-//! temporary sibling first and renamed into place, so a failed export never
-//! leaves a truncated file or destroys an earlier one.
+//! Writing figures to SVG, PNG and CSV files, through
+//! [`crate::files`]: a failed export never leaves a truncated or temporary
+//! file and never destroys an earlier one.
 
 use super::{Figure, Heatmap, PALETTE, Scale, Style, colormap};
+use crate::files::{WriteError, write_atomically};
 use plotters::coord::Shift;
 use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
 use plotters::prelude::*;
-use std::path::{Path, PathBuf};
+use std::path::Path;
 use std::sync::Once;
 
 /// Why an export failed; the message names the file.
 #[derive(Debug, thiserror::Error)]
 pub enum ExportError {
     /// The file could not be written.
-    #[error("cannot write {path}: {source}")]
-    Io {
-        /// Target path.
-        path: PathBuf,
-        /// Underlying error.
-        source: std::io::Error,
-    },
+    #[error(transparent)]
+    Write(#[from] WriteError),
     /// The figure could not be drawn.
     #[error("cannot draw figure '{id}': {message}")]
     Draw {
@@ -28,20 +24,6 @@ pub enum ExportError {
         /// What went wrong.
         message: String,
     },
-}
-
-/// Writes `bytes` to `path` atomically: a temporary file in the same folder,
-/// then a rename. On error the previous file (if any) is untouched.
-pub fn write_atomically(path: &Path, bytes: &[u8]) -> Result<(), ExportError> {
-    let io = |source| ExportError::Io { path: path.to_path_buf(), source };
-    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().ok_or_else(|| io(std::io::Error::other("not a file name")))?;
-    let tmp = dir.join(format!(".{}.{}.tmp", name.to_string_lossy(), std::process::id()));
-    std::fs::write(&tmp, bytes).map_err(io)?;
-    std::fs::rename(&tmp, path).map_err(|e| {
-        let _ = std::fs::remove_file(&tmp);
-        io(e)
-    })
 }
 
 /// The figure's data as CSV: one row per point, columns `series`, x and y,
@@ -74,7 +56,7 @@ pub fn csv_bytes(fig: &Figure) -> Result<Vec<u8>, csv::Error> {
 /// Writes the figure's data to a CSV file.
 pub fn write_csv(fig: &Figure, path: &Path) -> Result<(), ExportError> {
     let bytes = csv_bytes(fig).map_err(|e| ExportError::Draw { id: fig.id.clone(), message: e.to_string() })?;
-    write_atomically(path, &bytes)
+    Ok(write_atomically(path, &bytes)?)
 }
 
 /// Renders the figure as an SVG document.
@@ -89,7 +71,7 @@ pub fn svg_string(fig: &Figure, size: (u32, u32)) -> Result<String, ExportError>
 
 /// Writes the figure as SVG.
 pub fn write_svg(fig: &Figure, path: &Path, size: (u32, u32)) -> Result<(), ExportError> {
-    write_atomically(path, svg_string(fig, size)?.as_bytes())
+    Ok(write_atomically(path, svg_string(fig, size)?.as_bytes())?)
 }
 
 static FONT: Once = Once::new();
@@ -110,7 +92,7 @@ pub fn png_bytes(fig: &Figure, size: (u32, u32)) -> Result<Vec<u8>, ExportError>
 
 /// Writes the figure as PNG.
 pub fn write_png(fig: &Figure, path: &Path, size: (u32, u32)) -> Result<(), ExportError> {
-    write_atomically(path, &png_bytes(fig, size)?)
+    Ok(write_atomically(path, &png_bytes(fig, size)?)?)
 }
 
 /// Compact tick label: plain numbers in a readable range, otherwise scientific.

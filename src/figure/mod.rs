@@ -4,9 +4,7 @@
 
 mod export;
 
-pub use export::{
-    ExportError, csv_bytes, png_bytes, svg_string, tick_label, write_atomically, write_csv, write_png, write_svg,
-};
+pub use export::{ExportError, csv_bytes, png_bytes, svg_string, tick_label, write_csv, write_png, write_svg};
 
 /// Axis scale.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]

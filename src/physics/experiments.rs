@@ -24,23 +24,34 @@ pub enum Bounded {
     Above(f64),
     /// Only an upper limit is known ("< x").
     Below(f64),
+    /// Held fixed at this value, not fitted.
+    Fixed(f64),
+    /// The data do not determine a range (no more measurements than free
+    /// parameters, or an exact fit that leaves χ² < 2 χ²_min empty): the best
+    /// point found, which is not a measurement.
+    Undetermined {
+        /// Best point found.
+        best: f64,
+    },
 }
 
 impl Bounded {
     /// The value to draw a model curve with: the best value, or the limit itself.
     pub fn representative(&self) -> f64 {
         match *self {
-            Bounded::Value { best, .. } => best,
-            Bounded::Above(x) | Bounded::Below(x) => x,
+            Bounded::Value { best, .. } | Bounded::Undetermined { best } => best,
+            Bounded::Above(x) | Bounded::Below(x) | Bounded::Fixed(x) => x,
         }
     }
 
-    /// Lower and upper end of the allowed range (infinite on the open side).
+    /// Lower and upper end of the allowed range (infinite on the open side;
+    /// NaN for a fixed or undetermined quantity, which has no measured range).
     pub fn range(&self) -> (f64, f64) {
         match *self {
             Bounded::Value { best, plus, minus } => (best - minus, best + plus),
             Bounded::Above(x) => (x, f64::INFINITY),
             Bounded::Below(x) => (0.0, x),
+            Bounded::Fixed(_) | Bounded::Undetermined { .. } => (f64::NAN, f64::NAN),
         }
     }
 

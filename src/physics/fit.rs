@@ -84,9 +84,33 @@ pub struct Fit {
     pub ranges: [Bounded; 3],
     /// Collisions integrated.
     pub collisions: usize,
+    /// Number of measurements fitted.
+    pub points: usize,
+    /// Number of fitted (not fixed) parameters.
+    pub free: usize,
 }
 
 impl Fit {
+    /// Whether there are no more measurements than free parameters: any
+    /// such data can be matched exactly, so the fit determines nothing.
+    pub fn under_determined(&self) -> bool {
+        self.free > 0 && self.points <= self.free
+    }
+
+    /// A warning for an under-determined fit, naming the counts.
+    pub fn warning(&self) -> Option<String> {
+        self.under_determined().then(|| {
+            format!(
+                "under-determined fit: {} measurement{} for {} free parameter{}; any such data can be matched, \
+                 so no range is reported. Add measurements or hold parameters fixed.",
+                self.points,
+                if self.points == 1 { "" } else { "s" },
+                self.free,
+                if self.free == 1 { "" } else { "s" },
+            )
+        })
+    }
+
     /// χ² at grid indices (i, j, k).
     pub fn chi2_at(&self, i: usize, j: usize, k: usize) -> f64 {
         self.chi2[(i * self.grids[1].len() + j) * self.grids[2].len() + k]
@@ -217,7 +241,16 @@ pub fn fit(
         model_restitution(setup_for, params, &velocities, opts).map_or(f64::INFINITY, |m| chi2(&m, data))
     };
     let mut ranges = [Bounded::Below(0.0); 3];
+    let under_determined = data.len() <= free.len();
     for p in 0..3 {
+        if let Some(value) = searches[p].fixed {
+            ranges[p] = Bounded::Fixed(value);
+            continue;
+        }
+        if under_determined {
+            ranges[p] = Bounded::Undetermined { best: best[p] };
+            continue;
+        }
         let mut lo = best[p];
         let mut hi = best[p];
         for (n, c) in chi2_grid.iter().enumerate() {
@@ -275,10 +308,22 @@ pub fn fit(
         ranges[p] = match (open_low, open_high) {
             (false, true) => Bounded::Above(lo),
             (true, false) => Bounded::Below(hi),
+            // A range of zero width (an exact fit, χ²_min = 0) is no measurement.
+            _ if hi <= lo => Bounded::Undetermined { best: best[p] },
             _ => Bounded::Value { best: best[p], plus: hi - best[p], minus: best[p] - lo },
         };
     }
-    Ok(Fit { grids, chi2: chi2_grid, grid_best, best, chi2_min, ranges, collisions })
+    Ok(Fit {
+        grids,
+        chi2: chi2_grid,
+        grid_best,
+        best,
+        chi2_min,
+        ranges,
+        collisions,
+        points: data.len(),
+        free: free.len(),
+    })
 }
 
 /// Minimises `f` from `start` with initial simplex steps `steps` (Nelder–Mead,

@@ -35,9 +35,16 @@ pub enum PhysicsError {
     /// A run configuration is inconsistent.
     #[error("{0}")]
     Invalid(String),
-    /// The integrator failed.
+    /// The integrator failed. (Not a `source`: the message already says why,
+    /// and error chains would print it twice.)
     #[error("integration failed: {0}")]
-    Solver(#[from] crate::solver::SolverError),
+    Solver(crate::solver::SolverError),
+}
+
+impl From<crate::solver::SolverError> for PhysicsError {
+    fn from(e: crate::solver::SolverError) -> Self {
+        PhysicsError::Solver(e)
+    }
 }
 
 /// Mass of a homogeneous sphere, m = (4/3)πρr³, kg (density in kg m⁻³, radius in m).

@@ -296,7 +296,7 @@ impl<'a> Control<'a> {
         match &self.kind {
             ControlKind::Number { value, min, max, .. } => {
                 if !(value.is_finite() && **value >= *min && **value <= *max) {
-                    return Err(out(format!("{value:e}"), format!("{min:e}"), format!("{max:e}")));
+                    return Err(out(format!("{value:?}"), format!("{min:e}"), format!("{max:e}")));
                 }
             }
             ControlKind::Count { value, min, max } => {
@@ -339,6 +339,16 @@ impl<'a> Control<'a> {
     /// Sets the value from text (SI units for numbers, `true`/`false`,
     /// a material name), then checks the range. On error the value is unchanged.
     pub fn set_text(&mut self, text: &str) -> Result<(), ParamError> {
+        self.set_text_checked(text).map_err(|e| match e {
+            // Name the value as the user wrote it, not as it reads back.
+            ParamError::OutOfRange { key, min, max, unit, .. } => {
+                ParamError::OutOfRange { key, value: text.trim().to_string(), min, max, unit }
+            }
+            other => other,
+        })
+    }
+
+    fn set_text_checked(&mut self, text: &str) -> Result<(), ParamError> {
         let parse_err = |expected| ParamError::Parse { key: self.key.into(), value: text.into(), expected };
         match &mut self.kind {
             ControlKind::Number { value, .. } => {

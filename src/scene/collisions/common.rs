@@ -167,5 +167,7 @@ pub fn describe(b: &Bounded, unit: &str, scale: f64) -> String {
         }
         Bounded::Above(x) => format!("> {} {unit}", t(x * scale)),
         Bounded::Below(x) => format!("< {} {unit}", t(x * scale)),
+        Bounded::Fixed(x) => format!("{} {unit} (held fixed)", t(x * scale)),
+        Bounded::Undetermined { best } => format!("undetermined (best point {} {unit})", t(best * scale)),
     }
 }

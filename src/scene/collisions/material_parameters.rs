@@ -85,6 +85,7 @@ impl Column {
             }
             Bounded::Above(v) => self.lower.push([x, v / norm]),
             Bounded::Below(v) => self.upper.push([x, v / norm]),
+            Bounded::Fixed(_) | Bounded::Undetermined { .. } => {}
         }
     }
 }

@@ -17,4 +17,5 @@ pub mod physics;
 pub mod preset;
 pub mod reproduce;
 pub mod scene;
+pub mod session;
 pub mod solver;

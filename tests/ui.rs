@@ -97,3 +97,74 @@ fn a_restored_session_keeps_each_scenes_settings_by_id() {
     assert!(!restored.params.contains_key("no-such-scene"));
     assert_eq!(restored.params.len(), grainscope::scene::SCENES.len());
 }
+
+/// Types `text` into the value field next to the slider labelled `label`
+/// and presses Enter, as a user does.
+fn type_into_slider(h: &mut Harness<'static, GrainscopeApp>, label: &str, text: &str) {
+    h.get_by_role_and_label(Role::SpinButton, label).click();
+    h.run();
+    h.run();
+    h.event(egui::Event::Text(text.to_string()));
+    h.run();
+    h.key_press(egui::Key::Enter);
+    h.run();
+    h.run();
+}
+
+#[test]
+fn a_typed_value_outside_its_range_is_refused_with_a_notice() {
+    let mut h = harness();
+    h.run();
+    let velocity = |h: &Harness<'static, GrainscopeApp>| h.state().params().clone();
+    let before = velocity(&h);
+    for typed in ["1e300", "-1", "nan", "abc"] {
+        type_into_slider(&mut h, "impact velocity v", typed);
+        assert_eq!(velocity(&h), before, "'{typed}' changed the parameters");
+        let (key, message) = h.state().control_notice().expect("a notice");
+        assert_eq!(key, "velocity");
+        assert!(message.contains(typed) && message.contains("kept 8"), "{message}");
+        assert!(message.contains("1e-3 … 1000 m/s"), "{message}");
+        h.get_by_label_contains(&format!("impact velocity v: {typed}"));
+    }
+    // A valid value is taken and clears the notice.
+    type_into_slider(&mut h, "impact velocity v", "4");
+    assert!(h.state().control_notice().is_none());
+    let e = h.state().output().and_then(|o| o.scalar("e")).expect("e");
+    assert!((e - 0.222).abs() < 0.002, "{e}");
+}
+
+#[test]
+fn a_long_status_message_wraps_inside_the_window() {
+    let width = 800.0;
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(width, 700.0))
+        .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), GrainscopeApp::new(egui::Context::default(), None));
+    h.run();
+    let long = format!("preset not loaded: {}", "a very long path segment/".repeat(20));
+    h.state_mut().import_data(std::path::Path::new(&long));
+    h.run();
+    let node = h.get_by_label_contains("a very long path segment");
+    assert!(node.rect().max.x <= width + 0.5, "the message runs off the window: {:?}", node.rect());
+    assert!(node.rect().height() > 30.0, "the message did not wrap: {:?}", node.rect());
+}
+
+#[test]
+fn an_unreadable_session_file_starts_clean_and_is_kept() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("session.ron");
+    std::fs::write(&path, "(scene: \"rocking\", params: {\"rocking\": Rocking((q: ").expect("write");
+    let mut app = GrainscopeApp::new(egui::Context::default(), None);
+    app.open_session(path.clone(), None);
+    assert_eq!(app.session, grainscope::app::Session::default());
+    assert_eq!(app.notices().len(), 1, "{:?}", app.notices());
+    assert!(app.notices()[0].contains("kept as"), "{:?}", app.notices());
+    assert!(!path.exists());
+    // Saving writes a fresh, readable session next to the kept file.
+    app.session.scene = "rocking".into();
+    app.save_session();
+    let mut again = GrainscopeApp::new(egui::Context::default(), None);
+    again.open_session(path.clone(), None);
+    assert_eq!(again.session.scene, "rocking");
+    assert!(again.notices().is_empty());
+    assert_eq!(std::fs::read_dir(dir.path()).expect("dir").count(), 2);
+}

@@ -11,18 +11,39 @@ pub use worker::Worker;
 use crate::figure::{self, Figure, Series, Style};
 use crate::preset::{Preset, resolve};
 use crate::scene::{self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams};
-use serde::{Deserialize, Serialize};
-use std::collections::BTreeMap;
+pub use crate::session::{Pin, Session};
+use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
 
-/// Key of the session in eframe's storage.
+/// Key under which earlier versions kept the session in eframe's storage
+/// (read once when no session file exists yet).
 const SESSION_KEY: &str = "grainscope-session";
 
-/// Opens the explorer window, optionally with a preset.
+/// Environment variable naming the session file (default: `session.ron` in
+/// the platform's data folder for grainscope).
+pub const SESSION_ENV: &str = "GRAINSCOPE_SESSION";
+
+/// Where the session is kept.
+pub fn session_path() -> Option<PathBuf> {
+    match std::env::var_os(SESSION_ENV) {
+        Some(p) if !p.is_empty() => Some(PathBuf::from(p)),
+        _ => eframe::storage_dir("grainscope").map(|d| d.join("session.ron")),
+    }
+}
+
+/// Opens the explorer window, optionally with a preset. A preset that cannot
+/// be loaded does not stop the window: it opens with the restored session and
+/// shows why the preset was not loaded.
 pub fn run(preset: Option<String>) -> anyhow::Result<()> {
-    let initial = preset.map(|p| resolve(&p)).transpose()?;
+    let initial = preset.map(|p| {
+        resolve(&p).map_err(|e| {
+            let message = format!("preset not loaded: {e}");
+            let _ = writeln!(std::io::stderr(), "error: {message}");
+            message
+        })
+    });
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1440.0, 920.0])
@@ -34,86 +55,19 @@ pub fn run(preset: Option<String>) -> anyhow::Result<()> {
         "grainscope",
         options,
         Box::new(move |cc| {
-            let mut app = GrainscopeApp::new(cc.egui_ctx.clone(), cc.storage);
-            if let Some(p) = initial {
-                app.apply_preset(p, "command line");
+            let mut app = GrainscopeApp::new(cc.egui_ctx.clone(), None);
+            if let Some(path) = session_path() {
+                app.open_session(path, cc.storage);
+            }
+            match initial {
+                Some(Ok(p)) => app.apply_preset(p, "command line"),
+                Some(Err(message)) => app.notify(message),
+                None => {}
             }
             Ok(Box::new(app))
         }),
     )
     .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
-}
-
-/// Curves kept for comparison.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-pub struct Pin {
-    /// Parameters they were computed with.
-    pub params: SceneParams,
-    /// Fixed label (sweeps) or empty to label by the parameters that differ.
-    pub label: String,
-    /// (figure id, series) pairs.
-    pub curves: Vec<(String, Series)>,
-    /// Colour index.
-    pub color: usize,
-}
-
-/// What is restored on the next start.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default)]
-pub struct Session {
-    /// Identifier of the open scene.
-    pub scene: String,
-    /// Parameters of every scene, by scene identifier (so adding or
-    /// reordering scenes keeps every scene's settings).
-    pub params: BTreeMap<String, SceneParams>,
-    /// Pinned curves.
-    pub pins: Vec<Pin>,
-    /// Large fonts and full screen.
-    pub lecture: bool,
-    /// Folder for quick exports.
-    pub export_dir: String,
-    /// Path typed for loading and saving presets.
-    pub preset_path: String,
-    /// Path typed for importing measurements.
-    pub data_path: String,
-}
-
-impl Default for Session {
-    fn default() -> Self {
-        Session {
-            scene: SCENES[0].id.to_string(),
-            params: SCENES
-                .iter()
-                .filter_map(|s| SceneParams::default_for(s.id).map(|p| (s.id.to_string(), p)))
-                .collect(),
-            pins: Vec::new(),
-            lecture: false,
-            export_dir: "exports".into(),
-            preset_path: "presets/my-preset.ron".into(),
-            data_path: "assets/examples/wall-mica-synthetic.csv".into(),
-        }
-    }
-}
-
-impl Session {
-    /// Repairs a restored session: scenes that are unknown, stored under
-    /// another scene's id or invalid are dropped, missing ones get defaults.
-    pub fn repaired(mut self) -> Session {
-        self.params.retain(|id, p| p.info().id == id && p.validate().is_ok());
-        for (id, p) in Session::default().params {
-            self.params.entry(id).or_insert(p);
-        }
-        self.pins.retain(|pin| pin.params.validate().is_ok());
-        if !self.params.contains_key(&self.scene) {
-            self.scene = SCENES[0].id.to_string();
-        }
-        self
-    }
-
-    /// Position of the open scene in [`SCENES`].
-    fn index(&self) -> usize {
-        SCENES.iter().position(|s| s.id == self.scene).unwrap_or(0)
-    }
 }
 
 /// Results of the worker.
@@ -157,6 +111,15 @@ pub struct GrainscopeApp {
     live_scene: Option<usize>,
     /// Default parameters of every scene, in the order of [`SCENES`].
     defaults: Vec<SceneParams>,
+    /// Messages that stay until dismissed (an unreadable session, a preset
+    /// given on the command line that could not be loaded).
+    notices: Vec<String>,
+    /// A value typed into a control that was refused: (control key, why).
+    control_notice: Option<(String, String)>,
+    /// The session file, written on save (none in tests).
+    session_path: Option<PathBuf>,
+    /// Whether saving the session failed already (said once).
+    session_save_failed: bool,
 }
 
 impl GrainscopeApp {
@@ -181,6 +144,61 @@ impl GrainscopeApp {
             lecture_applied: None,
             live_scene: None,
             defaults: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
+            notices: Vec::new(),
+            control_notice: None,
+            session_path: None,
+            session_save_failed: false,
+        }
+    }
+
+    /// Restores the session from the file at `path` (kept there from now on).
+    /// With no file yet, a session kept by an earlier version in `storage` is
+    /// used. An unreadable file leaves the default settings and a notice.
+    pub fn open_session(&mut self, path: PathBuf, storage: Option<&dyn eframe::Storage>) {
+        let restored = crate::session::load(&path);
+        if restored.found {
+            self.session = restored.session;
+        } else if let Some(old) = storage.and_then(|s| eframe::get_value::<Session>(s, SESSION_KEY))
+            && restored.notice.is_none()
+        {
+            self.session = old.repaired();
+        } else {
+            self.session = restored.session;
+        }
+        if let Some(notice) = restored.notice {
+            self.notify(notice);
+        }
+        self.session_path = Some(path);
+        self.lecture_applied = None;
+    }
+
+    /// Shows a message that stays until dismissed.
+    pub fn notify(&mut self, message: String) {
+        if !self.notices.contains(&message) {
+            self.notices.push(message);
+        }
+    }
+
+    /// Messages shown until dismissed.
+    pub fn notices(&self) -> &[String] {
+        &self.notices
+    }
+
+    /// The notice of a refused control value: (key, why).
+    pub fn control_notice(&self) -> Option<(&str, &str)> {
+        self.control_notice.as_ref().map(|(k, m)| (k.as_str(), m.as_str()))
+    }
+
+    /// Writes the session file, saying once if that fails.
+    pub fn save_session(&mut self) {
+        let Some(path) = &self.session_path else { return };
+        match crate::session::save(&self.session, path) {
+            Ok(()) => self.session_save_failed = false,
+            Err(e) if !self.session_save_failed => {
+                self.session_save_failed = true;
+                self.notify(format!("the session could not be saved: {e}"));
+            }
+            Err(_) => {}
         }
     }
 
@@ -207,6 +225,7 @@ impl GrainscopeApp {
     /// Opens scene `i` of [`SCENES`].
     fn open_scene(&mut self, i: usize) {
         self.session.scene = SCENES[i].id.to_string();
+        self.control_notice = None;
     }
 
     /// The current scene's last good output.
@@ -397,6 +416,9 @@ impl GrainscopeApp {
         self.poll(&ctx);
         self.apply_lecture(&ctx);
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
+        if !self.notices.is_empty() {
+            egui::Panel::top("notices").show(ui, |ui| self.notices_bar(ui));
+        }
         egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
         egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
             egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
@@ -448,6 +470,21 @@ impl GrainscopeApp {
         });
     }
 
+    fn notices_bar(&mut self, ui: &mut egui::Ui) {
+        let mut dismissed = None;
+        for (i, notice) in self.notices.iter().enumerate() {
+            ui.horizontal(|ui| {
+                if ui.button("Dismiss").clicked() {
+                    dismissed = Some(i);
+                }
+                ui.add(egui::Label::new(egui::RichText::new(notice).color(ui.visuals().warn_fg_color)).wrap());
+            });
+        }
+        if let Some(i) = dismissed {
+            self.notices.remove(i);
+        }
+    }
+
     fn status_bar(&mut self, ui: &mut egui::Ui) {
         ui.horizontal(|ui| {
             if self.worker.busy() {
@@ -466,10 +503,11 @@ impl GrainscopeApp {
                     self.status = "cancelled; showing the last good result".into();
                 }
             }
+            // Long messages wrap instead of running off the window's edge.
             if let Some(e) = &self.error {
-                ui.colored_label(egui::Color32::from_rgb(200, 40, 40), e);
+                ui.add(egui::Label::new(egui::RichText::new(e).color(egui::Color32::from_rgb(200, 40, 40))).wrap());
             } else {
-                ui.label(&self.status);
+                ui.add(egui::Label::new(&self.status).wrap());
             }
         });
     }
@@ -545,29 +583,91 @@ impl GrainscopeApp {
             let path = PathBuf::from(&self.session.data_path);
             self.import_data(&path);
         }
+        // A refused typed value: shown under its control until the control
+        // takes a valid value (or another is refused).
+        let shown_notice = self.control_notice.clone();
+        let mut refused: Option<(String, String)> = None;
+        let mut accepted: Option<String> = None;
         {
             let params = self.params_mut();
             let mut controls = params.controls();
             egui::Grid::new("controls").num_columns(1).striped(false).show(ui, |ui| {
                 for c in controls.iter_mut() {
-                    let (label, unit, doc) = (c.label, c.unit, c.doc);
+                    let (key, label, unit, doc) = (c.key, c.label, c.unit, c.doc);
                     match &mut c.kind {
                         ControlKind::Number { value, min, max, log, display_scale } => {
                             let mut shown = **value * *display_scale;
                             let (lo, hi) = (*min * *display_scale, *max * *display_scale);
-                            let mut slider = egui::Slider::new(&mut shown, lo..=hi).logarithmic(*log).text(label);
+                            let typed = std::cell::RefCell::new(None::<String>);
+                            // Typed values are not clamped by the widget: a value outside
+                            // the range is refused with a notice naming the range.
+                            let mut slider = egui::Slider::new(&mut shown, lo..=hi)
+                                .logarithmic(*log)
+                                .text(label)
+                                .clamping(egui::SliderClamping::Never)
+                                .update_while_editing(false)
+                                .custom_parser(|text| {
+                                    *typed.borrow_mut() = Some(text.trim().to_string());
+                                    parse_number(text)
+                                });
                             if !unit.is_empty() {
                                 slider = slider.suffix(format!(" {unit}"));
                             }
                             if *log {
                                 slider = slider.custom_formatter(|v, _| figure::tick_label(v));
                             }
-                            if ui.add(slider).on_hover_text(doc).changed() && shown.is_finite() {
+                            let changed = ui.add(slider).on_hover_text(doc).changed();
+                            let typed = typed.into_inner();
+                            let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+                            if changed && shown.is_finite() && shown >= lo && shown <= hi {
                                 **value = (shown / *display_scale).clamp(*min, *max);
+                                accepted = Some(key.to_string());
+                            } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none()) {
+                                let text = typed.unwrap_or_else(|| shown.to_string());
+                                let why = if parse_number(&text).is_some() {
+                                    "is outside the valid range"
+                                } else {
+                                    "is not a number; valid range"
+                                };
+                                refused = Some((
+                                    key.to_string(),
+                                    format!(
+                                        "{label}: {text}{unit_text} {why} {} … {}{unit_text}; kept {}{unit_text}",
+                                        figure::tick_label(lo),
+                                        figure::tick_label(hi),
+                                        figure::tick_label(**value * *display_scale),
+                                    ),
+                                ));
                             }
                         }
                         ControlKind::Count { value, min, max } => {
-                            ui.add(egui::Slider::new(*value, *min..=*max).text(label)).on_hover_text(doc);
+                            let mut shown = **value as f64;
+                            let typed = std::cell::RefCell::new(None::<String>);
+                            let slider = egui::Slider::new(&mut shown, *min as f64..=*max as f64)
+                                .integer()
+                                .text(label)
+                                .clamping(egui::SliderClamping::Never)
+                                .update_while_editing(false)
+                                .custom_parser(|text| {
+                                    *typed.borrow_mut() = Some(text.trim().to_string());
+                                    parse_number(text)
+                                });
+                            let changed = ui.add(slider).on_hover_text(doc).changed();
+                            let typed = typed.into_inner();
+                            let whole = shown.is_finite() && shown.fract() == 0.0;
+                            if changed && whole && shown >= *min as f64 && shown <= *max as f64 {
+                                **value = shown as usize;
+                                accepted = Some(key.to_string());
+                            } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none()) {
+                                let text = typed.unwrap_or_else(|| shown.to_string());
+                                refused = Some((
+                                    key.to_string(),
+                                    format!(
+                                        "{label}: {text} is not a whole number in the valid range {min} … {max}; kept {}",
+                                        **value
+                                    ),
+                                ));
+                            }
                         }
                         ControlKind::Toggle(v) => {
                             ui.checkbox(v, label).on_hover_text(doc);
@@ -594,8 +694,20 @@ impl GrainscopeApp {
                         }
                     }
                     ui.end_row();
+                    if let Some((k, message)) = &shown_notice
+                        && k == key
+                        && accepted.as_deref() != Some(key)
+                    {
+                        ui.add(egui::Label::new(egui::RichText::new(message).color(ui.visuals().warn_fg_color)).wrap());
+                        ui.end_row();
+                    }
                 }
             });
+        }
+        if let Some(notice) = refused {
+            self.control_notice = Some(notice);
+        } else if accepted.is_some_and(|k| self.control_notice.as_ref().is_some_and(|(n, _)| *n == k)) {
+            self.control_notice = None;
         }
         if material_changed {
             self.params_mut().material_changed();
@@ -844,7 +956,13 @@ impl eframe::App for GrainscopeApp {
         self.show(ui);
     }
 
-    fn save(&mut self, storage: &mut dyn eframe::Storage) {
-        eframe::set_value(storage, SESSION_KEY, &self.session);
+    fn save(&mut self, _storage: &mut dyn eframe::Storage) {
+        self.save_session();
     }
+}
+
+/// Reads a number as typed into a value field (spaces ignored, "−" as minus).
+fn parse_number(text: &str) -> Option<f64> {
+    let cleaned: String = text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
+    cleaned.parse().ok()
 }

@@ -51,6 +51,76 @@ fn bad_input_exits_non_zero_with_a_message() {
     }
 }
 
+/// Runs a command whose standard output is a pipe nobody reads (the reader
+/// closed before the command writes, as `| head -1` does once it has its line).
+fn grainscope_into_closed_pipe(args: &[&str]) -> std::process::Output {
+    let (reader, writer) = std::io::pipe().expect("pipe");
+    drop(reader);
+    Command::new(env!("CARGO_BIN_EXE_grainscope"))
+        .args(args)
+        .stdout(writer)
+        .stderr(std::process::Stdio::piped())
+        .output()
+        .expect("runs")
+}
+
+#[test]
+fn a_closed_pipe_ends_every_command_quietly() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let data = dir.path().join("data.csv");
+    std::fs::write(&data, "velocity [m/s],restitution\n5,0.7\n10,0.75\n20,0.77\n40,0.7\n").expect("write");
+    let data = data.to_str().expect("utf8");
+    for args in [
+        vec!["presets"],
+        vec!["params", "restitution"],
+        vec!["run", "ice-bounce-8ms"],
+        vec!["run", "ice-bounce-8ms", "--json"],
+        vec!["fit", data, "--materials", "AF,mica", "--geometry", "wall", "--radius", "2.45e-6", "--grid", "4"],
+        vec!["--help"],
+        vec!["--version"],
+    ] {
+        let out = grainscope_into_closed_pipe(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(!stderr.contains("panicked") && !stderr.contains("Broken pipe"), "{args:?}: {stderr}");
+        assert!(out.status.success(), "{args:?}: {:?} {stderr}", out.status);
+    }
+}
+
+#[test]
+fn errors_are_said_once_with_the_value_as_written() {
+    let out = grainscope(&["run", "no-such-preset"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.matches("no such file").count(), 1, "{stderr}");
+    let out = grainscope(&["run", "ice-bounce-8ms", "--set", "velocity=-0.5e-0"]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("velocity = -0.5e-0 is outside its valid range"), "{stderr}");
+    let dir = tempfile::tempdir().expect("tempdir");
+    let preset = dir.path().join("bad.ron");
+    std::fs::write(&preset, "(scene: Hysteresis((collision: (velocity: -1e0))))").expect("write");
+    let out = grainscope(&["run", preset.to_str().expect("utf8")]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(stderr.matches("is outside its valid range").count(), 1, "{stderr}");
+    assert!(stderr.contains("bad.ron"), "{stderr}");
+}
+
+#[test]
+fn an_under_determined_fit_warns_and_reports_no_range() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let data = dir.path().join("one.csv");
+    std::fs::write(&data, "velocity [m/s],restitution\n10,0.7\n").expect("write");
+    let args = ["fit", data.to_str().expect("utf8"), "--materials", "AF,mica", "--geometry", "wall"];
+    let out = grainscope(&[&args[..], &["--radius", "2.45e-6", "--grid", "4", "--json"]].concat());
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(stderr.contains("under-determined fit: 1 measurement for 3 free parameters"), "{stderr}");
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    for key in ["gamma", "t_vis", "yield_strength"] {
+        assert_eq!(v[key]["kind"], "undetermined", "{key}: {v}");
+        assert!(v[key]["low"].is_null() && v[key]["high"].is_null(), "{key}: {v}");
+    }
+    assert!(v["warning"].as_str().is_some_and(|w| w.contains("under-determined")));
+}
+
 #[test]
 fn presets_and_params_list() {
     let out = grainscope(&["presets"]);

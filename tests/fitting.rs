@@ -152,3 +152,39 @@ fn the_fit_scene_runs_on_the_shipped_preset() {
     assert_eq!(out.scalar("yield_strength"), Some(1.92e8));
     assert!(matches!(fixed, SceneParams::Fit(_)));
 }
+
+/// Three points for three free parameters can be matched exactly: the fit
+/// warns and reports no range; holding two parameters fixed makes the same
+/// three points over-determine the third, which gets a range of finite width.
+#[test]
+fn an_under_determined_fit_reports_no_range() {
+    let data = synthetic(0.01, 3);
+    let f = fit(&setup_for, &data, searches(5), &opts(), &|_| true).expect("fit");
+    assert!(f.under_determined());
+    assert!(f.warning().is_some_and(|w| w.contains("3 measurements for 3 free parameters")), "{:?}", f.warning());
+    for p in 0..3 {
+        assert!(matches!(f.ranges[p], Bounded::Undetermined { .. }), "{p}: {:?}", f.ranges[p]);
+        assert!(f.ranges[p].range().0.is_nan());
+    }
+    let mut s = searches(9);
+    s[1].fixed = Some(TRUTH[1]);
+    s[2].fixed = Some(TRUTH[2]);
+    let f = fit(&setup_for, &data, s, &opts(), &|_| true).expect("fit");
+    assert!(!f.under_determined() && f.warning().is_none());
+    assert_eq!(f.ranges[1], Bounded::Fixed(TRUTH[1]));
+    match f.ranges[0] {
+        Bounded::Value { plus, minus, .. } => assert!(plus > 0.0 && minus > 0.0, "{:?}", f.ranges[0]),
+        other => panic!("γ should be measured: {other:?}"),
+    }
+    // The scene says it too, in its notes (the window shows them).
+    let mut params = SceneParams::default_for("fit").expect("scene");
+    if let SceneParams::Fit(p) = &mut params {
+        p.data = synthetic(0.01, 3)[..1].to_vec();
+        p.n_gamma = 4;
+        p.n_t_vis = 4;
+        p.n_y = 4;
+    }
+    let out = scene::compute(&params, &Progress::default()).expect("fit scene");
+    assert!(out.notes[0].starts_with("Warning: under-determined fit: 1 measurement"), "{:?}", out.notes);
+    assert!(out.scalar("gamma_low").is_some_and(f64::is_nan));
+}

@@ -162,9 +162,7 @@ mod tests {
     fn a_saved_session_reads_back() {
         let dir = tempfile::tempdir().unwrap();
         let path = dir.path().join("session.ron");
-        let mut session = Session::default();
-        session.scene = "rocking".into();
-        session.lecture = true;
+        let session = Session { scene: "rocking".into(), lecture: true, ..Session::default() };
         save(&session, &path).unwrap();
         let restored = load(&path);
         assert!(restored.found && restored.notice.is_none());

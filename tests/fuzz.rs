@@ -227,8 +227,7 @@ proptest! {
     /// valid session, and an unreadable file is kept, byte for byte.
     #[test]
     fn mutated_sessions_start_valid_and_keep_the_bad_file(edits in proptest::collection::vec(edit(), 1..4)) {
-        let mut session = grainscope::session::Session::default();
-        session.scene = "rocking".into();
+        let session = grainscope::session::Session { scene: "rocking".into(), ..Default::default() };
         let text = ron::to_string(&session).expect("serialises");
         let mutated = apply(&text, &edits);
         let dir = tempfile::tempdir().expect("tempdir");

@@ -56,7 +56,7 @@ impl Params {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
         c.push(Control::toggle("colour_by_filling", "colour by φ", &mut self.colour_by_filling).default(d.colour_by_filling).doc("else by Stokes number"));
-        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1 as f64, 100 as f64).doc("thins the paths"));
+        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
         c
     }
 }

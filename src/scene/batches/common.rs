@@ -61,7 +61,7 @@ impl BatchParams {
         c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it stop growth (1e4: none)"));
         c.push(Control::number("r_in_au", "innermost batch", &mut self.r_in_au).default(d.r_in_au).unit("AU").range(1.1, 100.0).log().doc("initial radius of the first batch"));
         c.push(Control::number("r_out_au", "outermost batch", &mut self.r_out_au).default(d.r_out_au).unit("AU").range(2.0, 1000.0).log().doc("initial radius of the last batch"));
-        c.push(Control::count("batches", "batches", &mut self.batches).default(d.batches).range(10 as f64, 2000 as f64).doc("number of batches (10²–10³ in the thesis)"));
+        c.push(Control::count("batches", "batches", &mut self.batches).default(d.batches).range(10.0, 2000.0).doc("number of batches (10²–10³ in the thesis)"));
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c
     }
@@ -135,10 +135,10 @@ pub fn sweep_controls<'a>(
     vec![
         Control::number("mass_min", "smallest disk mass", mass.0).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.0).doc("first disk mass"),
         Control::number("mass_max", "largest disk mass", mass.1).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.1).doc("last disk mass"),
-        Control::count("n_mass", "disk masses", mass.2).range(1 as f64, 12 as f64).default(dm.2).doc("log-spaced"),
+        Control::count("n_mass", "disk masses", mass.2).range(1.0, 12.0).default(dm.2).doc("log-spaced"),
         Control::number("z_min", "smallest Z₀", metallicity.0).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.0).doc("first metallicity"),
         Control::number("z_max", "largest Z₀", metallicity.1).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.1).doc("last metallicity"),
-        Control::count("n_z", "metallicities", metallicity.2).range(1 as f64, 6 as f64).default(dz.2).doc("log-spaced"),
+        Control::count("n_z", "metallicities", metallicity.2).range(1.0, 6.0).default(dz.2).doc("log-spaced"),
     ]
 }
 

@@ -58,7 +58,7 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1 as f64, 100 as f64).doc("thins the paths"));
+        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
         c
     }
 }

@@ -64,7 +64,7 @@ impl Params {
         vec![
             Control::number("z_min_solar", "smallest Z* / solar", &mut self.z_min_solar).default(d.z_min_solar).range(0.1, 20.0).log().doc("first metallicity of settled particles"),
             Control::number("z_max_solar", "largest Z* / solar", &mut self.z_max_solar).default(d.z_max_solar).range(0.1, 20.0).log().doc("last metallicity"),
-            Control::count("n_z", "metallicities", &mut self.n_z).default(d.n_z).range(1 as f64, 8 as f64).doc("log-spaced"),
+            Control::count("n_z", "metallicities", &mut self.n_z).default(d.n_z).range(1.0, 8.0).doc("log-spaced"),
             quantities::disk_mass(&mut self.disk_mass).default(d.disk_mass).doc("mass of the three disks"),
         ]
     }

@@ -74,7 +74,7 @@ impl Params {
         vec![
             Control::choice("experiment", "experiment", &mut self.experiment, options()).default(d.experiment.clone()).doc("experiment of Table 2.1"),
             Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all).default(d.all).doc("also show every experiment as a small plot"),
-            Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(4 as f64, 400 as f64).doc("points per curve"),
+            Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(4.0, 400.0).doc("points per curve"),
             quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("relative tolerance of the integrator (default 1e-5)"),
         ]
     }

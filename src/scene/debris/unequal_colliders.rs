@@ -61,7 +61,7 @@ impl Params {
             Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio).default(d.erosive_ratio).range(1.0, 1e6).log().doc("mass ratio above which collisions erode"),
             Control::number("kappa_min", "smallest κ", &mut self.kappa_min).default(d.kappa_min).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
             Control::number("kappa_max", "largest κ", &mut self.kappa_max).default(d.kappa_max).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
-            Control::count("n_kappa", "κ curves", &mut self.n_kappa).default(d.n_kappa).range(1 as f64, 6 as f64).doc("curves of the erosion family"),
+            Control::count("n_kappa", "κ curves", &mut self.n_kappa).default(d.n_kappa).range(1.0, 6.0).doc("curves of the erosion family"),
         ]
     }
 }

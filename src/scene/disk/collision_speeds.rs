@@ -81,7 +81,7 @@ impl Params {
         c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
         c.push(Control::number("filling", "filling factor φ", &mut self.filling).default(d.filling).range(1e-6, 1.0).log().doc("of both particles"));
         c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of both mass axes"));
-        c.push(Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10 as f64, 400 as f64).doc("per axis"));
+        c.push(Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10.0, 400.0).doc("per axis"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full closed form instead of (4.11)"));
         c.push(Control::number("epsilon", "dispersion ε", &mut self.epsilon).default(d.epsilon).range(0.0, 1.0).doc("of the mass-to-area ratio"));
         c

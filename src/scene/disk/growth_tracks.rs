@@ -80,7 +80,7 @@ impl Params {
         c.push(Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact).default(d.v_frag_compact).unit("m s^-1").shown("m/s", 1.0).range(0.1, 1e3).log().doc("fragmentation velocity of compact grains"));
         c.push(Control::number("r_min_au", "innermost start", &mut self.r_min_au).default(d.r_min_au).unit("AU").range(1.1, 300.0).log().doc("first starting radius"));
         c.push(Control::number("r_max_au", "outermost start", &mut self.r_max_au).default(d.r_max_au).unit("AU").range(1.1, 1000.0).log().doc("last starting radius"));
-        c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1 as f64, 200 as f64).doc("starting radii, log-spaced"));
+        c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1.0, 200.0).doc("starting radii, log-spaced"));
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
         c

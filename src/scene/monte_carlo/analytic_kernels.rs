@@ -86,9 +86,9 @@ impl Params {
             Control::number("particles", "initial particles N₀V", &mut self.particles).default(d.particles).shown(one.0, one.1).range(1e3, 1e100).log().doc("monomers in the simulated volume"),
             quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26)"),
             Control::number("f_m", "sequence limit f_m", &mut self.f_m).default(d.f_m).shown(one.0, one.1).range(0.01, 1.0).log().doc("(4.22)"),
-            Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1 as f64, 64 as f64).doc("independent seeds, run in parallel"),
-            Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0 as f64, 1_000_000 as f64).doc("runs use seed, seed + 1, …"),
-            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1 as f64, 10 as f64).doc("histogram"),
+            Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 64.0).doc("independent seeds, run in parallel"),
+            Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"),
+            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"),
         ]
     }
 

@@ -96,11 +96,11 @@ impl ColumnParams {
         c.push(quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26); cost grows about as w*²"));
         c.push(Control::number("f_limit", "sequence limit f_m = f_φ", &mut self.f_limit).default(d.f_limit).range(0.01, 1.0).log().doc("largest relative change of a particle per group event (4.22)–(4.24)"));
         c.push(Control::number("column_mass", "column mass", &mut self.column_mass).default(d.column_mass).unit("kg").range(1e10, 1e30).log().doc("mass in the simulated column; sets its area M/Σ_d"));
-        c.push(Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1 as f64, 16 as f64).doc("independent seeds, run in parallel"));
-        c.push(Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0 as f64, 1_000_000 as f64).doc("runs use seed, seed + 1, …"));
+        c.push(Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 16.0).doc("independent seeds, run in parallel"));
+        c.push(Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"));
         c.push(Control::number("t_first_yr", "first snapshot", &mut self.t_first_yr).default(d.t_first_yr).unit("yr").shown(yr.0, yr.1).range(1e-2, 1e6).log().doc("time of the first snapshot"));
         c.push(Control::number("t_end_yr", "last snapshot", &mut self.t_end_yr).default(d.t_end_yr).unit("yr").shown(yr.0, yr.1).range(1e-1, 1e7).log().doc("end of the run"));
-        c.push(Control::count("snapshots", "snapshots", &mut self.snapshots).default(d.snapshots).range(1 as f64, 12 as f64).doc("log-spaced in time"));
+        c.push(Control::count("snapshots", "snapshots", &mut self.snapshots).default(d.snapshots).range(1.0, 12.0).doc("log-spaced in time"));
         c.push(Control::number("stop_mass_g", "stop at peak mass", &mut self.stop_mass_g).default(d.stop_mass_g).unit("kg").shown("g", 1e3).range(1e-10, 1e25).log().doc("the run ends when m_p reaches it"));
         c.push(Control::number("max_events_millions", "event limit", &mut self.max_events_millions).default(d.max_events_millions).shown("million", 1.0).range(0.01, 1000.0).log().doc("group events per run at most"));
         c

@@ -62,7 +62,7 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1 as f64, 10 as f64).doc("histogram"));
+        c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"));
         c
     }
 }

@@ -101,7 +101,7 @@ pub fn family_controls<'a>(
         Control::number("r_max", "largest radius", radius.1).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().default(dr.1).doc("largest sphere radius"),
         Control::number("h_min", "smallest Δγ/γ", hysteresis.0).shown(unit.0, unit.1).range(1e-3, 100.0).log().default(dh.0).doc("first curve of the family"),
         Control::number("h_max", "largest Δγ/γ", hysteresis.1).shown(unit.0, unit.1).range(1e-3, 100.0).log().default(dh.1).doc("last curve of the family"),
-        Control::count("n_h", "Δγ/γ curves", hysteresis.2).range(1 as f64, 8 as f64).default(dh.2).doc("curves in the family"),
+        Control::count("n_h", "Δγ/γ curves", hysteresis.2).range(1.0, 8.0).default(dh.2).doc("curves in the family"),
     ]
 }
 

@@ -65,7 +65,7 @@ impl Params {
         let d = Self::default();
         let mut c = self.contact.controls(&d.contact, true);
         c.push(Control::number("xi_over_a", "asymmetry ξ/a", &mut self.xi_over_a).default(d.xi_over_a).range(0.0, 0.5).doc("rolling displacement relative to a_eq"));
-        c.push(Control::count("cells", "map cells", &mut self.cells).default(d.cells).range(11 as f64, 301 as f64).doc("resolution of the maps"));
+        c.push(Control::count("cells", "map cells", &mut self.cells).default(d.cells).range(11.0, 301.0).doc("resolution of the maps"));
         c
     }
 }

@@ -86,7 +86,7 @@ impl Params {
         c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss; 1e12 ≈ none"));
         c.push(Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude).default(d.kick_amplitude).range(1e-4, 1.0).log().doc("amplitude the kick gives an undamped pinned contact"));
         c.push(Control::number("periods", "duration", &mut self.periods).default(d.periods).unit("periods").range(1.0, 200.0).log().doc("length of the run"));
-        c.push(Control::count("steps_per_period", "steps per period", &mut self.steps_per_period).default(d.steps_per_period).range(20 as f64, 5000 as f64).doc("Runge–Kutta steps per period"));
+        c.push(Control::count("steps_per_period", "steps per period", &mut self.steps_per_period).default(d.steps_per_period).range(20.0, 5000.0).doc("Runge–Kutta steps per period"));
         c.push(
             quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time of the marker, fraction of the run").style_only(),
         );

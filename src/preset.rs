@@ -79,7 +79,20 @@ impl Preset {
             column: e.span.start.col,
             message: e.code.to_string(),
         })?;
-        preset.scene.validate().map_err(|e| PresetError::Invalid { origin: origin.into(), error: Box::new(e) })?;
+        preset.scene.validate().map_err(|e| {
+            let (origin, error) = match e {
+                ParamError::OutOfRange { key, value, min, max, unit } => {
+                    // Name the value as written in the file, with its line and column.
+                    let (place, value) = match find_number(text, &key, &value) {
+                        Some((line, column, written)) => (format!("{origin}:{line}:{column}"), written),
+                        None => (origin.to_string(), value),
+                    };
+                    (place, ParamError::OutOfRange { key, value, min, max, unit })
+                }
+                other => (origin.to_string(), other),
+            };
+            PresetError::Invalid { origin, error: Box::new(error) }
+        })?;
         Ok(preset)
     }
 
@@ -111,6 +124,33 @@ impl Preset {
         write_atomically(path, self.to_ron()?.as_bytes())?;
         Ok(())
     }
+}
+
+/// Finds `key: NUMBER` in RON text whose number reads as `value` (the
+/// value as printed by the range check): the line and column (1-based) of the
+/// number and the number as written.
+fn find_number(text: &str, key: &str, value: &str) -> Option<(usize, usize, String)> {
+    let wanted: f64 = value.parse().ok()?;
+    let same = |x: f64| x == wanted || (x.is_nan() && wanted.is_nan());
+    let mut from = 0;
+    while let Some(found) = text[from..].find(key) {
+        let start = from + found;
+        from = start + key.len();
+        let before_ok = text[..start].chars().next_back().is_none_or(|c| !(c.is_alphanumeric() || c == '_'));
+        let rest = &text[from..];
+        let after_colon = rest.trim_start().strip_prefix(':');
+        let (true, Some(after)) = (before_ok, after_colon) else { continue };
+        let number = after.trim_start();
+        let written: String =
+            number.chars().take_while(|c| c.is_ascii_alphanumeric() || matches!(c, '.' | '-' | '+' | '_')).collect();
+        if written.parse::<f64>().is_ok_and(same) {
+            let offset = text.len() - number.len();
+            let line = text[..offset].matches('\n').count() + 1;
+            let column = text[..offset].rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+            return Some((line, column, written));
+        }
+    }
+    None
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).

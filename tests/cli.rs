@@ -100,7 +100,7 @@ fn errors_are_said_once_with_the_value_as_written() {
     let out = grainscope(&["run", preset.to_str().expect("utf8")]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(stderr.matches("is outside its valid range").count(), 1, "{stderr}");
-    assert!(stderr.contains("bad.ron"), "{stderr}");
+    assert!(stderr.contains("bad.ron:1:43: velocity = -1e0 is outside its valid range"), "{stderr}");
 }
 
 #[test]

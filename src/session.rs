@@ -92,6 +92,9 @@ pub struct Restored {
     pub found: bool,
     /// A message for the user when the file could not be read.
     pub notice: Option<String>,
+    /// Whether saving to the path is safe: false when an unreadable file
+    /// could not be set aside (saving would destroy it).
+    pub may_save: bool,
 }
 
 /// Parses a session from RON text and repairs it (see [`Session::repaired`]).
@@ -104,30 +107,29 @@ pub fn parse(text: &str) -> Result<Session, String> {
 /// does not know) gives the default session, is renamed to
 /// `<name>.unreadable-<seconds since 1970>` and named in the notice.
 pub fn load(path: &Path) -> Restored {
-    let fresh = |notice| Restored { session: Session::default(), found: false, notice };
+    let fresh = |notice| Restored { session: Session::default(), found: false, notice, may_save: true };
     let text = match std::fs::read(path) {
         Ok(bytes) => String::from_utf8(bytes).map_err(|_| "not UTF-8 text".to_string()),
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => return fresh(None),
-        Err(e) => {
-            return fresh(Some(format!(
-                "the saved session {} could not be read ({e}); started with default settings",
-                path.display()
-            )));
-        }
+        Err(e) => Err(e.to_string()),
     };
     match text.and_then(|t| parse(&t)) {
-        Ok(session) => Restored { session, found: true, notice: None },
+        Ok(session) => Restored { session, found: true, notice: None, may_save: true },
         Err(why) => {
-            let kept = set_aside(path);
-            let kept = match &kept {
-                Ok(aside) => format!("the file was kept as {}", aside.display()),
-                Err(e) => format!("it could not be set aside ({e}) and will be replaced when the session is saved"),
-            };
-            fresh(Some(format!(
-                "the saved session {} could not be read ({}); started with default settings, {kept}",
-                path.display(),
-                why.lines().next().unwrap_or_default()
-            )))
+            let why = why.lines().next().unwrap_or_default().to_string();
+            let head = format!(
+                "the saved session {} could not be read ({why}); started with default settings",
+                path.display()
+            );
+            match set_aside(path) {
+                Ok(aside) => fresh(Some(format!("{head}, the file was kept as {}", aside.display()))),
+                Err(e) => Restored {
+                    may_save: false,
+                    ..fresh(Some(format!(
+                        "{head}; it could not be set aside ({e}), so this session will not be saved over it"
+                    )))
+                },
+            }
         }
     }
 }
@@ -149,8 +151,15 @@ fn set_aside(path: &Path) -> std::io::Result<PathBuf> {
 
 /// Writes the session to `path` atomically.
 pub fn save(session: &Session, path: &Path) -> Result<(), WriteError> {
-    let text = ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false))
-        .unwrap_or_else(|_| String::new());
+    let text =
+        ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false)).map_err(|e| {
+            WriteError {
+                path: path.to_path_buf(),
+                cause: std::io::Error::other(e.to_string()),
+                written: Vec::new(),
+                not_written: vec![path.to_path_buf()],
+            }
+        })?;
     write_atomically(path, text.as_bytes())
 }
 

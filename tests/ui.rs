@@ -102,13 +102,13 @@ fn a_restored_session_keeps_each_scenes_settings_by_id() {
 /// and presses Enter, as a user does.
 fn type_into_slider(h: &mut Harness<'static, GrainscopeApp>, label: &str, text: &str) {
     h.get_by_role_and_label(Role::SpinButton, label).click();
-    h.run();
-    h.run();
+    h.run_steps(3);
+    h.run_steps(3);
     h.event(egui::Event::Text(text.to_string()));
-    h.run();
+    h.run_steps(3);
     h.key_press(egui::Key::Enter);
-    h.run();
-    h.run();
+    h.run_steps(3);
+    h.run_steps(3);
 }
 
 #[test]
@@ -167,4 +167,49 @@ fn an_unreadable_session_file_starts_clean_and_is_kept() {
     assert_eq!(again.session.scene, "rocking");
     assert!(again.notices().is_empty());
     assert_eq!(std::fs::read_dir(dir.path()).expect("dir").count(), 2);
+}
+
+/// The radius of the adhesion scene (m).
+fn monomer_radius(h: &Harness<'static, GrainscopeApp>) -> f64 {
+    let mut p = h.state().params().clone();
+    p.controls()
+        .into_iter()
+        .find_map(|c| match (c.key, c.kind) {
+            ("radius", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
+            _ => None,
+        })
+        .expect("radius")
+}
+
+#[test]
+fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions() {
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Adhesive contact basics").click();
+    h.run();
+    // An exact value the field shows rounded ("0.12 µm"): focusing the field
+    // and leaving it unedited keeps the value.
+    {
+        let app = h.state_mut();
+        let id = app.session.scene.clone();
+        let p = app.session.params.get_mut(&id).expect("params");
+        p.set("radius", "1.2345e-7").expect("valid");
+    }
+    h.run();
+    type_into_slider(&mut h, "monomer radius r₀", "");
+    assert_eq!(monomer_radius(&h), 1.2345e-7);
+    assert!(h.state().control_notice().is_none());
+    // The lower end of the range, typed in display units (0.01 µm = 1e-8 m).
+    type_into_slider(&mut h, "monomer radius r₀", "0.01");
+    assert!(h.state().control_notice().is_none(), "{:?}", h.state().control_notice());
+    assert!((monomer_radius(&h) / 1e-8 - 1.0).abs() < 1e-12, "{}", monomer_radius(&h));
+    // A whole-number field refuses a fraction instead of rounding it.
+    h.get_by_label("Restitution").click();
+    h.run_steps(3);
+    let before = h.state().params().clone();
+    type_into_slider(&mut h, "velocities", "2.5");
+    assert_eq!(h.state().params(), &before);
+    let (key, message) = h.state().control_notice().expect("a notice");
+    assert_eq!(key, "n_velocities");
+    assert!(message.contains("2.5 is not a whole number"), "{message}");
 }

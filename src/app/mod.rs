@@ -168,7 +168,7 @@ impl GrainscopeApp {
         if let Some(notice) = restored.notice {
             self.notify(notice);
         }
-        self.session_path = Some(path);
+        self.session_path = restored.may_save.then_some(path);
         self.lecture_applied = None;
     }
 
@@ -245,6 +245,7 @@ impl GrainscopeApp {
         self.session.params.insert(id.to_string(), preset.scene);
         self.status = format!("loaded preset '{}' from {origin}", preset.title);
         self.error = None;
+        self.control_notice = None;
     }
 
     /// Loads measurements from a CSV file into the open scene if it takes
@@ -599,28 +600,35 @@ impl GrainscopeApp {
                             let mut shown = **value * *display_scale;
                             let (lo, hi) = (*min * *display_scale, *max * *display_scale);
                             let typed = std::cell::RefCell::new(None::<String>);
+                            let (current, is_log) = (shown, *log);
                             // Typed values are not clamped by the widget: a value outside
-                            // the range is refused with a notice naming the range.
+                            // the range is refused with a notice naming the range. The
+                            // field's own (rounded) text left unedited keeps the exact value.
                             let mut slider = egui::Slider::new(&mut shown, lo..=hi)
                                 .logarithmic(*log)
                                 .text(label)
                                 .clamping(egui::SliderClamping::Never)
                                 .update_while_editing(false)
+                                .custom_formatter(move |v, _| field_text(v, is_log))
                                 .custom_parser(|text| {
+                                    if text.trim() == field_text(current, is_log) {
+                                        return Some(current);
+                                    }
                                     *typed.borrow_mut() = Some(text.trim().to_string());
                                     parse_number(text)
                                 });
                             if !unit.is_empty() {
                                 slider = slider.suffix(format!(" {unit}"));
                             }
-                            if *log {
-                                slider = slider.custom_formatter(|v, _| figure::tick_label(v));
-                            }
                             let changed = ui.add(slider).on_hover_text(doc).changed();
                             let typed = typed.into_inner();
                             let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
-                            if changed && shown.is_finite() && shown >= lo && shown <= hi {
-                                **value = (shown / *display_scale).clamp(*min, *max);
+                            // The range is checked in SI units, with a rounding allowance
+                            // for the conversion to display units.
+                            let si = shown / *display_scale;
+                            let slack = 1e-12 * min.abs().max(max.abs());
+                            if changed && si.is_finite() && si >= *min - slack && si <= *max + slack {
+                                **value = si.clamp(*min, *max);
                                 accepted = Some(key.to_string());
                             } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none()) {
                                 let text = typed.unwrap_or_else(|| shown.to_string());
@@ -654,11 +662,13 @@ impl GrainscopeApp {
                                 });
                             let changed = ui.add(slider).on_hover_text(doc).changed();
                             let typed = typed.into_inner();
-                            let whole = shown.is_finite() && shown.fract() == 0.0;
+                            // The widget rounds to whole numbers; what was typed decides.
+                            let typed_whole = typed.as_deref().and_then(parse_number).is_none_or(|v| v.fract() == 0.0);
+                            let whole = shown.is_finite() && shown.fract() == 0.0 && typed_whole;
                             if changed && whole && shown >= *min as f64 && shown <= *max as f64 {
                                 **value = shown as usize;
                                 accepted = Some(key.to_string());
-                            } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none()) {
+                            } else if changed || typed.as_deref().is_some_and(|t| parse_number(t).is_none() || !typed_whole) {
                                 let text = typed.unwrap_or_else(|| shown.to_string());
                                 refused = Some((
                                     key.to_string(),
@@ -715,6 +725,7 @@ impl GrainscopeApp {
         if ui.button("Reset to defaults").clicked() {
             let default = self.defaults[self.session.index()].clone();
             *self.params_mut() = default;
+            self.control_notice = None;
         }
     }
 
@@ -958,6 +969,23 @@ impl eframe::App for GrainscopeApp {
 
     fn save(&mut self, _storage: &mut dyn eframe::Storage) {
         self.save_session();
+    }
+}
+
+/// The text of a value field: powers of ten on logarithmic sliders, four
+/// significant digits on linear ones.
+fn field_text(v: f64, log: bool) -> String {
+    let a = v.abs();
+    if log {
+        figure::tick_label(v)
+    } else if v == 0.0 || !v.is_finite() {
+        format!("{v}")
+    } else if (1e-3..1e5).contains(&a) {
+        let decimals = (3 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        if s.contains('.') { s.trim_end_matches('0').trim_end_matches('.').to_string() } else { s }
+    } else {
+        format!("{v:.3e}").replace(".000e", "e")
     }
 }
 

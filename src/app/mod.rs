@@ -599,29 +599,11 @@ impl GrainscopeApp {
                         ControlKind::Number { value, min, max, log, display_scale } => {
                             let mut shown = **value * *display_scale;
                             let (lo, hi) = (*min * *display_scale, *max * *display_scale);
-                            let typed = std::cell::RefCell::new(None::<String>);
-                            let (current, is_log) = (shown, *log);
-                            // Typed values are not clamped by the widget: a value outside
-                            // the range is refused with a notice naming the range. The
-                            // field's own (rounded) text left unedited keeps the exact value.
-                            let mut slider = egui::Slider::new(&mut shown, lo..=hi)
-                                .logarithmic(*log)
-                                .text(label)
-                                .clamping(egui::SliderClamping::Never)
-                                .update_while_editing(false)
-                                .custom_formatter(move |v, _| field_text(v, is_log))
-                                .custom_parser(|text| {
-                                    if text.trim() == field_text(current, is_log) {
-                                        return Some(current);
-                                    }
-                                    *typed.borrow_mut() = Some(text.trim().to_string());
-                                    parse_number(text)
-                                });
-                            if !unit.is_empty() {
-                                slider = slider.suffix(format!(" {unit}"));
-                            }
-                            let changed = ui.add(slider).on_hover_text(doc).changed();
-                            let typed = typed.into_inner();
+                            let is_log = *log;
+                            let suffix = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+                            let current = shown;
+                            let slider = egui::Slider::new(&mut shown, lo..=hi).logarithmic(is_log).suffix(suffix);
+                            let (changed, typed) = typed_slider(ui, slider, current, label, doc, |v| field_text(v, is_log));
                             let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
                             // The range is checked in SI units, with a rounding allowance
                             // for the conversion to display units.
@@ -650,18 +632,9 @@ impl GrainscopeApp {
                         }
                         ControlKind::Count { value, min, max } => {
                             let mut shown = **value as f64;
-                            let typed = std::cell::RefCell::new(None::<String>);
-                            let slider = egui::Slider::new(&mut shown, *min as f64..=*max as f64)
-                                .integer()
-                                .text(label)
-                                .clamping(egui::SliderClamping::Never)
-                                .update_while_editing(false)
-                                .custom_parser(|text| {
-                                    *typed.borrow_mut() = Some(text.trim().to_string());
-                                    parse_number(text)
-                                });
-                            let changed = ui.add(slider).on_hover_text(doc).changed();
-                            let typed = typed.into_inner();
+                            let current = shown;
+                            let slider = egui::Slider::new(&mut shown, *min as f64..=*max as f64).integer();
+                            let (changed, typed) = typed_slider(ui, slider, current, label, doc, |v| format!("{v:.0}"));
                             // The widget rounds to whole numbers; what was typed decides.
                             let typed_whole = typed.as_deref().and_then(parse_number).is_none_or(|v| v.fract() == 0.0);
                             let whole = shown.is_finite() && shown.fract() == 0.0 && typed_whole;
@@ -970,6 +943,39 @@ impl eframe::App for GrainscopeApp {
     fn save(&mut self, _storage: &mut dyn eframe::Storage) {
         self.save_session();
     }
+}
+
+/// Adds `slider` with its value field made for typing: typed text is taken
+/// only on Enter (or leaving the field) and not clamped, so the caller can
+/// refuse an out-of-range value with a notice; the field's own text of
+/// `current`, left unedited, keeps the exact value (`text_of` formats the
+/// field). Returns whether the value changed and the text typed, if any.
+fn typed_slider(
+    ui: &mut egui::Ui,
+    slider: egui::Slider<'_>,
+    current: f64,
+    label: &str,
+    doc: &str,
+    text_of: impl Fn(f64) -> String + Copy,
+) -> (bool, Option<String>) {
+    let typed = std::cell::RefCell::new(None::<String>);
+    let changed = {
+        let slider = slider
+            .text(label)
+            .clamping(egui::SliderClamping::Never)
+            .update_while_editing(false)
+            .custom_formatter(move |v, _| text_of(v))
+            .custom_parser(|text| {
+                if text.trim() == text_of(current) {
+                    // Left as shown: no change from the field's rounding.
+                    return Some(current);
+                }
+                *typed.borrow_mut() = Some(text.trim().to_string());
+                parse_number(text)
+            });
+        ui.add(slider).on_hover_text(doc).changed()
+    };
+    (changed, typed.into_inner())
 }
 
 /// The text of a value field: powers of ten on logarithmic sliders, four

@@ -174,6 +174,9 @@ pub fn run(command: Command) -> Result<()> {
             let mut p = resolve(&preset)?;
             apply_sets(&mut p, &set)?;
             let result = scene::compute(&p.scene, &Progress::default())?;
+            for w in &result.warnings {
+                tell(format_args!("warning: {w}"));
+            }
             if let Some(dir) = &out {
                 let files = write_outputs(&result, dir)?;
                 if !json {

@@ -176,7 +176,7 @@ fn an_under_determined_fit_reports_no_range() {
         Bounded::Value { plus, minus, .. } => assert!(plus > 0.0 && minus > 0.0, "{:?}", f.ranges[0]),
         other => panic!("γ should be measured: {other:?}"),
     }
-    // The scene says it too, in its notes (the window shows them).
+    // The scene says it too, as a warning (the window shows it above the figures).
     let mut params = SceneParams::default_for("fit").expect("scene");
     if let SceneParams::Fit(p) = &mut params {
         p.data = synthetic(0.01, 3)[..1].to_vec();
@@ -185,6 +185,6 @@ fn an_under_determined_fit_reports_no_range() {
         p.n_y = 4;
     }
     let out = scene::compute(&params, &Progress::default()).expect("fit scene");
-    assert!(out.notes[0].starts_with("Warning: under-determined fit: 1 measurement"), "{:?}", out.notes);
+    assert!(out.warnings[0].starts_with("under-determined fit: 1 measurement"), "{:?}", out.warnings);
     assert!(out.scalar("gamma_low").is_some_and(f64::is_nan));
 }

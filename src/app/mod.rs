@@ -851,6 +851,10 @@ impl GrainscopeApp {
             ui.centered_and_justified(|ui| ui.spinner());
             return;
         };
+        for warning in &out.warnings {
+            let text = egui::RichText::new(format!("Warning: {warning}")).color(ui.visuals().warn_fg_color).strong();
+            ui.add(egui::Label::new(text).wrap());
+        }
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
             Extra::None => None,

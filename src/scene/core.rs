@@ -136,6 +136,10 @@ pub struct SceneOutput {
     pub figures: Vec<Figure>,
     /// Remarks for the user (regime, discrepancies with the printed thesis).
     pub notes: Vec<String>,
+    /// What makes the result untrustworthy (e.g. an under-determined fit):
+    /// shown above the figures in the window and on standard error by the
+    /// command line.
+    pub warnings: Vec<String>,
     /// Scene-specific data for the window.
     pub extra: Extra,
 }

@@ -97,7 +97,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             fig = fig.with(Series::new(name, pts, Style::Points, k));
         }
     }
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars: vec![crate::scene::core::Scalar {
             key: "frames",
             label: "recorded frames",

@@ -125,5 +125,5 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         },
         Scalar { key: "converted", label: "converted into planetesimals", value: run.converted_fraction(), unit: "" },
     ];
-    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

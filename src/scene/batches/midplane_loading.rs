@@ -124,5 +124,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             });
         }
     }
-    Ok(SceneOutput { scalars, figures, notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures, notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

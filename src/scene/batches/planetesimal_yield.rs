@@ -142,5 +142,5 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         unit: "",
     });
     scalars.push(Scalar { key: "runs", label: "disks run", value: runs.len() as f64, unit: "" });
-    Ok(SceneOutput { scalars, figures: vec![fig_m, fig_f], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_f], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -128,5 +128,5 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         },
         Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
     ];
-    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

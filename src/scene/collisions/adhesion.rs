@@ -215,5 +215,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     if mu < 5.0 {
         notes.push(format!("Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."));
     }
-    Ok(SceneOutput { scalars, figures: vec![fig_v, fig_r, fig_f], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_v, fig_r, fig_f], notes, extra: crate::scene::core::Extra::None })
 }

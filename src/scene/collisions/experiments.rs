@@ -201,5 +201,5 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         ),
         "The measured points are not printed in the thesis; the curves are the published best fits.".into(),
     ];
-    Ok(SceneOutput { scalars, figures, notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures, notes, extra: crate::scene::core::Extra::None })
 }

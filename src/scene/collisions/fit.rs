@@ -342,11 +342,9 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         describe(&result.ranges[1], "s", 1.0),
         describe(&result.ranges[2], "MPa", 1e-6)
     )];
-    if let Some(warning) = result.warning() {
-        notes.insert(0, format!("Warning: {warning}"));
-    }
     if synthetic {
         notes.push("No data imported: fitting a synthetic example (Wall et al. mica best fit, noise 0.01).".into());
     }
-    Ok(SceneOutput { scalars, figures, notes, extra: crate::scene::core::Extra::None })
+    let warnings = result.warning().into_iter().collect();
+    Ok(SceneOutput { warnings, scalars, figures, notes, extra: crate::scene::core::Extra::None })
 }

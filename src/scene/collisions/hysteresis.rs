@@ -203,7 +203,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         radius_2: if c.wall { f64::INFINITY } else { c.radius_2 },
         samples: run.samples.iter().map(|s| [s.t, s.delta, s.radius, s.elastic_force]).collect(),
     };
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars,
         figures: vec![fig_a, fig_f, fig_e],
         notes,

@@ -209,7 +209,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "Pa",
         });
     }
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars,
         figures: vec![fig_g, fig_y, fig_l, fig_t],
         notes: vec!["Lower limits (triangles) mark experiments without plastic yield in their velocity range; upper limits (crosses) on T_vis come from the millimetre spheres.".into()],

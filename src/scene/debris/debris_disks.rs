@@ -164,7 +164,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "",
         },
     ];
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars,
         figures: vec![fig],
         notes: vec![

@@ -138,7 +138,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "m",
         });
     }
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars,
         figures: vec![fig],
         notes: vec![

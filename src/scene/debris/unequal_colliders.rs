@@ -127,5 +127,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "",
         },
     ];
-    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -172,5 +172,5 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     for i in 0..5 {
         scalars.push(Scalar { key: keys[i], label: labels[i], value: counts[i] as f64 / dom.len() as f64, unit: "" });
     }
-    Ok(SceneOutput { scalars, figures: vec![fig_v, fig_s], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_v, fig_s], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -179,5 +179,5 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             unit: "",
         },
     ];
-    Ok(SceneOutput { scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

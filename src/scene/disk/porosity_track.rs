@@ -104,5 +104,5 @@ pub fn compute(p: &TrackParams) -> Result<SceneOutput, SceneError> {
             unit: "s",
         });
     }
-    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

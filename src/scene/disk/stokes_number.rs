@@ -158,5 +158,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     scalars
         .push(Scalar { key: "mean_free_path", label: "mean free path λ_mfp", value: env.mean_free_path, unit: "m" });
     scalars.push(Scalar { key: "monomer_mass", label: "monomer mass m₀", value: m0, unit: "kg" });
-    Ok(SceneOutput { scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -249,5 +249,5 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         Scalar { key: "decades", label: "decades resolved below the peak", value: (peak / lowest).log10(), unit: "" },
         Scalar { key: "events", label: "group events per run", value: events, unit: "" },
     ];
-    Ok(SceneOutput { scalars, figures: vec![fig, err], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig, err], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -179,5 +179,5 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             notes.push(format!("v_eros = {v} m/s, {line}"));
         }
     }
-    Ok(SceneOutput { scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None })
 }

@@ -109,7 +109,7 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     if runs.len() > 1 {
         notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
     }
-    SceneOutput {
+    SceneOutput { warnings: Vec::new(),
         scalars: super::common::summary(runs),
         figures: vec![fig],
         notes,

@@ -156,7 +156,7 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
                 1,
             ));
     }
-    SceneOutput {
+    SceneOutput { warnings: Vec::new(),
         scalars: summary(runs),
         figures: vec![dist, times, peak],
         notes: endings(runs),

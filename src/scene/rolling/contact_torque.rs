@@ -165,7 +165,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Scalar { key: "g2", label: "release rate G₂", value: g2, unit: "J m^-2" },
         Scalar { key: "tabor", label: "Tabor parameter μ (z₀ = 0.3 nm)", value: pair.tabor(3e-10), unit: "" },
     ];
-    Ok(SceneOutput {
+    Ok(SceneOutput { warnings: Vec::new(),
         scalars,
         figures: vec![fig_p, fig_m, fig_s],
         notes: vec![

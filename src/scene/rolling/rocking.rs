@@ -196,5 +196,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     } else {
         "The contact stayed pinned: the sphere rocks about its contact.".to_string()
     }];
-    Ok(SceneOutput { scalars, figures: vec![fig_xi, fig_e, fig_r], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_xi, fig_e, fig_r], notes, extra: crate::scene::core::Extra::None })
 }

@@ -191,5 +191,5 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         value: pair.jkr_equilibrium_radius(),
         unit: "m",
     });
-    Ok(SceneOutput { scalars, figures: vec![fig], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes, extra: crate::scene::core::Extra::None })
 }

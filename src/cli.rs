@@ -282,7 +282,7 @@ fn fit_command(
         "units": {"gamma": "J m^-2", "t_vis": "s", "yield_strength": "Pa"},
     });
     if let Some(dir) = out {
-        let output = scene::compute(&preset.scene, &progress)?;
+        let output = scene::collisions::fit::output(params, &measurements, &fit)?;
         write_outputs(&output, dir)?;
     }
     if json { say(serde_json::to_string(&result)?) } else { say(serde_json::to_string_pretty(&result)?) }

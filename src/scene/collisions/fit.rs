@@ -278,6 +278,13 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let synthetic = p.data.is_empty();
     let data = if synthetic { example_data(0.01)? } else { p.data.clone() };
     let result = run_fit(p, &data, progress)?;
+    output(p, &data, &result)
+}
+
+/// The scene's output for a fit already made of `data` (also used by the
+/// command line, so that `fit --out` does not fit twice).
+pub fn output(p: &Params, data: &[Measurement], result: &FitResult) -> Result<SceneOutput, SceneError> {
+    let synthetic = p.data.is_empty();
     let [g, t, y] = result.best;
     let opts = Options { rtol: p.rtol, ..Options::default() };
     let (v_lo, v_hi) = data.iter().fold((f64::INFINITY, 0.0f64), |(a, b), d| (a.min(d.velocity), b.max(d.velocity)));
@@ -300,7 +307,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         Style::Dashed,
         6,
     ));
-    for d in &data {
+    for d in data {
         if let Some(s) = d.uncertainty {
             fig.series.push(Series::new(
                 "",
@@ -318,7 +325,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         if result.grids[a].len() > 1 && result.grids[b].len() > 1 {
             let mut f = Figure::new(id, &format!("χ² over {} and {}", names[a], names[b]), axis(a), axis(b))
                 .with(Series::new("best fit", vec![[result.best[a], result.best[b]]], Style::Marker, 0));
-            f.heatmap = Some(slice(&result, a, b, c));
+            f.heatmap = Some(slice(result, a, b, c));
             figures.push(f);
         }
     }

@@ -35,8 +35,11 @@ pub struct Session {
     pub params: BTreeMap<String, SceneParams>,
     /// Pinned curves.
     pub pins: Vec<Pin>,
-    /// Large fonts and full screen.
+    /// Lecture mode: plots fill the screen in a light high-contrast theme
+    /// with large text and thick lines; parameters in a panel over them.
     pub lecture: bool,
+    /// Light theme outside lecture mode (lecture mode is always light).
+    pub light: bool,
     /// Folder for quick exports.
     pub export_dir: String,
     /// Path typed for loading and saving presets.
@@ -55,6 +58,7 @@ impl Default for Session {
                 .collect(),
             pins: Vec::new(),
             lecture: false,
+            light: false,
             export_dir: "exports".into(),
             preset_path: "presets/my-preset.ron".into(),
             data_path: "assets/examples/wall-mica-synthetic.csv".into(),

@@ -1,7 +1,9 @@
 //! Figure export: CSV with units in the header, SVG and PNG from the same
 //! description, atomic writes.
 
-use grainscope::figure::{Axis, Figure, Series, Style, csv_bytes, png_bytes, svg_string, write_png};
+use grainscope::figure::{
+    Axis, EXPORT_SIZE, Figure, Heatmap, PALETTE, Scale, Series, Style, csv_bytes, png_bytes, svg_string, write_png,
+};
 
 fn figure() -> Figure {
     Figure::new("test", "Test figure", Axis::log("impact velocity v", "m/s"), Axis::linear("restitution", ""))
@@ -23,12 +25,63 @@ fn csv_header_names_quantities_and_units() {
 fn svg_and_png_render_the_same_description() {
     let fig = figure();
     let svg = svg_string(&fig, (640, 480)).expect("svg");
-    assert!(svg.starts_with("<svg") && svg.contains("Test figure") && svg.contains("polyline"));
+    assert!(svg.starts_with("<svg") && svg.contains(">Test figure</text>") && svg.contains("<path d=\"M"));
+    // Text stays text, and the log axis is labelled in powers of ten.
+    assert!(svg.contains(">impact velocity v [m/s]</text>"));
+    assert!(svg.contains(">10²</text>") && svg.contains(">10</text>"));
+    // Legend entries show their line style: the reference is dashed.
+    assert!(svg.contains(">reference</text>") && svg.contains("stroke-dasharray"));
     let png = png_bytes(&fig, (640, 480)).expect("png");
     let img = image::load_from_memory(&png).expect("decodes").to_rgb8();
     assert_eq!(img.dimensions(), (640, 480));
-    // Not blank: the red model line is drawn.
-    assert!(img.pixels().any(|p| p.0 == [214, 39, 40]));
+    // Not blank: the model line is drawn in the first palette colour.
+    assert!(img.pixels().any(|p| p.0 == PALETTE[0]));
+}
+
+#[test]
+fn exports_are_slide_sized_and_scale_their_lines_and_text() {
+    assert!(EXPORT_SIZE.0 >= 1600);
+    let small = svg_string(&figure(), (800, 550)).expect("svg");
+    let large = svg_string(&figure(), (1600, 1100)).expect("svg");
+    let title_size = |svg: &str| -> f64 {
+        let k = svg.find(">Test figure</text>").expect("title");
+        let tag = &svg[svg[..k].rfind("<text").expect("tag")..k];
+        let f = tag.split("font-size=\"").nth(1).and_then(|r| r.split('"').next()).expect("size");
+        f.parse().expect("number")
+    };
+    assert!((title_size(&large) / title_size(&small) - 2.0).abs() < 1e-9);
+}
+
+#[test]
+fn maps_get_a_colour_bar_or_a_legend_of_their_categories() {
+    let x = vec![1.0, 2.0, 3.0];
+    let values: Vec<f64> = (0..9).map(|k| k as f64).collect();
+    let mut fig = Figure::new("map", "Map", Axis::linear("x", "m"), Axis::linear("y", "m"));
+    fig.heatmap = Some(Heatmap::new(x.clone(), x.clone(), values.clone(), "log₁₀ Δv", "m/s"));
+    let svg = svg_string(&fig, (800, 550)).expect("svg");
+    assert!(svg.contains(">log₁₀ Δv [m/s]</text>"), "colour bar title");
+    let cats: Vec<f64> = (0..9).map(|k| (k % 3) as f64).collect();
+    fig.heatmap = Some(Heatmap::categorical(x.clone(), x, cats, "source", &["Brownian", "turbulence", "settling"]));
+    let svg = svg_string(&fig, (800, 550)).expect("svg");
+    for c in ["Brownian", "turbulence", "settling"] {
+        assert!(svg.contains(&format!(">{c}</text>")), "{c}");
+    }
+}
+
+#[test]
+fn a_family_gets_a_colour_bar_instead_of_legend_rows() {
+    let mut fig = Figure::new("spectrum", "Spectrum", Axis::log("m", "g"), Axis::log("f", ""))
+        .family("time", "yr", Scale::Log)
+        .y_decades(6.0);
+    for (k, t) in [100.005, 215.477, 1000.018].into_iter().enumerate() {
+        let pts = (1..50).map(|i| [i as f64, (-(i as f64 - 10.0 * (k + 1) as f64).powi(2) / 20.0).exp()]).collect();
+        fig.series.push(Series::new(format!("t = {t} yr"), pts, Style::Line, k).at(t));
+    }
+    let svg = svg_string(&fig, (800, 550)).expect("svg");
+    assert!(svg.contains(">time [yr]</text>"));
+    assert!(!svg.contains("t = 100.005"), "family members are not listed one by one");
+    // The y-axis stops six decades below the peak, not at the smallest value.
+    assert!(!svg.contains(">10⁻⁴⁰</text>") && svg.contains(">10⁻⁵</text>"));
 }
 
 #[test]

@@ -19,7 +19,11 @@ fn shipped_presets_match_the_presets_folder() {
 }
 
 #[test]
-fn every_shipped_preset_loads_runs_and_round_trips() {
+fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() {
+    use skrifa::MetadataProvider;
+    let font = skrifa::FontRef::new(grainscope::figure::FONT_TTF).expect("bundled font");
+    let charmap = font.charmap();
+    let mut missing = std::collections::BTreeSet::new();
     let dir = tempfile::tempdir().expect("tempdir");
     for (file, text) in SHIPPED {
         let preset = Preset::from_ron(text, file).unwrap_or_else(|e| panic!("{file}: {e}"));
@@ -32,12 +36,33 @@ fn every_shipped_preset_loads_runs_and_round_trips() {
         }
         let out = scene::compute(&quick, &Progress::default()).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(!out.figures.is_empty(), "{file}");
+        // Every character of every label must exist in the bundled font,
+        // which draws the exported files and the window's text.
+        for fig in &out.figures {
+            let mut texts = vec![fig.title.clone(), fig.x.title(), fig.y.title()];
+            texts.extend(fig.series.iter().map(|s| s.name.clone()));
+            texts.extend(fig.family.iter().map(|f| f.title()));
+            if let Some(h) = &fig.heatmap {
+                texts.push(h.title());
+                texts.extend(h.categories.iter().cloned());
+            }
+            let svg = grainscope::figure::svg_string(fig, (800, 550)).expect("svg");
+            texts.extend(
+                svg.split("<text").skip(1).filter_map(|t| Some(t.split_once('>')?.1.split('<').next()?.to_string())),
+            );
+            for c in texts.iter().flat_map(|t| t.chars()).filter(|c| !c.is_control()) {
+                if charmap.map(c).is_none_or(|g| g.to_u32() == 0) {
+                    missing.insert(format!("{c} (U+{:04X}) in {file}, figure {}", c as u32, fig.id));
+                }
+            }
+        }
         assert!(out.scalars.iter().all(|s| !s.value.is_nan()), "{file}");
         let path = dir.path().join(file);
         preset.save(&path).expect("save");
         let back = Preset::load(&path).expect("load");
         assert_eq!(back, preset, "{file} round trip");
     }
+    assert!(missing.is_empty(), "characters without a glyph in the bundled font: {missing:#?}");
 }
 
 #[test]

@@ -6,10 +6,25 @@ use egui_kittest::kittest::Queryable;
 use grainscope::app::GrainscopeApp;
 
 fn harness() -> Harness<'static, GrainscopeApp> {
+    harness_sized(1400.0, 1400.0)
+}
+
+fn harness_sized(w: f32, h: f32) -> Harness<'static, GrainscopeApp> {
     let app = GrainscopeApp::new(egui::Context::default(), None);
-    Harness::builder()
-        .with_size(egui::vec2(1400.0, 1400.0))
-        .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app)
+    Harness::builder().with_size(egui::vec2(w, h)).build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app)
+}
+
+/// Opens a scene as a user does: the scene navigator, then the scene's entry
+/// ("Title · Figs. …") under its chapter.
+fn open_scene(h: &mut Harness<'static, GrainscopeApp>, title: &str) {
+    h.get_by_role_and_label(Role::ComboBox, "Scene").click();
+    h.run();
+    let prefix = format!("{title} · ");
+    let wanted = title.to_string();
+    h.get_by(move |n| n.role() == Role::Button && n.label().is_some_and(|l| l == wanted || l.starts_with(&prefix)))
+        .click();
+    // Heavy scenes keep repainting while their worker runs.
+    h.run_steps(3);
 }
 
 #[test]
@@ -45,8 +60,7 @@ fn a_styling_control_does_not_recompute() {
 fn switching_scene_and_pinning_keeps_the_app_alive() {
     let mut h = harness();
     h.run();
-    h.get_by_label("Adhesive contact basics").click();
-    h.run();
+    open_scene(&mut h, "Adhesive contact basics");
     assert!(h.query_all_by_label_contains("Regime of this aggregate collision").next().is_some());
     h.get_by_label("Pin curves").click();
     h.run();
@@ -185,8 +199,7 @@ fn monomer_radius(h: &Harness<'static, GrainscopeApp>) -> f64 {
 fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions() {
     let mut h = harness();
     h.run();
-    h.get_by_label("Adhesive contact basics").click();
-    h.run();
+    open_scene(&mut h, "Adhesive contact basics");
     // An exact value the field shows rounded ("0.12 µm"): focusing the field
     // and leaving it unedited keeps the value.
     {
@@ -204,7 +217,7 @@ fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions(
     assert!(h.state().control_notice().is_none(), "{:?}", h.state().control_notice());
     assert!((monomer_radius(&h) / 1e-8 - 1.0).abs() < 1e-12, "{}", monomer_radius(&h));
     // A whole-number field refuses a fraction instead of rounding it.
-    h.get_by_label("Restitution").click();
+    open_scene(&mut h, "Restitution");
     h.run_steps(3);
     let before = h.state().params().clone();
     type_into_slider(&mut h, "velocities", "2.5");
@@ -212,4 +225,73 @@ fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions(
     let (key, message) = h.state().control_notice().expect("a notice");
     assert_eq!(key, "n_velocities");
     assert!(message.contains("2.5 is not a whole number"), "{message}");
+}
+
+/// The label of the open scene's first parameter control.
+fn first_control(h: &Harness<'static, GrainscopeApp>) -> String {
+    let mut p = h.state().params().clone();
+    p.controls().first().map(|c| c.label.to_string()).expect("every scene has a parameter")
+}
+
+#[test]
+fn every_scene_shows_its_first_parameter_without_scrolling_at_projector_and_desktop_sizes() {
+    for (w, ht) in [(1024.0, 768.0), (1920.0, 1080.0)] {
+        let mut h = harness_sized(w, ht);
+        h.run_steps(2);
+        let mut seen = std::collections::BTreeSet::new();
+        for _ in 0..grainscope::scene::SCENES.len() {
+            let scene = h.state().session.scene.clone();
+            seen.insert(scene.clone());
+            let label = first_control(&h);
+            let node = h.query_all_by_label_contains(&label).next();
+            let rect = node.map(|n| n.rect()).unwrap_or_else(|| panic!("{scene}: no control '{label}' at {w}×{ht}"));
+            assert!(
+                rect.top() >= 0.0 && rect.bottom() <= ht,
+                "{scene}: '{label}' at {rect:?} is below the fold of {w}×{ht}"
+            );
+            // Page Down walks the navigator, chapter by chapter.
+            h.key_press(egui::Key::PageDown);
+            h.run_steps(2);
+        }
+        assert_eq!(seen.len(), grainscope::scene::SCENES.len(), "Page Down visits every scene once");
+    }
+}
+
+#[test]
+fn lecture_mode_gives_the_plots_most_of_a_projector_screen() {
+    let (w, ht) = (1024.0, 768.0);
+    let mut h = harness_sized(w, ht);
+    h.run_steps(2);
+    let outside = h.state().plot_area().expect("plots").area();
+    h.get_by_label("Lecture mode").click();
+    h.run_steps(3);
+    assert!(h.state().session.lecture);
+    let area = h.state().plot_area().expect("plots");
+    let share = area.area() / (w * ht);
+    assert!(share >= 0.8, "plots cover {:.0} % of the window in lecture mode", 100.0 * share);
+    assert!(area.area() > outside, "lecture mode makes the plots larger");
+    // The parameters are one click away, over the plots.
+    h.get_by_label("Parameters").click();
+    h.run_steps(2);
+    assert!(h.query_all_by_label_contains(&first_control(&h)).next().is_some());
+    // Escape leaves lecture mode.
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+    assert!(!h.state().session.lecture);
+}
+
+#[test]
+fn switching_scenes_and_themes_never_panics() {
+    let mut h = harness_sized(1024.0, 768.0);
+    h.run_steps(2);
+    for k in 0..grainscope::scene::SCENES.len() {
+        {
+            let app = h.state_mut();
+            app.session.light = k % 2 == 0;
+            app.session.lecture = k % 3 == 0;
+        }
+        h.run_steps(2);
+        h.key_press(egui::Key::PageDown);
+        h.run_steps(2);
+    }
 }

@@ -8,7 +8,7 @@ mod worker;
 
 pub use worker::Worker;
 
-use crate::figure::{self, Figure, Series, Style};
+use crate::figure::{self, Figure, Series, Style, View};
 use crate::preset::{Preset, resolve};
 use crate::scene::{self, Caches, ControlKind, Extra, SCENES, SceneError, SceneOutput, SceneParams};
 pub use crate::session::{Pin, Session};
@@ -105,7 +105,18 @@ pub struct GrainscopeApp {
     caches: Arc<Mutex<Caches>>,
     dialogs: (Sender<Dialog>, Receiver<Dialog>),
     sweep: Sweep,
-    lecture_applied: Option<bool>,
+    /// The (lecture, light) look last applied to the context.
+    look_applied: Option<(bool, bool)>,
+    /// Whether the bundled font was given to the context.
+    fonts_installed: bool,
+    /// Where the plots were drawn in the last frame (screen points).
+    plot_rects: Vec<egui::Rect>,
+    /// Axes kept fixed while parameters change, by figure id (when locked).
+    locked: Option<std::collections::HashMap<String, View>>,
+    /// Whether the parameter panel is open over the plots in lecture mode.
+    lecture_params: bool,
+    /// Shipped presets for the menu: (chapter, title, file, text), parsed once.
+    shipped_menu: Option<Vec<(scene::Chapter, String, &'static str, &'static str)>>,
     /// The scene the running worker job computes (none for sweeps), whose
     /// intermediate results are shown while it runs.
     live_scene: Option<usize>,
@@ -141,7 +152,12 @@ impl GrainscopeApp {
             caches: Arc::new(Mutex::new(Caches::default())),
             dialogs: channel(),
             sweep: Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 },
-            lecture_applied: None,
+            look_applied: None,
+            fonts_installed: false,
+            plot_rects: Vec::new(),
+            locked: None,
+            lecture_params: false,
+            shipped_menu: None,
             live_scene: None,
             defaults: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
             notices: Vec::new(),
@@ -169,7 +185,7 @@ impl GrainscopeApp {
             self.notify(notice);
         }
         self.session_path = restored.may_save.then_some(path);
-        self.lecture_applied = None;
+        self.look_applied = None;
     }
 
     /// Shows a message that stays until dismissed.
@@ -231,6 +247,12 @@ impl GrainscopeApp {
     /// The current scene's last good output.
     pub fn output(&self) -> Option<&SceneOutput> {
         self.outputs[self.session.index()].as_deref()
+    }
+
+    /// The smallest rectangle holding every plot drawn in the last frame
+    /// (axes and legends included), in screen points.
+    pub fn plot_area(&self) -> Option<egui::Rect> {
+        self.plot_rects.iter().copied().reduce(|a, b| a.union(b))
     }
 
     /// The status line (last message).
@@ -403,11 +425,59 @@ impl GrainscopeApp {
         });
     }
 
-    fn apply_lecture(&mut self, ctx: &egui::Context) {
-        if self.lecture_applied != Some(self.session.lecture) {
-            self.lecture_applied = Some(self.session.lecture);
-            ctx.set_zoom_factor(if self.session.lecture { 1.5 } else { 1.0 });
-            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(self.session.lecture));
+    /// Applies the theme and text sizes: lecture mode is light, high-contrast
+    /// and large; otherwise the chosen light or dark theme at normal size.
+    fn apply_look(&mut self, ctx: &egui::Context) {
+        if !self.fonts_installed {
+            self.fonts_installed = true;
+            install_fonts(ctx);
+        }
+        let want = (self.session.lecture, self.session.light);
+        if self.look_applied == Some(want) {
+            return;
+        }
+        let lecture_changed = self.look_applied.is_none_or(|(l, _)| l != want.0);
+        self.look_applied = Some(want);
+        let light = want.0 || want.1;
+        ctx.set_theme(if light { egui::Theme::Light } else { egui::Theme::Dark });
+        let lecture = want.0;
+        ctx.all_styles_mut(|style| {
+            use egui::{FontFamily, FontId, TextStyle};
+            let sizes = if lecture { [15.0, 19.0, 19.0, 26.0, 17.0] } else { [10.0, 13.0, 13.0, 19.0, 12.5] };
+            style.text_styles = [
+                (TextStyle::Small, FontId::new(sizes[0], FontFamily::Proportional)),
+                (TextStyle::Body, FontId::new(sizes[1], FontFamily::Proportional)),
+                (TextStyle::Button, FontId::new(sizes[2], FontFamily::Proportional)),
+                (TextStyle::Heading, FontId::new(sizes[3], FontFamily::Proportional)),
+                (TextStyle::Monospace, FontId::new(sizes[4], FontFamily::Monospace)),
+            ]
+            .into();
+            style.spacing.interact_size.y = if lecture { 26.0 } else { 18.0 };
+        });
+        if lecture {
+            // High contrast: black text on white, strong strokes.
+            ctx.style_mut_of(egui::Theme::Light, |style| {
+                style.visuals.override_text_color = Some(egui::Color32::BLACK);
+                style.visuals.widgets.noninteractive.fg_stroke.color = egui::Color32::BLACK;
+                style.visuals.panel_fill = egui::Color32::WHITE;
+                style.visuals.extreme_bg_color = egui::Color32::WHITE;
+            });
+        } else {
+            ctx.style_mut_of(egui::Theme::Light, |style| style.visuals = egui::Visuals::light());
+        }
+        ctx.set_zoom_factor(1.0);
+        if lecture_changed {
+            ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(lecture));
+        }
+    }
+
+    /// How plots are drawn in the current look.
+    fn plot_look(&self, ui: &egui::Ui) -> plot::Look {
+        let lecture = self.session.lecture;
+        plot::Look {
+            line: if lecture { 3.0 } else { 2.0 },
+            text: if lecture { 17.0 } else { 12.5 },
+            dark: ui.visuals().dark_mode,
         }
     }
 
@@ -415,20 +485,169 @@ impl GrainscopeApp {
     pub fn show(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         self.poll(&ctx);
-        self.apply_lecture(&ctx);
+        self.apply_look(&ctx);
+        self.keys(&ctx);
         egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
         if !self.notices.is_empty() {
             egui::Panel::top("notices").show(ui, |ui| self.notices_bar(ui));
         }
         egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
-        egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
-            egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
-        });
+        if !self.session.lecture {
+            egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
+                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
+            });
+        }
         self.request();
         egui::CentralPanel::default().show(ui, |ui| self.figures(ui));
+        if self.session.lecture && self.lecture_params {
+            let mut open = true;
+            egui::Window::new("Parameters")
+                .open(&mut open)
+                .anchor(egui::Align2::RIGHT_TOP, [-10.0, 60.0])
+                .default_width(420.0)
+                .collapsible(true)
+                .show(&ctx, |ui| {
+                    egui::ScrollArea::vertical().max_height(ctx.content_rect().height() * 0.7).show(ui, |ui| {
+                        self.headline(ui);
+                        self.controls(ui);
+                        ui.separator();
+                        self.scalars(ui);
+                    });
+                });
+            self.lecture_params = open;
+        }
+    }
+
+    /// Keys a presenter presses: Page Up / Page Down move between scenes (in
+    /// navigator order), F5 toggles lecture mode, Escape leaves it.
+    fn keys(&mut self, ctx: &egui::Context) {
+        if ctx.egui_wants_keyboard_input() {
+            return;
+        }
+        let (next, prev, f5, esc) = ctx.input(|i| {
+            (
+                i.key_pressed(egui::Key::PageDown),
+                i.key_pressed(egui::Key::PageUp),
+                i.key_pressed(egui::Key::F5),
+                i.key_pressed(egui::Key::Escape),
+            )
+        });
+        if next {
+            self.step_scene(1);
+        }
+        if prev {
+            self.step_scene(-1);
+        }
+        if f5 {
+            self.session.lecture = !self.session.lecture;
+        }
+        if esc && self.session.lecture {
+            self.session.lecture = false;
+        }
+    }
+
+    /// Opens the scene `by` places after the open one in navigator order.
+    fn step_scene(&mut self, by: isize) {
+        let order: Vec<usize> = scene::scenes_by_chapter().into_iter().flat_map(|(_, v)| v).collect();
+        let here = order.iter().position(|&i| i == self.session.index()).unwrap_or(0) as isize;
+        let n = order.len() as isize;
+        let next = order[(here + by).rem_euclid(n) as usize];
+        self.open_scene(next);
+    }
+
+    /// The scene navigator: previous / next buttons and a list grouped by
+    /// thesis chapter with the figures each scene reproduces.
+    fn navigator(&mut self, ui: &mut egui::Ui, width: f32) {
+        ui.horizontal(|ui| {
+            if ui.button("◀").on_hover_text("previous scene (Page Up)").clicked() {
+                self.step_scene(-1);
+            }
+            let here = self.session.index();
+            let label = ui.label("Scene");
+            let entry = |i: usize| {
+                let s = &SCENES[i];
+                let figs = scene::figures_of(s);
+                if figs.is_empty() { s.title.to_string() } else { format!("{} · {figs}", s.title) }
+            };
+            let mut chosen = None;
+            egui::ComboBox::from_id_salt("scene-navigator")
+                .width(width)
+                .height(ui.ctx().content_rect().height() * 0.8)
+                .selected_text(egui::RichText::new(SCENES[here].title).strong())
+                .show_ui(ui, |ui| {
+                    for (chapter, list) in scene::scenes_by_chapter() {
+                        ui.label(egui::RichText::new(chapter.heading).strong().underline());
+                        for i in list {
+                            if ui.selectable_label(i == here, entry(i)).clicked() {
+                                chosen = Some(i);
+                            }
+                        }
+                    }
+                })
+                .response
+                .labelled_by(label.id)
+                .on_hover_text(format!("{} — {}", scene::chapter(here).heading, SCENES[here].source));
+            if let Some(i) = chosen {
+                self.open_scene(i);
+            }
+            if ui.button("▶").on_hover_text("next scene (Page Down)").clicked() {
+                self.step_scene(1);
+            }
+        });
+    }
+
+    /// The shipped presets menu: grouped by chapter, each by its title.
+    fn presets_menu(&mut self, ui: &mut egui::Ui) {
+        let menu = self.shipped_menu.get_or_insert_with(|| {
+            let mut items: Vec<(scene::Chapter, String, &'static str, &'static str)> = crate::preset::SHIPPED
+                .iter()
+                .map(|(file, text)| match Preset::from_ron(text, file) {
+                    Ok(p) => {
+                        let i = SCENES.iter().position(|s| s.id == p.scene.info().id).unwrap_or(0);
+                        (scene::chapter(i), p.title, *file, *text)
+                    }
+                    Err(_) => (scene::Chapter { heading: "Other", order: 9 }, file.to_string(), *file, *text),
+                })
+                .collect();
+            items.sort_by(|a, b| a.0.order.cmp(&b.0.order).then(a.0.heading.cmp(b.0.heading)).then(a.1.cmp(&b.1)));
+            items
+        });
+        let mut picked = None;
+        let max_h = (ui.ctx().content_rect().height() - 140.0).max(200.0);
+        egui::ScrollArea::vertical().max_height(max_h).show(ui, |ui| {
+            let mut heading = "";
+            for (chapter, title, file, text) in menu.iter() {
+                if chapter.heading != heading {
+                    heading = chapter.heading;
+                    ui.label(egui::RichText::new(heading).strong().underline());
+                }
+                if ui.button(title.as_str()).on_hover_text(*file).clicked() {
+                    picked = Some((*file, *text));
+                }
+            }
+        });
+        if let Some((file, text)) = picked {
+            match Preset::from_ron(text, file) {
+                Ok(p) => self.apply_preset(p, file),
+                Err(e) => self.error = Some(e.to_string()),
+            }
+            ui.close();
+        }
     }
 
     fn top_bar(&mut self, ui: &mut egui::Ui) {
+        if self.session.lecture {
+            ui.horizontal(|ui| {
+                self.navigator(ui, 420.0);
+                ui.separator();
+                ui.toggle_value(&mut self.lecture_params, "Parameters")
+                    .on_hover_text("show the parameters over the plots");
+                ui.menu_button("Presets", |ui| self.presets_menu(ui));
+                ui.separator();
+                ui.checkbox(&mut self.session.lecture, "Lecture mode").on_hover_text("F5 toggles, Esc leaves");
+            });
+            return;
+        }
         ui.horizontal_wrapped(|ui| {
             ui.heading("grainscope");
             ui.separator();
@@ -456,18 +675,11 @@ impl GrainscopeApp {
                 let p = PathBuf::from(&self.session.preset_path);
                 self.save_preset_file(&p);
             }
-            ui.menu_button("Shipped presets", |ui| {
-                for (file, text) in crate::preset::SHIPPED {
-                    if ui.button(file).clicked() {
-                        match Preset::from_ron(text, file) {
-                            Ok(p) => self.apply_preset(p, file),
-                            Err(e) => self.error = Some(e.to_string()),
-                        }
-                    }
-                }
-            });
+            ui.menu_button("Shipped presets", |ui| self.presets_menu(ui));
             ui.separator();
-            ui.checkbox(&mut self.session.lecture, "Lecture mode").on_hover_text("large fonts, full screen");
+            ui.checkbox(&mut self.session.light, "Light theme");
+            ui.checkbox(&mut self.session.lecture, "Lecture mode")
+                .on_hover_text("plots fill the screen in a light high-contrast theme (F5 toggles, Esc leaves)");
         });
     }
 
@@ -514,23 +726,18 @@ impl GrainscopeApp {
     }
 
     fn side_panel(&mut self, ui: &mut egui::Ui) {
-        ui.label(egui::RichText::new("Scenes").strong());
-        for (i, s) in SCENES.iter().enumerate() {
-            if ui.selectable_label(self.session.scene == s.id, s.title).clicked() {
-                self.open_scene(i);
-            }
-        }
-        ui.separator();
+        self.navigator(ui, 230.0);
         let info = self.params().info();
-        egui::CollapsingHeader::new("What this scene shows").default_open(false).show(ui, |ui| {
-            ui.label(info.explanation);
-            ui.small(format!("Thesis: {}", info.source));
-        });
+        ui.small(format!("{} · {}", scene::chapter(self.session.index()).heading, info.source));
         self.headline(ui);
         ui.separator();
         ui.label(egui::RichText::new("Parameters").strong());
         self.controls(ui);
         ui.separator();
+        egui::CollapsingHeader::new("What this scene shows").default_open(false).show(ui, |ui| {
+            ui.label(info.explanation);
+            ui.small(format!("Thesis: {}", info.source));
+        });
         self.scalars(ui);
         ui.separator();
         self.compare(ui);
@@ -800,13 +1007,14 @@ impl GrainscopeApp {
                 let mut p = base.clone();
                 p.set(&key, &v.to_string())?;
                 let out = scene::compute(&p, &scene::Progress::default())?;
-                let curves = out
+                let curves: Vec<(String, Series)> = out
                     .figures
                     .iter()
                     .flat_map(|f| {
                         f.series.iter().filter(|s| s.style == Style::Line).map(move |s| (f.id.clone(), s.clone()))
                     })
                     .collect();
+                let curves = curves.into_iter().map(|(id, s): (String, Series)| (id, s.at(*v))).collect();
                 pins.push(Pin {
                     params: p,
                     label: format!("{key} = {}", figure::tick_label(*v)),
@@ -822,7 +1030,7 @@ impl GrainscopeApp {
 
     fn overlay_for(&self, fig: &Figure, cursor: Option<[f64; 2]>) -> plot::Overlay {
         let current = self.params();
-        let pinned = self
+        let pinned: Vec<Series> = self
             .session
             .pins
             .iter()
@@ -839,11 +1047,42 @@ impl GrainscopeApp {
                     pin.label.clone()
                 };
                 pin.curves.iter().filter(|(id, _)| *id == fig.id).map(move |(_, s)| {
-                    Series::new(format!("{label} — {}", s.name), s.points.clone(), Style::Line, pin.color)
+                    let name = if s.name.is_empty() { label.clone() } else { format!("{label} — {}", s.name) };
+                    let mut pinned = Series::new(name, s.points.clone(), Style::Dashed, pin.color);
+                    pinned.family = s.family;
+                    pinned
                 })
             })
             .collect();
-        plot::Overlay { pinned, cursor }
+        // A sweep's pins form a family coloured by the swept value.
+        let family = self
+            .session
+            .pins
+            .iter()
+            .find(|p| p.params.info().id == current.info().id && p.curves.iter().any(|(_, s)| s.family.is_some()))
+            .and_then(|p| {
+                let key = p.label.split(" = ").next()?.to_string();
+                let mut params = current.clone();
+                let controls = params.controls();
+                let c = controls.iter().find(|c| c.key == key)?;
+                let values: Vec<f64> = pinned.iter().filter_map(|s| s.family).collect();
+                let positive = values.iter().all(|&v| v > 0.0);
+                let scale = if positive { figure::Scale::Log } else { figure::Scale::Linear };
+                Some(figure::Family { label: c.label.to_string(), unit: c.si_unit.to_string(), scale })
+            });
+        plot::Overlay { pinned, family, cursor }
+    }
+
+    /// The "Lock axes" switch: keeps every plot's range while parameters change.
+    fn lock_axes(&mut self, ui: &mut egui::Ui, figures: &[Figure]) {
+        let mut lock = self.locked.is_some();
+        if ui
+            .checkbox(&mut lock, "Lock axes")
+            .on_hover_text("keep every plot's range while parameters change (double-click a plot to reset a zoom)")
+            .changed()
+        {
+            self.locked = lock.then(|| figures.iter().map(|f| (f.id.clone(), View::of(f))).collect());
+        }
     }
 
     fn figures(&mut self, ui: &mut egui::Ui) {
@@ -854,6 +1093,10 @@ impl GrainscopeApp {
         for warning in &out.warnings {
             let text = egui::RichText::new(format!("Warning: {warning}")).color(ui.visuals().warn_fg_color).strong();
             ui.add(egui::Label::new(text).wrap());
+        }
+        let lecture = self.session.lecture;
+        if !lecture {
+            ui.horizontal(|ui| self.lock_axes(ui, &out.figures));
         }
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
@@ -868,18 +1111,34 @@ impl GrainscopeApp {
         };
         let rows = n_panels.div_ceil(cols);
         let avail = ui.available_size();
-        let size = egui::vec2((avail.x / cols as f32 - 12.0).max(200.0), (avail.y / rows as f32 - 40.0).max(160.0));
+        let size = egui::vec2(
+            (avail.x / cols as f32 - 12.0).max(200.0),
+            (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(160.0),
+        );
         let cursor = self.params().cursor(&out);
         let cursor_fraction = cursor.as_ref().map_or(0.0, |c| c.fraction);
         let mut export: Option<(Figure, &'static str)> = None;
+        self.plot_rects.clear();
+        let look = self.plot_look(ui);
+        if let Some(locked) = &mut self.locked {
+            // Figures first seen while locked are locked at their first view.
+            for fig in &out.figures {
+                locked.entry(fig.id.clone()).or_insert_with(|| View::of(fig));
+            }
+        }
         let mut save_as: Option<Figure> = None;
         egui::Grid::new("figures").num_columns(cols).show(ui, |ui| {
             for (k, fig) in out.figures.iter().enumerate() {
                 let point =
                     cursor.as_ref().and_then(|c| c.points.iter().find(|(id, _)| *id == fig.id).map(|(_, p)| *p));
                 let overlay = self.overlay_for(fig, point);
+                let locked = self.locked.as_ref().and_then(|l| l.get(&fig.id).copied());
                 ui.vertical(|ui| {
-                    plot::show(ui, fig, &overlay, size, self.stale);
+                    let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);
+                    self.plot_rects.push(shown.rect);
+                    if lecture {
+                        return;
+                    }
                     ui.horizontal(|ui| {
                         for ext in ["png", "svg", "csv"] {
                             if ui
@@ -903,6 +1162,9 @@ impl GrainscopeApp {
                 ui.vertical(|ui| {
                     ui.label(egui::RichText::new("Contact sketch").strong());
                     sketch::show(ui, t, cursor_fraction, size);
+                    if lecture {
+                        return;
+                    }
                     ui.small("move the time cursor among the parameters");
                     ui.horizontal(|ui| {
                         let label = ui.label("export folder");
@@ -911,7 +1173,7 @@ impl GrainscopeApp {
                 });
             }
         });
-        if trajectory.is_none() {
+        if trajectory.is_none() && !lecture {
             ui.horizontal(|ui| {
                 let label = ui.label("export folder");
                 ui.text_edit_singleline(&mut self.session.export_dir).labelled_by(label.id);
@@ -1003,4 +1265,15 @@ fn field_text(v: f64, log: bool) -> String {
 fn parse_number(text: &str) -> Option<f64> {
     let cleaned: String = text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
     cleaned.parse().ok()
+}
+
+/// Makes the bundled DejaVu Sans the first proportional font (egui's own
+/// fonts stay as fallbacks), so every figure label has its glyphs: powers of
+/// ten, arrows, Greek letters, subscripts.
+fn install_fonts(ctx: &egui::Context) {
+    let mut fonts = egui::FontDefinitions::default();
+    fonts.font_data.insert("dejavu-sans".into(), Arc::new(egui::FontData::from_static(figure::FONT_TTF)));
+    fonts.families.entry(egui::FontFamily::Proportional).or_default().insert(0, "dejavu-sans".into());
+    fonts.families.entry(egui::FontFamily::Monospace).or_default().push("dejavu-sans".into());
+    ctx.set_fonts(fonts);
 }

@@ -1,19 +1,33 @@
-//! Drawing a [`Figure`] with egui_plot. Log axes are drawn as log10 of the
-//! data with tick labels showing the values.
+//! Drawing a [`Figure`] with egui_plot by the same rules as the exported
+//! files: ticks from [`crate::figure::ticks`], the default range from
+//! [`View::of`], the legend in a free corner (from
+//! [`crate::figure::layout::free_corner`]) or beside the plot, colour bars
+//! for heat maps and families, and the shared palette and line styles. Log
+//! axes are drawn as log10 of the data with tick labels showing the values.
 
-use crate::figure::{Figure, Heatmap, PALETTE, Scale, Series, Style, colormap, tick_label};
-use egui::Color32;
-use egui_plot::{Legend, Line, LineStyle, MarkerShape, Plot, PlotPoints, Points};
+use crate::figure::layout::{self, Corner, View};
+use crate::figure::ticks::ticks;
+use crate::figure::{Family, Figure, Heatmap, Scale, Series, Style, colormap, family_fraction, human};
+use egui::{Color32, Pos2, Rect, Stroke, Vec2};
+use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, PlotPoints, Points};
+use std::cell::RefCell;
+use std::rc::Rc;
 
-fn color(i: usize, faded: bool) -> Color32 {
-    let [r, g, b] = PALETTE[i % PALETTE.len()];
-    if faded { Color32::from_rgba_unmultiplied(r, g, b, 150) } else { Color32::from_rgb(r, g, b) }
+fn rgb(c: [u8; 3], faded: bool) -> Color32 {
+    if faded { Color32::from_rgba_unmultiplied(c[0], c[1], c[2], 150) } else { Color32::from_rgb(c[0], c[1], c[2]) }
 }
 
 fn transform(v: f64, scale: Scale) -> Option<f64> {
     match scale {
         Scale::Linear => v.is_finite().then_some(v),
         Scale::Log => (v > 0.0 && v.is_finite()).then(|| v.log10()),
+    }
+}
+
+fn untransform(v: f64, scale: Scale) -> f64 {
+    match scale {
+        Scale::Linear => v,
+        Scale::Log => 10f64.powf(v),
     }
 }
 
@@ -24,112 +38,480 @@ fn points(fig: &Figure, s: &Series) -> Vec<[f64; 2]> {
 /// Extra items drawn over a figure (pins and cursors).
 #[derive(Default)]
 pub struct Overlay {
-    /// Pinned series with their labels, drawn faded.
+    /// Pinned series with their labels: dashed in their palette colour, or
+    /// coloured by value when they belong to `family` (a sweep).
     pub pinned: Vec<Series>,
+    /// The parameter a sweep varied across the pinned series marked with a
+    /// family value.
+    pub family: Option<Family>,
     /// Highlighted point (e.g. the time cursor), in data units.
     pub cursor: Option<[f64; 2]>,
 }
 
-/// Shows the figure in a plot of the given size.
-pub fn show(ui: &mut egui::Ui, fig: &Figure, overlay: &Overlay, size: egui::Vec2, stale: bool) -> egui::Response {
-    let (xs, ys) = (fig.x.scale, fig.y.scale);
-    let fmt = move |scale: Scale| {
-        move |mark: egui_plot::GridMark, _range: &std::ops::RangeInclusive<f64>| match scale {
-            Scale::Linear => tick_label(mark.value),
-            Scale::Log => tick_label(10f64.powf(mark.value)),
-        }
-    };
-    let title = if stale { format!("{} (updating…)", fig.title) } else { fig.title.clone() };
-    ui.vertical(|ui| {
-        ui.label(egui::RichText::new(title).strong());
-        Plot::new(("figure", fig.id.as_str()))
-            .width(size.x)
-            .height(size.y - 20.0)
-            .legend(Legend::default())
-            .x_axis_label(fig.x.title())
-            .y_axis_label(fig.y.title())
-            .x_axis_formatter(fmt(xs))
-            .y_axis_formatter(fmt(ys))
-            .label_formatter(move |hover: &egui_plot::HoverPosition<'_>| {
-                let (name, p) = match hover {
-                    egui_plot::HoverPosition::NearDataPoint { plot_name, position, .. } => (*plot_name, *position),
-                    egui_plot::HoverPosition::Elsewhere { position } => ("", *position),
-                };
-                let x = if xs == Scale::Log { 10f64.powf(p.x) } else { p.x };
-                let y = if ys == Scale::Log { 10f64.powf(p.y) } else { p.y };
-                let head = if name.is_empty() { String::new() } else { format!("{name}\n") };
-                Some(format!("{head}x = {}\ny = {}", tick_label(x), tick_label(y)))
+/// How plots are drawn: line width and text size grow in lecture mode.
+#[derive(Clone, Copy)]
+pub struct Look {
+    /// Width of data lines, points.
+    pub line: f32,
+    /// Size of legend and colour-bar text, points.
+    pub text: f32,
+    /// Whether the window uses a dark theme (for the legend's background).
+    pub dark: bool,
+}
+
+/// Labelled and unlabelled grid marks for one axis, from the shared tick
+/// rule; the labels are remembered for the axis formatter.
+fn grid_marks(
+    input: GridInput,
+    scale: Scale,
+    px_per_label: f64,
+    labels: &RefCell<Vec<(f64, String)>>,
+) -> Vec<GridMark> {
+    let (lo, hi) = input.bounds;
+    let span = hi - lo;
+    let usable = span > 0.0 && input.base_step_size > 0.0;
+    if !usable {
+        return Vec::new();
+    }
+    // egui_plot passes the value of its minimum grid spacing (8 points).
+    let px = span / input.base_step_size * 8.0;
+    let n = ((px / px_per_label) as usize).clamp(2, 10);
+    let t = ticks(untransform(lo, scale), untransform(hi, scale), scale, n);
+    let mut remembered = labels.borrow_mut();
+    remembered.clear();
+    t.into_iter()
+        .filter_map(|t| {
+            let v = transform(t.value, scale)?;
+            Some(match t.label {
+                Some(l) => {
+                    remembered.push((v, l));
+                    // A step as wide as the axis: labels and lines at full strength.
+                    GridMark { value: v, step_size: span }
+                }
+                None => GridMark { value: v, step_size: span / 60.0 },
             })
-            .show(ui, |plot_ui| {
-                if let Some(h) = &fig.heatmap {
-                    heatmap(plot_ui, fig, h);
-                }
-                for s in &overlay.pinned {
-                    let pts = points(fig, s);
-                    plot_ui
-                        .line(Line::new(s.name.clone(), PlotPoints::from(pts)).color(color(s.color, true)).width(1.5));
-                }
-                for s in &fig.series {
-                    let pts = points(fig, s);
-                    let c = color(s.color, stale);
-                    match s.style {
-                        Style::Line => {
-                            plot_ui.line(Line::new(s.name.clone(), PlotPoints::from(pts)).color(c).width(2.0))
-                        }
-                        Style::Dashed => plot_ui.line(
-                            Line::new(s.name.clone(), PlotPoints::from(pts))
-                                .color(c)
-                                .width(1.5)
-                                .style(LineStyle::dashed_loose()),
-                        ),
-                        Style::Points => {
-                            plot_ui.points(Points::new(s.name.clone(), PlotPoints::from(pts)).color(c).radius(3.0))
-                        }
-                        Style::Marker => plot_ui.points(
-                            Points::new(s.name.clone(), PlotPoints::from(pts))
-                                .color(c)
-                                .radius(7.0)
-                                .shape(MarkerShape::Asterisk),
-                        ),
-                        Style::LowerLimit => plot_ui.points(
-                            Points::new(s.name.clone(), PlotPoints::from(pts))
-                                .color(c)
-                                .radius(6.0)
-                                .shape(MarkerShape::Up),
-                        ),
-                        Style::UpperLimit => plot_ui.points(
-                            Points::new(s.name.clone(), PlotPoints::from(pts))
-                                .color(c)
-                                .radius(6.0)
-                                .shape(MarkerShape::Down),
-                        ),
+        })
+        .collect()
+}
+
+fn label_of(v: f64, labels: &RefCell<Vec<(f64, String)>>) -> String {
+    labels
+        .borrow()
+        .iter()
+        .find(|(x, _)| (x - v).abs() <= 1e-9 * x.abs().max(1e-300))
+        .map_or(String::new(), |(_, l)| l.clone())
+}
+
+/// One legend row.
+struct Entry {
+    text: String,
+    style: Style,
+    color: Color32,
+    swatch: bool,
+}
+
+fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
+    let mut out: Vec<Entry> = fig
+        .series
+        .iter()
+        .filter(|s| fig.in_legend(s))
+        .map(|s| Entry { text: s.name.clone(), style: s.style, color: rgb(fig.color_of(s), stale), swatch: false })
+        .collect();
+    for s in overlay.pinned.iter().filter(|s| s.family.is_none() || overlay.family.is_none()) {
+        out.push(Entry {
+            text: s.name.clone(),
+            style: Style::Dashed,
+            color: rgb(pin_color(s, overlay), false),
+            swatch: false,
+        });
+    }
+    if let Some(h) = &fig.heatmap {
+        for (i, c) in h.categories.iter().enumerate() {
+            out.push(Entry {
+                text: c.clone(),
+                style: Style::Points,
+                color: rgb(h.color_of(i as f64, (0.0, 1.0)), false),
+                swatch: true,
+            });
+        }
+    }
+    out
+}
+
+fn pin_range(overlay: &Overlay) -> Option<(f64, f64)> {
+    let vals = overlay.pinned.iter().filter_map(|s| s.family);
+    let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+    (overlay.family.is_some() && lo <= hi).then_some((lo, hi))
+}
+
+fn pin_color(s: &Series, overlay: &Overlay) -> [u8; 3] {
+    match (&overlay.family, s.family, pin_range(overlay)) {
+        (Some(f), Some(v), Some((lo, hi))) => colormap(family_fraction(v, lo, hi, f.scale)),
+        _ => crate::figure::PALETTE[s.color % crate::figure::PALETTE.len()],
+    }
+}
+
+/// What a colour bar shows: title, range, scale and the fraction of the
+/// colour map its top reaches.
+struct Bar {
+    title: String,
+    lo: f64,
+    hi: f64,
+    scale: Scale,
+    top: f64,
+}
+
+fn colour_bar(fig: &Figure, overlay: &Overlay) -> Option<Bar> {
+    if let Some(h) = fig.heatmap.as_ref().filter(|h| h.categories.is_empty()) {
+        let (lo, hi) = h.range();
+        return (lo <= hi).then(|| Bar { title: h.title(), lo, hi, scale: Scale::Linear, top: 1.0 });
+    }
+    let (f, (lo, hi)) = match (&fig.family, fig.family_range()) {
+        (Some(f), Some(r)) => (f, r),
+        _ => (overlay.family.as_ref()?, pin_range(overlay)?),
+    };
+    let scale = if f.scale == Scale::Log && lo > 0.0 { Scale::Log } else { Scale::Linear };
+    Some(Bar { title: f.title(), lo, hi, scale, top: 0.9 })
+}
+
+/// Shows the figure in a panel of the given size (title, plot, legend and
+/// colour bar) and returns the panel's response. `locked` keeps the axes at
+/// a chosen view instead of following the data.
+pub fn show(
+    ui: &mut egui::Ui,
+    fig: &Figure,
+    overlay: &Overlay,
+    size: Vec2,
+    stale: bool,
+    look: Look,
+    locked: Option<View>,
+) -> egui::Response {
+    let (xs, ys) = (fig.x.scale, fig.y.scale);
+    let view = locked.unwrap_or_else(|| View::of(fig));
+    let title = if stale { format!("{} (updating…)", fig.title) } else { fig.title.clone() };
+    let font = egui::FontId::proportional(look.text);
+    let legend = entries(fig, overlay, stale);
+    let bar = colour_bar(fig, overlay);
+    let shown = ui.vertical(|ui| {
+        ui.set_max_width(size.x);
+        ui.add(egui::Label::new(egui::RichText::new(title).strong().size(look.text + 1.0)).truncate());
+        // Legend size in points, to find it a free corner.
+        let row = look.text * 1.45;
+        let text_w = legend
+            .iter()
+            .map(|e| ui.painter().layout_no_wrap(e.text.clone(), font.clone(), Color32::WHITE).size().x)
+            .fold(0.0f32, f32::max);
+        let legend_size = Vec2::new(text_w + 46.0, legend.len() as f32 * row + 10.0);
+        let bar_w = if bar.is_some() { 34.0 + 5.5 * look.text } else { 0.0 };
+        let mut plot_size = Vec2::new(size.x - bar_w, size.y - look.text * 1.6 - 6.0);
+        // Whether the legend found no free corner in the last frame, measured
+        // on the plot as drawn (its frame and range); it then goes outside.
+        let memory = ui.scope_id().with(("legend-outside", fig.id.as_str()));
+        let was_outside = !legend.is_empty() && ui.data(|d| d.get_temp::<bool>(memory)).unwrap_or(false);
+        // No free corner: the legend goes beside the plot when it is narrow
+        // enough, below it otherwise.
+        let beside = was_outside && legend_size.x < 0.4 * plot_size.x;
+        let below = was_outside && !beside;
+        if beside {
+            plot_size.x -= legend_size.x + 8.0;
+        }
+        let below_rows =
+            if below { legend.len().div_ceil(((plot_size.x / (legend_size.x.max(60.0))) as usize).max(1)) } else { 0 };
+        if below {
+            plot_size.y -= below_rows as f32 * row + 8.0;
+        }
+        let x_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
+        let y_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
+        let (xl1, xl2, yl1, yl2) =
+            (Rc::clone(&x_labels), Rc::clone(&x_labels), Rc::clone(&y_labels), Rc::clone(&y_labels));
+        let (x_unit, y_unit) = (fig.x.unit.clone(), fig.y.unit.clone());
+        let (x_name, y_name) = (fig.x.label.clone(), fig.y.label.clone());
+        let bounds = |r: [f64; 2], s: Scale| match (transform(r[0], s), transform(r[1], s)) {
+            (Some(a), Some(b)) if b > a => (a, b),
+            _ => (0.0, 1.0),
+        };
+        let (bx, by) = (bounds(view.x, xs), bounds(view.y, ys));
+        let response = ui
+            .horizontal(|ui| {
+                let plot = Plot::new(("figure", fig.id.as_str()))
+                    .width(plot_size.x.max(80.0))
+                    .height(plot_size.y.max(60.0))
+                    .x_axis_label(fig.x.title())
+                    .y_axis_label(fig.y.title())
+                    .default_x_bounds(bx.0, bx.1)
+                    .default_y_bounds(by.0, by.1)
+                    .x_grid_spacer(move |input| grid_marks(input, xs, 85.0, &xl1))
+                    .y_grid_spacer(move |input| grid_marks(input, ys, 36.0, &yl1))
+                    .x_axis_formatter(move |mark, _| label_of(mark.value, &xl2))
+                    .y_axis_formatter(move |mark, _| label_of(mark.value, &yl2))
+                    .label_formatter(move |hover: &egui_plot::HoverPosition<'_>| {
+                        let (name, p) = match hover {
+                            egui_plot::HoverPosition::NearDataPoint { plot_name, position, .. } => {
+                                (*plot_name, *position)
+                            }
+                            egui_plot::HoverPosition::Elsewhere { position } => ("", *position),
+                        };
+                        let x = untransform(p.x, xs);
+                        let y = untransform(p.y, ys);
+                        let head = if name.is_empty() { String::new() } else { format!("{name}\n") };
+                        Some(format!("{head}{x_name} = {} {x_unit}\n{y_name} = {} {y_unit}", human(x), human(y)))
+                    });
+                let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look));
+                let frame = *shown.transform.frame();
+                if !legend.is_empty() {
+                    // The frame the plot would have with the legend inside.
+                    let inside_w = frame.width() + if beside { legend_size.x + 8.0 } else { 0.0 };
+                    let inside_h = frame.height() + if below { below_rows as f32 * row + 8.0 } else { 0.0 };
+                    let b = shown.transform.bounds();
+                    let drawn = View {
+                        x: [untransform(b.min()[0], xs), untransform(b.max()[0], xs)],
+                        y: [untransform(b.min()[1], ys), untransform(b.max()[1], ys)],
+                        x_scale: xs,
+                        y_scale: ys,
+                    };
+                    let frac = |a: f32, total: f32| (a / total.max(1.0)) as f64;
+                    let found = layout::free_corner(
+                        fig.series.iter().chain(&overlay.pinned),
+                        fig.heatmap.is_some(),
+                        &drawn,
+                        [frac(legend_size.x, inside_w), frac(legend_size.y, inside_h)],
+                        [frac(8.0, inside_w), frac(8.0, inside_h)],
+                    );
+                    if let (Some(c), false) = (found, was_outside) {
+                        paint_legend(ui, &legend, corner_rect(frame, c, legend_size), look);
+                    }
+                    if found.is_none() != was_outside {
+                        ui.data_mut(|d| d.insert_temp(memory, found.is_none()));
+                        ui.ctx().request_repaint();
                     }
                 }
-                if let Some(p) = overlay.cursor
-                    && let (Some(x), Some(y)) = (transform(p[0], xs), transform(p[1], ys))
-                {
-                    plot_ui.points(
-                        Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
-                            .color(Color32::from_rgb(255, 200, 0))
-                            .radius(5.0)
-                            .shape(MarkerShape::Circle)
-                            .filled(true),
-                    );
+                if beside {
+                    let (rect, _) = ui.allocate_exact_size(legend_size, egui::Sense::hover());
+                    paint_legend(ui, &legend, rect, look);
                 }
+                if let Some(b) = &bar {
+                    let (rect, _) = ui.allocate_exact_size(Vec2::new(bar_w, plot_size.y), egui::Sense::hover());
+                    paint_bar(ui, b, Rect::from_x_y_ranges(rect.x_range(), frame.y_range()), look);
+                }
+                shown.response
             })
-            .response
-    })
-    .inner
+            .inner;
+        if below {
+            ui.horizontal_wrapped(|ui| {
+                for e in &legend {
+                    let (rect, _) = ui.allocate_exact_size(legend_size_one(ui, e, &font), egui::Sense::hover());
+                    paint_entry(ui, e, rect, look);
+                }
+            });
+        }
+        response
+    });
+    // The whole panel: title, plot with its axes, legend and colour bar.
+    shown.response.union(shown.inner)
+}
+
+fn legend_size_one(ui: &egui::Ui, e: &Entry, font: &egui::FontId) -> Vec2 {
+    let w = ui.painter().layout_no_wrap(e.text.clone(), font.clone(), Color32::WHITE).size().x;
+    Vec2::new(w + 50.0, font.size * 1.45)
+}
+
+fn corner_rect(frame: Rect, c: Corner, size: Vec2) -> Rect {
+    let m = 8.0;
+    let x = match c {
+        Corner::UpperLeft | Corner::LowerLeft => frame.left() + m,
+        Corner::UpperRight | Corner::LowerRight => frame.right() - m - size.x,
+    };
+    let y = match c {
+        Corner::UpperLeft | Corner::UpperRight => frame.top() + m,
+        Corner::LowerLeft | Corner::LowerRight => frame.bottom() - m - size.y,
+    };
+    Rect::from_min_size(Pos2::new(x, y), size)
+}
+
+fn paint_legend(ui: &mut egui::Ui, legend: &[Entry], rect: Rect, look: Look) {
+    let painter = ui.painter().clone();
+    let bg = if look.dark { Color32::from_black_alpha(215) } else { Color32::from_white_alpha(235) };
+    painter.rect(rect, 3.0, bg, Stroke::new(1.0, Color32::GRAY), egui::StrokeKind::Inside);
+    let row = look.text * 1.45;
+    for (k, e) in legend.iter().enumerate() {
+        let r = Rect::from_min_size(
+            Pos2::new(rect.left(), rect.top() + 5.0 + k as f32 * row),
+            Vec2::new(rect.width(), row),
+        );
+        paint_entry(ui, e, r, look);
+    }
+}
+
+/// One legend row: its line, marker or swatch, then its text.
+fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
+    let painter = ui.painter().clone();
+    let y = rect.center().y;
+    let x0 = rect.left() + 6.0;
+    let stroke = Stroke::new(look.line, e.color);
+    if e.swatch {
+        painter.rect_filled(Rect::from_min_size(Pos2::new(x0 + 6.0, y - 6.0), Vec2::new(18.0, 12.0)), 1.0, e.color);
+    } else {
+        match e.style {
+            Style::Line => {
+                painter.line_segment([Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)], stroke);
+            }
+            Style::Dashed => {
+                painter.extend(egui::Shape::dashed_line(
+                    &[Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)],
+                    stroke,
+                    7.0,
+                    4.0,
+                ));
+            }
+            Style::Points => {
+                painter.circle_filled(Pos2::new(x0 + 15.0, y), 3.5, e.color);
+            }
+            Style::Marker => {
+                let c = Pos2::new(x0 + 15.0, y);
+                let r = 6.5;
+                painter.add(egui::Shape::convex_polygon(
+                    vec![c + Vec2::new(0.0, -r), c + Vec2::new(r, 0.0), c + Vec2::new(0.0, r), c + Vec2::new(-r, 0.0)],
+                    e.color,
+                    Stroke::new(1.0, Color32::BLACK),
+                ));
+            }
+            Style::LowerLimit | Style::UpperLimit => {
+                let c = Pos2::new(x0 + 15.0, y);
+                let d = if e.style == Style::LowerLimit { -1.0 } else { 1.0 };
+                let r = 6.0;
+                painter.add(egui::Shape::convex_polygon(
+                    vec![c + Vec2::new(0.0, d * r), c + Vec2::new(r, -d * 0.6 * r), c + Vec2::new(-r, -d * 0.6 * r)],
+                    e.color,
+                    Stroke::NONE,
+                ));
+            }
+        }
+    }
+    // The text is a label, so that it can be read out and found by tests.
+    let text_rect = Rect::from_min_max(Pos2::new(x0 + 38.0, rect.top()), rect.right_bottom());
+    ui.put(text_rect, egui::Label::new(egui::RichText::new(&e.text).size(look.text)).selectable(false).truncate());
+}
+
+fn paint_bar(ui: &egui::Ui, b: &Bar, rect: Rect, look: Look) {
+    let painter = ui.painter();
+    let bar = Rect::from_min_size(rect.left_top() + Vec2::new(8.0, 0.0), Vec2::new(16.0, rect.height()));
+    let n = 48;
+    for k in 0..n {
+        let t = (k as f64 + 0.5) / n as f64;
+        let [r, g, bl] = colormap(t * b.top);
+        let y1 = bar.bottom() - k as f32 / n as f32 * bar.height();
+        let y0 = bar.bottom() - (k + 1) as f32 / n as f32 * bar.height();
+        painter.rect_filled(Rect::from_x_y_ranges(bar.x_range(), y0..=y1 + 0.5), 0.0, Color32::from_rgb(r, g, bl));
+    }
+    let text_color = ui.visuals().text_color();
+    painter.rect_stroke(bar, 0.0, Stroke::new(1.0, text_color), egui::StrokeKind::Inside);
+    let font = egui::FontId::proportional(look.text * 0.9);
+    let mut widest: f32 = 0.0;
+    let bar_ticks = if b.hi > b.lo { ticks(b.lo, b.hi, b.scale, 5) } else { Vec::new() };
+    for t in &bar_ticks {
+        let f = (family_fraction(t.value, b.lo, b.hi, b.scale) / 0.9) as f32;
+        let y = bar.bottom() - f * bar.height();
+        let len = if t.is_major() { 5.0 } else { 3.0 };
+        painter
+            .line_segment([Pos2::new(bar.right(), y), Pos2::new(bar.right() + len, y)], Stroke::new(1.0, text_color));
+        if let Some(l) = &t.label {
+            let r =
+                painter.text(Pos2::new(bar.right() + 7.0, y), egui::Align2::LEFT_CENTER, l, font.clone(), text_color);
+            widest = widest.max(r.width());
+        }
+    }
+    if bar_ticks.is_empty() {
+        let r = painter.text(
+            Pos2::new(bar.right() + 7.0, bar.center().y),
+            egui::Align2::LEFT_CENTER,
+            human(b.lo),
+            font.clone(),
+            text_color,
+        );
+        widest = r.width();
+    }
+    let galley = painter.layout_no_wrap(b.title.clone(), egui::FontId::proportional(look.text * 0.9), text_color);
+    let x = (bar.right() + 10.0 + widest).min(rect.right() - galley.size().y);
+    let pos = Pos2::new(x, bar.center().y + galley.size().x / 2.0);
+    painter.add(egui::epaint::TextShape::new(pos, galley, text_color).with_angle(-std::f32::consts::FRAC_PI_2));
+}
+
+fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overlay, stale: bool, look: Look) {
+    if let Some(h) = &fig.heatmap {
+        heatmap(plot_ui, fig, h);
+    }
+    for s in &overlay.pinned {
+        let pts = points(fig, s);
+        let c = rgb(pin_color(s, overlay), false);
+        let line = Line::new(s.name.clone(), PlotPoints::from(pts)).color(c).width(look.line * 0.8);
+        plot_ui.line(if s.family.is_some() && overlay.family.is_some() {
+            line
+        } else {
+            line.style(LineStyle::Dashed { length: 9.0 })
+        });
+    }
+    for s in &fig.series {
+        let pts = points(fig, s);
+        let c = rgb(fig.color_of(s), stale);
+        let name = s.name.clone();
+        match s.style {
+            Style::Line => plot_ui.line(Line::new(name, PlotPoints::from(pts)).color(c).width(look.line)),
+            Style::Dashed => plot_ui.line(
+                Line::new(name, PlotPoints::from(pts))
+                    .color(c)
+                    .width(look.line * 0.85)
+                    .style(LineStyle::Dashed { length: 9.0 }),
+            ),
+            Style::Points => {
+                plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
+            }
+            Style::Marker => plot_ui.points(
+                Points::new(name, PlotPoints::from(pts))
+                    .color(c)
+                    .radius(look.line * 3.0)
+                    .shape(MarkerShape::Diamond)
+                    .filled(true),
+            ),
+            Style::LowerLimit => plot_ui.points(
+                Points::new(name, PlotPoints::from(pts))
+                    .color(c)
+                    .radius(look.line * 2.5)
+                    .shape(MarkerShape::Up)
+                    .filled(true),
+            ),
+            Style::UpperLimit => plot_ui.points(
+                Points::new(name, PlotPoints::from(pts))
+                    .color(c)
+                    .radius(look.line * 2.5)
+                    .shape(MarkerShape::Down)
+                    .filled(true),
+            ),
+        }
+    }
+    if let Some(p) = overlay.cursor
+        && let (Some(x), Some(y)) = (transform(p[0], fig.x.scale), transform(p[1], fig.y.scale))
+    {
+        plot_ui.points(
+            Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
+                .color(Color32::from_rgb(230, 159, 0))
+                .radius(look.line * 2.8)
+                .shape(MarkerShape::Circle)
+                .filled(true),
+        );
+    }
 }
 
 /// Draws a heatmap as one filled polygon per cell (cells may be uneven on log axes).
 fn heatmap(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, h: &Heatmap) {
     let ex = Heatmap::edges(&h.x, fig.x.scale);
     let ey = Heatmap::edges(&h.y, fig.y.scale);
-    let (lo, hi) = h.range();
-    let span = if hi > lo { hi - lo } else { 1.0 };
+    let range = h.range();
     for j in 0..h.y.len() {
         for i in 0..h.x.len() {
+            let v = h.values[j * h.x.len() + i];
+            if !v.is_finite() {
+                continue;
+            }
             let corners = [[ex[i], ey[j]], [ex[i + 1], ey[j]], [ex[i + 1], ey[j + 1]], [ex[i], ey[j + 1]]];
             let Some(pts) = corners
                 .iter()
@@ -138,10 +520,9 @@ fn heatmap(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, h: &Heatmap) {
             else {
                 continue;
             };
-            let [r, g, b] = colormap((h.values[j * h.x.len() + i] - lo) / span);
+            let [r, g, b] = h.color_of(v, range);
             let c = Color32::from_rgb(r, g, b);
-            plot_ui
-                .polygon(egui_plot::Polygon::new("", PlotPoints::from(pts)).fill_color(c).stroke(egui::Stroke::NONE));
+            plot_ui.polygon(egui_plot::Polygon::new("", PlotPoints::from(pts)).fill_color(c).stroke(Stroke::NONE));
         }
     }
 }

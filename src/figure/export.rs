@@ -2,13 +2,10 @@
 //! [`crate::files`]: a failed export never leaves a truncated or temporary
 //! file and never destroys an earlier one.
 
-use super::{Figure, Heatmap, PALETTE, Scale, Style, colormap};
+use super::Figure;
 use crate::files::{WriteError, write_atomically};
-use plotters::coord::Shift;
-use plotters::coord::ranged1d::{AsRangedCoord, ValueFormatter};
-use plotters::prelude::*;
 use std::path::Path;
-use std::sync::Once;
+use std::sync::{Arc, OnceLock};
 
 /// Why an export failed; the message names the file.
 #[derive(Debug, thiserror::Error)]
@@ -32,7 +29,7 @@ pub fn csv_bytes(fig: &Figure) -> Result<Vec<u8>, csv::Error> {
     let mut w = csv::Writer::from_writer(Vec::new());
     match &fig.heatmap {
         None => w.write_record(["series", &fig.x.title(), &fig.y.title()])?,
-        Some(h) => w.write_record(["series", &fig.x.title(), &fig.y.title(), &h.label])?,
+        Some(h) => w.write_record(["series", &fig.x.title(), &fig.y.title(), &h.title()])?,
     }
     let extra = usize::from(fig.heatmap.is_some());
     for s in &fig.series {
@@ -59,14 +56,16 @@ pub fn write_csv(fig: &Figure, path: &Path) -> Result<(), ExportError> {
     Ok(write_atomically(path, &bytes)?)
 }
 
-/// Renders the figure as an SVG document.
+/// The bundled font (DejaVu Sans) that exported text is measured and drawn
+/// with, so that no system font is needed and every label's glyphs exist.
+pub const FONT_TTF: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+
+/// The family name of [`FONT_TTF`].
+pub const FONT_FAMILY: &str = "DejaVu Sans";
+
+/// Renders the figure as an SVG document (text kept as text).
 pub fn svg_string(fig: &Figure, size: (u32, u32)) -> Result<String, ExportError> {
-    let mut out = String::new();
-    {
-        let root = SVGBackend::with_string(&mut out, size).into_drawing_area();
-        draw(&root, fig).map_err(|message| ExportError::Draw { id: fig.id.clone(), message })?;
-    }
-    Ok(out)
+    Ok(super::svg::render(fig, size))
 }
 
 /// Writes the figure as SVG.
@@ -74,17 +73,31 @@ pub fn write_svg(fig: &Figure, path: &Path, size: (u32, u32)) -> Result<(), Expo
     Ok(write_atomically(path, svg_string(fig, size)?.as_bytes())?)
 }
 
-static FONT: Once = Once::new();
+fn fonts() -> Arc<resvg::usvg::fontdb::Database> {
+    static FONTS: OnceLock<Arc<resvg::usvg::fontdb::Database>> = OnceLock::new();
+    Arc::clone(FONTS.get_or_init(|| {
+        let mut db = resvg::usvg::fontdb::Database::new();
+        db.load_font_data(FONT_TTF.to_vec());
+        db.set_sans_serif_family(FONT_FAMILY);
+        Arc::new(db)
+    }))
+}
 
-/// Renders the figure as PNG bytes.
+/// Renders the figure as PNG bytes: the SVG document rasterised with the
+/// bundled font, so both files show the same figure.
 pub fn png_bytes(fig: &Figure, size: (u32, u32)) -> Result<Vec<u8>, ExportError> {
     let draw_err = |message: String| ExportError::Draw { id: fig.id.clone(), message };
-    let mut buf = vec![0u8; size.0 as usize * size.1 as usize * 3];
-    {
-        let root = BitMapBackend::with_buffer(&mut buf, size).into_drawing_area();
-        draw(&root, fig).map_err(draw_err)?;
-    }
-    let img = image::RgbImage::from_raw(size.0, size.1, buf).ok_or_else(|| draw_err("bad buffer size".into()))?;
+    let svg = svg_string(fig, size)?;
+    let options = resvg::usvg::Options { fontdb: fonts(), font_family: FONT_FAMILY.into(), ..Default::default() };
+    let tree = resvg::usvg::Tree::from_str(&svg, &options).map_err(|e| draw_err(e.to_string()))?;
+    let (w, h) = (size.0.max(50), size.1.max(50));
+    let mut pixmap =
+        resvg::tiny_skia::Pixmap::new(w, h).ok_or_else(|| draw_err(format!("cannot make a {w}×{h} image")))?;
+    pixmap.fill(resvg::tiny_skia::Color::WHITE);
+    resvg::render(&tree, resvg::tiny_skia::Transform::identity(), &mut pixmap.as_mut());
+    // Opaque white background: premultiplied and straight RGB agree.
+    let rgb: Vec<u8> = pixmap.data().chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
+    let img = image::RgbImage::from_raw(w, h, rgb).ok_or_else(|| draw_err("bad buffer size".into()))?;
     let mut png = std::io::Cursor::new(Vec::new());
     img.write_to(&mut png, image::ImageFormat::Png).map_err(|e| draw_err(e.to_string()))?;
     Ok(png.into_inner())
@@ -107,113 +120,4 @@ pub fn tick_label(v: f64) -> String {
         let s = format!("{v:.1e}");
         s.replace(".0e", "e")
     }
-}
-
-fn padded(lo: f64, hi: f64, scale: Scale) -> (f64, f64) {
-    match scale {
-        Scale::Linear => {
-            let span = if hi > lo { hi - lo } else { lo.abs().max(1.0) };
-            (lo - 0.04 * span, hi + 0.04 * span)
-        }
-        Scale::Log => {
-            if hi > lo {
-                (lo / 1.15, hi * 1.15)
-            } else {
-                (lo / 2.0, hi * 2.0)
-            }
-        }
-    }
-}
-
-fn draw<DB: DrawingBackend>(root: &DrawingArea<DB, Shift>, fig: &Figure) -> Result<(), String> {
-    // Text is measured (SVG) and rendered (PNG) with the font that ships
-    // inside egui's default fonts, so no system font is needed.
-    FONT.call_once(|| {
-        let _ = plotters::style::register_font("sans-serif", FontStyle::Normal, epaint_default_fonts::UBUNTU_LIGHT);
-    });
-    root.fill(&WHITE).map_err(|e| e.to_string())?;
-    let [x0, x1, y0, y1] = fig.bounds().unwrap_or([1.0, 10.0, 1.0, 10.0]);
-    let (x0, x1) = padded(x0, x1, fig.x.scale);
-    let (y0, y1) = padded(y0, y1, fig.y.scale);
-    match (fig.x.scale, fig.y.scale) {
-        (Scale::Linear, Scale::Linear) => draw_in(root, fig, x0..x1, y0..y1),
-        (Scale::Log, Scale::Linear) => draw_in(root, fig, (x0..x1).log_scale(), y0..y1),
-        (Scale::Linear, Scale::Log) => draw_in(root, fig, x0..x1, (y0..y1).log_scale()),
-        (Scale::Log, Scale::Log) => draw_in(root, fig, (x0..x1).log_scale(), (y0..y1).log_scale()),
-    }
-}
-
-fn draw_in<DB, X, Y>(root: &DrawingArea<DB, Shift>, fig: &Figure, xr: X, yr: Y) -> Result<(), String>
-where
-    DB: DrawingBackend,
-    X: AsRangedCoord<Value = f64>,
-    Y: AsRangedCoord<Value = f64>,
-    X::CoordDescType: ValueFormatter<f64>,
-    Y::CoordDescType: ValueFormatter<f64>,
-{
-    let e = |e: DrawingAreaErrorKind<DB::ErrorType>| e.to_string();
-    let mut chart = ChartBuilder::on(root)
-        .caption(&fig.title, ("sans-serif", 22))
-        .margin(14)
-        .x_label_area_size(48)
-        .y_label_area_size(84)
-        .build_cartesian_2d(xr, yr)
-        .map_err(e)?;
-    chart
-        .configure_mesh()
-        .x_desc(fig.x.title())
-        .y_desc(fig.y.title())
-        .x_label_formatter(&|v| tick_label(*v))
-        .y_label_formatter(&|v| tick_label(*v))
-        .label_style(("sans-serif", 14))
-        .axis_desc_style(("sans-serif", 16))
-        .light_line_style(RGBColor(235, 235, 235))
-        .draw()
-        .map_err(e)?;
-    if let Some(h) = &fig.heatmap {
-        let ex = Heatmap::edges(&h.x, fig.x.scale);
-        let ey = Heatmap::edges(&h.y, fig.y.scale);
-        let (lo, hi) = h.range();
-        let span = if hi > lo { hi - lo } else { 1.0 };
-        let cells = (0..h.y.len()).flat_map(|j| (0..h.x.len()).map(move |i| (i, j))).map(|(i, j)| {
-            let [r, g, b] = colormap((h.values[j * h.x.len() + i] - lo) / span);
-            Rectangle::new([(ex[i], ey[j]), (ex[i + 1], ey[j + 1])], RGBColor(r, g, b).filled())
-        });
-        chart.draw_series(cells).map_err(e)?;
-    }
-    for s in &fig.series {
-        let [r, g, b] = PALETTE[s.color % PALETTE.len()];
-        let color = RGBColor(r, g, b);
-        let pts: Vec<(f64, f64)> = s.points.iter().filter(|p| fig.visible(p)).map(|p| (p[0], p[1])).collect();
-        if pts.is_empty() {
-            continue;
-        }
-        let legend = move |(x, y): (i32, i32)| PathElement::new(vec![(x, y), (x + 20, y)], color.stroke_width(2));
-        let anno = match s.style {
-            Style::Line => chart.draw_series(LineSeries::new(pts, color.stroke_width(2))).map_err(e)?,
-            Style::Dashed => chart.draw_series(DashedLineSeries::new(pts, 8, 5, color.stroke_width(2))).map_err(e)?,
-            Style::Points => {
-                chart.draw_series(pts.into_iter().map(|p| Circle::new(p, 3, color.filled()))).map_err(e)?
-            }
-            Style::Marker | Style::LowerLimit => {
-                chart.draw_series(pts.into_iter().map(|p| TriangleMarker::new(p, 8, color.filled()))).map_err(e)?
-            }
-            Style::UpperLimit => {
-                chart.draw_series(pts.into_iter().map(|p| Cross::new(p, 6, color.stroke_width(2)))).map_err(e)?
-            }
-        };
-        if !s.name.is_empty() {
-            anno.label(s.name.clone()).legend(legend);
-        }
-    }
-    chart
-        .configure_series_labels()
-        .label_font(("sans-serif", 14))
-        .background_style(WHITE.mix(0.85))
-        .border_style(BLACK)
-        .position(SeriesLabelPosition::UpperRight)
-        .draw()
-        .map_err(e)?;
-    root.present().map_err(e)?;
-    Ok(())
 }

@@ -3,8 +3,21 @@
 //! that the command line makes the same figures without a window.
 
 mod export;
+pub mod layout;
+mod svg;
+pub mod ticks;
 
-pub use export::{ExportError, csv_bytes, png_bytes, svg_string, tick_label, write_csv, write_png, write_svg};
+pub use export::{
+    ExportError, FONT_FAMILY, FONT_TTF, csv_bytes, png_bytes, svg_string, tick_label, write_csv, write_png, write_svg,
+};
+pub use layout::View;
+pub use ticks::{Tick, number};
+
+/// A number for a legend or a note: three significant digits, written as
+/// people write it ("0.0123", "215", "1.5×10⁻⁷").
+pub fn human(v: f64) -> String {
+    ticks::number(v, 3)
+}
 
 /// Axis scale.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
@@ -69,28 +82,62 @@ pub struct Series {
     pub style: Style,
     /// Colour index into [`PALETTE`].
     pub color: usize,
+    /// The value of the figure's varied parameter ([`Figure::family`]) this
+    /// series belongs to: drawn in the colour of the value on a sequential
+    /// map, with a colour bar instead of a legend entry.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub family: Option<f64>,
 }
 
 impl Series {
     /// A series from points.
     pub fn new(name: impl Into<String>, points: Vec<[f64; 2]>, style: Style, color: usize) -> Self {
-        Series { name: name.into(), points, style, color }
+        Series { name: name.into(), points, style, color, family: None }
+    }
+
+    /// Marks the series as the member of the figure's family at `value`
+    /// (in the unit of [`Family::unit`]).
+    pub fn at(mut self, value: f64) -> Self {
+        self.family = value.is_finite().then_some(value);
+        self
     }
 }
 
-/// Size of exported figures, pixels.
-pub const EXPORT_SIZE: (u32, u32) = (900, 620);
+/// A parameter varied across the series of a figure (snapshot times, disk
+/// masses, pinned sweeps): its members are coloured on a sequential map and
+/// explained by a colour bar labelled with the parameter and its unit.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Family {
+    /// The varied quantity, e.g. "time".
+    pub label: String,
+    /// Its unit as shown, e.g. "yr".
+    pub unit: String,
+    /// Whether the values are spread logarithmically.
+    pub scale: Scale,
+}
 
-/// Colours shared by the window and the file writers (RGB).
+impl Family {
+    /// "label [unit]".
+    pub fn title(&self) -> String {
+        if self.unit.is_empty() { self.label.clone() } else { format!("{} [{}]", self.label, self.unit) }
+    }
+}
+
+/// Default size of exported figures, pixels: wide enough for a slide.
+pub const EXPORT_SIZE: (u32, u32) = (1600, 1100);
+
+/// Colours shared by the window and the file writers (RGB): the Okabe–Ito
+/// colour-blind-safe set, with grey and a darker yellow in place of its black
+/// and yellow so that every entry reads on light and dark backgrounds.
 pub const PALETTE: [[u8; 3]; 8] = [
-    [214, 39, 40],
-    [31, 119, 180],
-    [44, 160, 44],
-    [255, 127, 14],
-    [148, 103, 189],
-    [140, 86, 75],
-    [127, 127, 127],
-    [23, 190, 207],
+    [213, 94, 0],
+    [0, 114, 178],
+    [0, 158, 115],
+    [230, 159, 0],
+    [204, 121, 167],
+    [86, 180, 233],
+    [128, 128, 128],
+    [181, 158, 0],
 ];
 
 /// A colour map over a rectangular grid (e.g. a χ² landscape).
@@ -104,9 +151,50 @@ pub struct Heatmap {
     pub values: Vec<f64>,
     /// What the colour shows, e.g. "log10 χ²".
     pub label: String,
+    /// Unit of the values as shown on the colour bar; empty if dimensionless.
+    pub unit: String,
+    /// Names of the categories for a categorical map (values are indices
+    /// into it, coloured from [`PALETTE`]); empty for a continuous map.
+    pub categories: Vec<String>,
 }
 
 impl Heatmap {
+    /// A continuous map of `values` (row by row, see [`Heatmap::values`]).
+    pub fn new(x: Vec<f64>, y: Vec<f64>, values: Vec<f64>, label: &str, unit: &str) -> Self {
+        Heatmap { x, y, values, label: label.into(), unit: unit.into(), categories: Vec::new() }
+    }
+
+    /// A categorical map: `values` are indices into `categories`.
+    pub fn categorical(x: Vec<f64>, y: Vec<f64>, values: Vec<f64>, label: &str, categories: &[&str]) -> Self {
+        Heatmap {
+            x,
+            y,
+            values,
+            label: label.into(),
+            unit: String::new(),
+            categories: categories.iter().map(|c| c.to_string()).collect(),
+        }
+    }
+
+    /// "label [unit]".
+    pub fn title(&self) -> String {
+        if self.unit.is_empty() { self.label.clone() } else { format!("{} [{}]", self.label, self.unit) }
+    }
+
+    /// The colour of the cell holding `v`.
+    pub fn color_of(&self, v: f64, range: (f64, f64)) -> [u8; 3] {
+        if !self.categories.is_empty() {
+            return if v.is_finite() && v >= 0.0 {
+                PALETTE[v.round() as usize % PALETTE.len()]
+            } else {
+                [255, 255, 255]
+            };
+        }
+        let (lo, hi) = range;
+        let span = if hi > lo { hi - lo } else { 1.0 };
+        colormap((v - lo) / span)
+    }
+
     /// Cell edges along one axis: midpoints between centres (geometric on log axes).
     pub fn edges(centres: &[f64], scale: Scale) -> Vec<f64> {
         let n = centres.len();
@@ -147,10 +235,20 @@ impl Heatmap {
     }
 }
 
-/// Colour of a value in [0, 1] on a perceptually ordered blue–green–yellow ramp.
+/// Colour of a value in [0, 1] on viridis, the perceptually uniform
+/// purple–blue–green–yellow map (sampled at nine stops).
 pub fn colormap(t: f64) -> [u8; 3] {
-    const STOPS: [[f64; 3]; 5] =
-        [[68.0, 1.0, 84.0], [59.0, 82.0, 139.0], [33.0, 145.0, 140.0], [94.0, 201.0, 98.0], [253.0, 231.0, 37.0]];
+    const STOPS: [[f64; 3]; 9] = [
+        [68.0, 1.0, 84.0],
+        [71.0, 44.0, 122.0],
+        [59.0, 81.0, 139.0],
+        [44.0, 113.0, 142.0],
+        [33.0, 144.0, 141.0],
+        [39.0, 173.0, 129.0],
+        [92.0, 200.0, 99.0],
+        [170.0, 220.0, 50.0],
+        [253.0, 231.0, 37.0],
+    ];
     let t = if t.is_finite() { t.clamp(0.0, 1.0) } else { 1.0 };
     let x = t * (STOPS.len() - 1) as f64;
     let i = (x.floor() as usize).min(STOPS.len() - 2);
@@ -173,12 +271,63 @@ pub struct Figure {
     pub series: Vec<Series>,
     /// An optional colour map drawn below the series.
     pub heatmap: Option<Heatmap>,
+    /// The parameter varied across the series marked with [`Series::at`].
+    pub family: Option<Family>,
+    /// On a logarithmic y-axis, how many decades below the highest point the
+    /// axis reaches by default (distributions: the decades that hold mass).
+    pub y_decades: Option<f64>,
 }
 
 impl Figure {
     /// An empty figure.
     pub fn new(id: &str, title: &str, x: Axis, y: Axis) -> Self {
-        Figure { id: id.into(), title: title.into(), x, y, series: Vec::new(), heatmap: None }
+        Figure {
+            id: id.into(),
+            title: title.into(),
+            x,
+            y,
+            series: Vec::new(),
+            heatmap: None,
+            family: None,
+            y_decades: None,
+        }
+    }
+
+    /// Declares the parameter varied across the series marked with
+    /// [`Series::at`] (builder style).
+    pub fn family(mut self, label: &str, unit: &str, scale: Scale) -> Self {
+        self.family = Some(Family { label: label.into(), unit: unit.into(), scale });
+        self
+    }
+
+    /// Limits a logarithmic y-axis to `decades` below the highest point
+    /// (builder style).
+    pub fn y_decades(mut self, decades: f64) -> Self {
+        self.y_decades = Some(decades);
+        self
+    }
+
+    /// The smallest and largest family value among the series.
+    pub fn family_range(&self) -> Option<(f64, f64)> {
+        self.family.as_ref()?;
+        let vals = self.series.iter().filter_map(|s| s.family);
+        let (lo, hi) = vals.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), v| (a.min(v), b.max(v)));
+        (lo <= hi).then_some((lo, hi))
+    }
+
+    /// Whether a series has a legend entry: named, and not a family member
+    /// (those are explained by the colour bar).
+    pub fn in_legend(&self, s: &Series) -> bool {
+        !s.name.is_empty() && (self.family.is_none() || s.family.is_none())
+    }
+
+    /// The colour of a series: its family value on the sequential map, or
+    /// its palette entry.
+    pub fn color_of(&self, s: &Series) -> [u8; 3] {
+        match (&self.family, s.family, self.family_range()) {
+            (Some(f), Some(v), Some((lo, hi))) => colormap(family_fraction(v, lo, hi, f.scale)),
+            _ => PALETTE[s.color % PALETTE.len()],
+        }
     }
 
     /// Adds a series and returns the figure (builder style).
@@ -219,4 +368,16 @@ impl Figure {
         let ok = |v: f64, s: Scale| v.is_finite() && (s == Scale::Linear || v > 0.0);
         ok(p[0], self.x.scale) && ok(p[1], self.y.scale)
     }
+}
+
+/// Where `v` sits between `lo` and `hi` on a family's colour scale, in
+/// [0, 1]; the map runs to 0.9 only, so the last member stays visible on a
+/// light background.
+pub fn family_fraction(v: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
+    let t = match scale {
+        Scale::Log if lo > 0.0 && hi > lo => (v / lo).ln() / (hi / lo).ln(),
+        _ if hi > lo => (v - lo) / (hi - lo),
+        _ => 0.5,
+    };
+    0.9 * t.clamp(0.0, 1.0)
 }

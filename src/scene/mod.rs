@@ -49,6 +49,9 @@ macro_rules! scenes {
         /// All scenes, in the order of the scene list (by thesis chapter).
         pub const SCENES: &[SceneInfo] = &[$($(<$chapter::$module::$scene as Scene>::INFO,)*)*];
 
+        /// The chapter folder of every scene, in the order of [`SCENES`].
+        const CHAPTER_OF: &[&str] = &[$($(first(stringify!($chapter), stringify!($module)),)*)*];
+
         impl SceneParams {
             /// Default parameters of the scene with identifier `id`.
             pub fn default_for(id: &str) -> Option<SceneParams> {
@@ -235,4 +238,56 @@ pub fn compute_cached(
 ) -> Result<SceneOutput, SceneError> {
     params.validate()?;
     params.dispatch(&mut Context { progress, caches })
+}
+
+/// The first of two names (lets the registry repeat a chapter per scene).
+const fn first(a: &'static str, _b: &'static str) -> &'static str {
+    a
+}
+
+/// A thesis chapter as the scene navigator and the presets menu group it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Chapter {
+    /// Heading, e.g. "Ch. 2 · Sticking collisions of adhesive spheres".
+    pub heading: &'static str,
+    /// Order in the thesis.
+    pub order: u8,
+}
+
+/// The chapter of scene `i` of [`SCENES`].
+pub fn chapter(i: usize) -> Chapter {
+    let (order, heading) = match CHAPTER_OF.get(i).copied().unwrap_or("") {
+        "collisions" => (2, "Ch. 2 · Collisions of adhesive spheres"),
+        "rolling" => (3, "Ch. 3 · Rolling friction"),
+        "disk" => (4, "Ch. 4 · Porous aggregates in a disk"),
+        "monte_carlo" => (4, "Ch. 4 · Monte Carlo growth in a column"),
+        "batches" => (5, "Ch. 5 · Dust batches and planetesimals"),
+        "debris" => (6, "Ch. 6 · Smallest fragments in debris disks"),
+        _ => (9, "Other"),
+    };
+    Chapter { heading, order }
+}
+
+/// The scenes in navigator order: by chapter as in the thesis, each chapter
+/// in registry order.
+pub fn scenes_by_chapter() -> Vec<(Chapter, Vec<usize>)> {
+    let mut groups: Vec<(Chapter, Vec<usize>)> = Vec::new();
+    for i in 0..SCENES.len() {
+        let c = chapter(i);
+        match groups.iter_mut().find(|(g, _)| *g == c) {
+            Some((_, v)) => v.push(i),
+            None => groups.push((c, vec![i])),
+        }
+    }
+    groups.sort_by_key(|(c, _)| c.order);
+    groups
+}
+
+/// The figures a scene reproduces, from its thesis reference ("Figs. 2.2,
+/// 2.3"); empty if it reproduces none.
+pub fn figures_of(info: &SceneInfo) -> &'static str {
+    match info.source.find("Fig") {
+        Some(k) => &info.source[k..],
+        None => "",
+    }
 }

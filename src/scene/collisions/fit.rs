@@ -270,7 +270,7 @@ fn slice(f: &FitResult, a: usize, b: usize, fixed: usize) -> Heatmap {
             values.push(f.chi2_at(ix[0], ix[1], ix[2]).max(1e-300).log10());
         }
     }
-    Heatmap { x: f.grids[a].clone(), y: f.grids[b].clone(), values, label: "log10 χ²".into() }
+    Heatmap::new(f.grids[a].clone(), f.grids[b].clone(), values, "log₁₀ χ²", "")
 }
 
 /// Computes the scene.

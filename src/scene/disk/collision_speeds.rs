@@ -141,15 +141,20 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         axis("m_i / m₀"),
         axis("m_j / m₀"),
     );
-    fig_v.heatmap = Some(Heatmap { x: ns.clone(), y: ns.clone(), values: dv.clone(), label: "log10 dv [m/s]".into() });
+    fig_v.heatmap = Some(Heatmap::new(ns.clone(), ns.clone(), dv.clone(), "log₁₀ Δv", "m/s"));
     let mut fig_s = Figure::new(
         "dominant-source",
-        "Dominant source (purple→yellow: Brownian, turbulence, settling, radial, azimuthal drift)",
+        "Dominant source of Δv (Fig. 4.2)",
         axis("m_i / m₀"),
         axis("m_j / m₀"),
     );
-    fig_s.heatmap =
-        Some(Heatmap { x: ns.clone(), y: ns.clone(), values: dom.clone(), label: "dominant source index".into() });
+    fig_s.heatmap = Some(Heatmap::categorical(
+        ns.clone(),
+        ns.clone(),
+        dom.clone(),
+        "dominant source",
+        &crate::physics::aggregate::SOURCES,
+    ));
     // Mark the equal-mass diagonal.
     let diag = vec![[ns[0], ns[0]], [ns[ns.len() - 1], ns[ns.len() - 1]]];
     fig_v = fig_v.with(Series::new("m_i = m_j", diag.clone(), Style::Dashed, 6));

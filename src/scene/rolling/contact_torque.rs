@@ -119,15 +119,14 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Axis::linear("x (rolling direction)", "nm"),
         Axis::linear("y", "nm"),
     ));
-    fig_p.heatmap =
-        Some(Heatmap { x: nm.clone(), y: nm.clone(), values: pressure, label: "pressure [MPa], clipped".into() });
+    fig_p.heatmap = Some(Heatmap::new(nm.clone(), nm.clone(), pressure, "pressure (clipped)", "MPa"));
     let mut fig_m = markers(Figure::new(
         "torque-map",
         "Torque contributions x·p (Fig. 3.2B)",
         Axis::linear("x (rolling direction)", "nm"),
         Axis::linear("y", "nm"),
     ));
-    fig_m.heatmap = Some(Heatmap { x: nm.clone(), y: nm, values: moment, label: "x·p [N/m], clipped".into() });
+    fig_m.heatmap = Some(Heatmap::new(nm.clone(), nm, moment, "x·p (clipped)", "N/m"));
 
     // Side view near the contact: sphere surface above the flat, exaggerated vertically.
     let r = pair.radius;

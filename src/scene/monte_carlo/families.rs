@@ -92,11 +92,13 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
         "Families in mass and filling factor",
         Axis::log("mass m", "g"),
         Axis::log("filling factor φ", ""),
-    );
+    )
+    .family("time", "yr", crate::figure::Scale::Log);
     if let Some(first) = runs.first() {
         for (k, s) in first.snapshots.iter().enumerate() {
             let pts = s.families.iter().map(|f| [f.mass * 1e3, f.filling]).collect();
-            fig = fig.with(Series::new(format!("{:.3} yr", s.t / YEAR), pts, Style::Points, k));
+            let label = format!("{} yr", crate::figure::human(s.t / YEAR));
+            fig = fig.with(Series::new(label, pts, Style::Points, k).at(s.t / YEAR));
         }
         let peak = first.history.iter().map(|s| [s.m_p * 1e3, s.phi_p]).collect();
         fig = fig.with(Series::new("φ_p(m_p)", peak, Style::Line, 6));

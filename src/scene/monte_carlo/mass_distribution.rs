@@ -102,17 +102,21 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
         "Mass distribution m²f(m)/ρ_d",
         Axis::log("mass m", "g"),
         Axis::log("m²f(m)/ρ_d", ""),
-    );
+    )
+    .family("time", "yr", crate::figure::Scale::Log)
+    .y_decades(6.0);
     for k in 0..n_snap {
         let t = runs.iter().filter_map(|r| r.snapshots.get(k)).map(|s| s.t).fold(0.0, f64::max);
         let rows = mass_distribution(runs, k, p.bins_per_decade);
-        let label = format!("{:.3} yr", t / YEAR);
+        let label = format!("{} yr", crate::figure::human(t / YEAR));
         let mean: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1]).collect();
-        dist = dist.with(Series::new(label, mean, Style::Line, k));
+        dist = dist.with(Series::new(label, mean, Style::Line, k).at(t / YEAR));
         if runs.len() > 1 {
             let hi: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 > 0.0).map(|r| [r.0 * 1e3, r.1 + r.2]).collect();
             let lo: Vec<[f64; 2]> = rows.iter().filter(|r| r.1 - r.2 > 0.0).map(|r| [r.0 * 1e3, r.1 - r.2]).collect();
-            dist = dist.with(Series::new("", hi, Style::Dashed, k)).with(Series::new("", lo, Style::Dashed, k));
+            dist = dist
+                .with(Series::new("", hi, Style::Dashed, k).at(t / YEAR))
+                .with(Series::new("", lo, Style::Dashed, k).at(t / YEAR));
         }
     }
     let mut times = Figure::new(

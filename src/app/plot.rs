@@ -210,7 +210,8 @@ pub fn show(
         let was_outside = !legend.is_empty() && ui.data(|d| d.get_temp::<bool>(memory)).unwrap_or(false);
         // No free corner: the legend goes beside the plot when it is narrow
         // enough, below it otherwise.
-        let beside = was_outside && legend_size.x < 0.4 * plot_size.x;
+        // A map already has its colour bar beside it: its legend goes below.
+        let beside = was_outside && bar.is_none() && legend_size.x < 0.4 * plot_size.x;
         let below = was_outside && !beside;
         if beside {
             plot_size.x -= legend_size.x + 8.0;
@@ -388,8 +389,11 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
         }
     }
     // The text is a label, so that it can be read out and found by tests.
-    let text_rect = Rect::from_min_max(Pos2::new(x0 + 38.0, rect.top()), rect.right_bottom());
-    ui.put(text_rect, egui::Label::new(egui::RichText::new(&e.text).size(look.text)).selectable(false).truncate());
+    let text_rect = Rect::from_min_max(Pos2::new(x0 + 38.0, y - 0.62 * look.text), rect.right_bottom());
+    ui.scope_builder(
+        egui::UiBuilder::new().max_rect(text_rect).layout(egui::Layout::top_down(egui::Align::Min)),
+        |ui| ui.add(egui::Label::new(egui::RichText::new(&e.text).size(look.text)).selectable(false).truncate()),
+    );
 }
 
 fn paint_bar(ui: &egui::Ui, b: &Bar, rect: Rect, look: Look) {

@@ -5,7 +5,7 @@
 //! for heat maps and families, and the shared palette and line styles. Log
 //! axes are drawn as log10 of the data with tick labels showing the values.
 
-use crate::figure::layout::{self, Corner, View};
+use crate::figure::layout::{self, ColourBar, Corner, View};
 use crate::figure::ticks::ticks;
 use crate::figure::{Family, Figure, Heatmap, Scale, Series, Style, colormap, family_fraction, human};
 use egui::{Color32, Pos2, Rect, Stroke, Vec2};
@@ -151,27 +151,8 @@ fn pin_color(s: &Series, overlay: &Overlay) -> [u8; 3] {
     }
 }
 
-/// What a colour bar shows: title, range, scale and the fraction of the
-/// colour map its top reaches.
-struct Bar {
-    title: String,
-    lo: f64,
-    hi: f64,
-    scale: Scale,
-    top: f64,
-}
-
-fn colour_bar(fig: &Figure, overlay: &Overlay) -> Option<Bar> {
-    if let Some(h) = fig.heatmap.as_ref().filter(|h| h.categories.is_empty()) {
-        let (lo, hi) = h.range();
-        return (lo <= hi).then(|| Bar { title: h.title(), lo, hi, scale: Scale::Linear, top: 1.0 });
-    }
-    let (f, (lo, hi)) = match (&fig.family, fig.family_range()) {
-        (Some(f), Some(r)) => (f, r),
-        _ => (overlay.family.as_ref()?, pin_range(overlay)?),
-    };
-    let scale = if f.scale == Scale::Log && lo > 0.0 { Scale::Log } else { Scale::Linear };
-    Some(Bar { title: f.title(), lo, hi, scale, top: 0.9 })
+fn colour_bar(fig: &Figure, overlay: &Overlay) -> Option<ColourBar> {
+    ColourBar::of(fig).or_else(|| ColourBar::family(overlay.family.as_ref()?, pin_range(overlay)?))
 }
 
 /// Shows the figure in a panel of the given size (title, plot, legend and
@@ -396,7 +377,7 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
     );
 }
 
-fn paint_bar(ui: &egui::Ui, b: &Bar, rect: Rect, look: Look) {
+fn paint_bar(ui: &egui::Ui, b: &ColourBar, rect: Rect, look: Look) {
     let painter = ui.painter();
     let bar = Rect::from_min_size(rect.left_top() + Vec2::new(8.0, 0.0), Vec2::new(16.0, rect.height()));
     let n = 48;

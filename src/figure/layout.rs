@@ -1,7 +1,7 @@
 //! Decisions the window and the file writers share: the range a figure shows
 //! by default and where its legend goes without covering data.
 
-use super::{Figure, Scale, Series, Style};
+use super::{Family, Figure, Scale, Series, Style};
 
 /// The data range a figure shows, in data units, with its axis scales.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -68,6 +68,39 @@ fn frac(v: f64, [lo, hi]: [f64; 2], scale: Scale) -> Option<f64> {
         Scale::Linear if v.is_finite() && hi != lo => Some((v - lo) / (hi - lo)),
         Scale::Log if v > 0.0 && v.is_finite() && lo > 0.0 && hi > lo => Some((v / lo).ln() / (hi / lo).ln()),
         _ => None,
+    }
+}
+
+/// What a colour bar beside a plot shows: a continuous heat map's values or
+/// the members of a family.
+#[derive(Debug, Clone, PartialEq)]
+pub struct ColourBar {
+    /// "quantity [unit]".
+    pub title: String,
+    /// Value at the bottom.
+    pub lo: f64,
+    /// Value at the top.
+    pub hi: f64,
+    /// How values spread along the bar.
+    pub scale: Scale,
+    /// Fraction of the colour map the top reaches (families stop at 0.9).
+    pub top: f64,
+}
+
+impl ColourBar {
+    /// The bar of a figure: its continuous heat map, else its family.
+    pub fn of(fig: &Figure) -> Option<ColourBar> {
+        if let Some(h) = fig.heatmap.as_ref().filter(|h| h.categories.is_empty()) {
+            let (lo, hi) = h.range();
+            return (lo <= hi).then(|| ColourBar { title: h.title(), lo, hi, scale: Scale::Linear, top: 1.0 });
+        }
+        ColourBar::family(fig.family.as_ref()?, fig.family_range()?)
+    }
+
+    /// The bar of a family whose members span `lo..=hi`.
+    pub fn family(f: &Family, (lo, hi): (f64, f64)) -> Option<ColourBar> {
+        let scale = if f.scale == Scale::Log && lo > 0.0 { Scale::Log } else { Scale::Linear };
+        Some(ColourBar { title: f.title(), lo, hi, scale, top: 0.9 })
     }
 }
 

@@ -9,9 +9,9 @@
 //! plot) and colour bars, none of which the plotting crates available here
 //! let one place; SVG itself is a handful of elements.
 
-use super::layout::{self, View};
+use super::layout::{self, ColourBar, View};
 use super::ticks::{Tick, ticks};
-use super::{Figure, Heatmap, Scale, Series, Style, family_fraction};
+use super::{Figure, Heatmap, Series, Style, family_fraction};
 use std::fmt::Write;
 
 /// Font family named in the document (the bundled font, then any sans-serif).
@@ -54,23 +54,13 @@ enum Sample {
     Swatch([u8; 3]),
 }
 
-/// What the right margin holds: a colour bar for a heat map or a family.
-struct Bar {
-    title: String,
-    lo: f64,
-    hi: f64,
-    scale: Scale,
-    /// Fraction of the colour map the ends map to (families use 0..0.9).
-    top: f64,
-}
-
 /// The figure as an SVG document of `size` pixels.
 pub fn render(fig: &Figure, size: (u32, u32)) -> String {
     let (w, h) = (f64::from(size.0.max(50)), f64::from(size.1.max(50)));
     let look = Look::for_width(w);
     let view = View::of(fig);
     let entries = legend_entries(fig);
-    let bar = colour_bar(fig);
+    let bar = ColourBar::of(fig);
 
     // Margins around the plot area.
     let s = look.s;
@@ -251,17 +241,6 @@ fn legend_entries(fig: &Figure) -> Vec<Entry> {
     out
 }
 
-fn colour_bar(fig: &Figure) -> Option<Bar> {
-    if let Some(h) = fig.heatmap.as_ref().filter(|h| h.categories.is_empty()) {
-        let (lo, hi) = h.range();
-        return (lo <= hi).then(|| Bar { title: h.title(), lo, hi, scale: Scale::Linear, top: 1.0 });
-    }
-    let f = fig.family.as_ref()?;
-    let (lo, hi) = fig.family_range()?;
-    let scale = if f.scale == Scale::Log && lo > 0.0 { Scale::Log } else { Scale::Linear };
-    Some(Bar { title: f.title(), lo, hi, scale, top: 0.9 })
-}
-
 fn rgb(c: [u8; 3]) -> String {
     format!("#{:02x}{:02x}{:02x}", c[0], c[1], c[2])
 }
@@ -397,7 +376,7 @@ fn heatmap(svg: &mut String, fig: &Figure, h: &Heatmap, map: &impl Fn([f64; 2]) 
 }
 
 /// A vertical colour bar at `x` from `y0` (top) to `y1` (bottom).
-fn colour_bar_svg(svg: &mut String, b: &Bar, [x, y0, y1]: [f64; 3], look: &Look) {
+fn colour_bar_svg(svg: &mut String, b: &ColourBar, [x, y0, y1]: [f64; 3], look: &Look) {
     let s = look.s;
     let bw = 18.0 * s;
     let n = 64;

@@ -2,7 +2,8 @@
 //! description, atomic writes.
 
 use grainscope::figure::{
-    Axis, EXPORT_SIZE, Figure, Heatmap, PALETTE, Scale, Series, Style, csv_bytes, png_bytes, svg_string, write_png,
+    Axis, EXPORT_SIZE, Figure, Fill, Heatmap, NEUTRAL, PALETTE, Scale, Series, Shape, Style, csv_bytes, png_bytes,
+    svg_string, write_png,
 };
 
 fn figure() -> Figure {
@@ -82,6 +83,32 @@ fn a_family_gets_a_colour_bar_instead_of_legend_rows() {
     assert!(!svg.contains("t = 100.005"), "family members are not listed one by one");
     // The y-axis stops six decades below the peak, not at the smallest value.
     assert!(!svg.contains(">10⁻⁴⁰</text>") && svg.contains(">10⁻⁵</text>"));
+}
+
+#[test]
+fn an_event_marked_on_several_curves_is_listed_once_by_its_symbol() {
+    let open_circle = Style::Symbol(Shape::Circle, Fill::Open);
+    let fig = Figure::new("track", "Track", Axis::log("m", "g"), Axis::log("φ", ""))
+        .with(Series::new("full", vec![[1.0, 1.0], [10.0, 0.1]], Style::Line, 0))
+        .with(Series::new("collisional", vec![[1.0, 1.0], [10.0, 0.01]], Style::Dashed, 1))
+        .with(Series::new("a = λ_mfp (full)", vec![[3.0, 0.3]], open_circle, 0).keyed("a = λ_mfp"))
+        .with(Series::new("a = λ_mfp (collisional)", vec![[3.0, 0.1]], open_circle, 1).keyed("a = λ_mfp"))
+        .with(
+            Series::new("gas (full)", vec![[5.0, 0.2]], Style::Symbol(Shape::Circle, Fill::Filled), 0)
+                .keyed("first gas compaction"),
+        );
+    let legend = fig.legend();
+    let texts: Vec<&str> = legend.iter().map(|e| e.0.as_str()).collect();
+    assert_eq!(texts, ["full", "collisional", "a = λ_mfp", "first gas compaction"]);
+    // Shared by curves of two colours: drawn neutral; one curve: its own colour.
+    assert_eq!(legend[2].2, NEUTRAL);
+    assert_eq!(legend[3].2, PALETTE[0]);
+    // Both files list the entry once; the CSV keeps every point under its own name.
+    let svg = svg_string(&fig, (800, 550)).expect("svg");
+    assert_eq!(svg.matches(">a = λ_mfp</text>").count(), 1);
+    assert!(svg.contains("fill=\"none\""), "an open symbol is an outline");
+    let csv = String::from_utf8(csv_bytes(&fig).expect("csv")).expect("utf8");
+    assert!(csv.contains("a = λ_mfp (full),") && csv.contains("a = λ_mfp (collisional),"));
 }
 
 #[test]

@@ -249,6 +249,12 @@ impl GrainscopeApp {
         self.outputs[self.session.index()].as_deref()
     }
 
+    /// Whether a result is still being computed (a worker job runs, or the
+    /// open scene's result is older than its parameters).
+    pub fn busy(&self) -> bool {
+        self.worker.busy() || self.stale
+    }
+
     /// The smallest rectangle holding every plot drawn in the last frame
     /// (axes and legends included), in screen points.
     pub fn plot_area(&self) -> Option<egui::Rect> {
@@ -478,6 +484,7 @@ impl GrainscopeApp {
             line: if lecture { 3.0 } else { 2.0 },
             text: if lecture { 17.0 } else { 12.5 },
             dark: ui.visuals().dark_mode,
+            legend: true,
         }
     }
 
@@ -748,8 +755,14 @@ impl GrainscopeApp {
         let text = match (out.scalar("e"), out.scalar("sticks"), out.scalar("v_stick")) {
             (Some(e), Some(s), _) => format!("e = {e:.4} ({})", if s > 0.5 { "sticks" } else { "bounces" }),
             (_, _, Some(v)) => format!("v_stick = {} m/s", figure::tick_label(v)),
-            _ => out.notes.first().cloned().unwrap_or_default(),
+            // A short first note serves as the headline; a paragraph stays
+            // among the notes below the parameters instead of pushing them
+            // down.
+            _ => out.notes.first().filter(|n| n.chars().count() <= 60).cloned().unwrap_or_default(),
         };
+        if text.is_empty() {
+            return;
+        }
         ui.label(egui::RichText::new(text).size(20.0).strong());
     }
 
@@ -1103,18 +1116,25 @@ impl GrainscopeApp {
             Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
+        // Many panels (a grid of experiments) are small multiples: each keeps
+        // a legible size, as many columns as fit, and the grid scrolls; the
+        // first figure leads above them at twice the width, and a legend
+        // repeated from an earlier panel is drawn only once.
+        let multiples = n_panels > 6;
+        let avail = ui.available_size();
+        let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
         let cols = match n_panels {
+            _ if multiples => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
             1 => 1,
             2..=4 => 2,
-            5..=9 => 3,
-            _ => 4,
+            _ => 3,
         };
         let rows = n_panels.div_ceil(cols);
-        let avail = ui.available_size();
         let size = egui::vec2(
-            (avail.x / cols as f32 - 12.0).max(200.0),
-            (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(160.0),
+            (avail.x / cols as f32 - 12.0).max(min_w),
+            (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(min_h),
         );
+        let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
         let cursor = self.params().cursor(&out);
         let cursor_fraction = cursor.as_ref().map_or(0.0, |c| c.fraction);
         let mut export: Option<(Figure, &'static str)> = None;
@@ -1127,12 +1147,27 @@ impl GrainscopeApp {
             }
         }
         let mut save_as: Option<Figure> = None;
-        egui::Grid::new("figures").num_columns(cols).show(ui, |ui| {
-            for (k, fig) in out.figures.iter().enumerate() {
+        // Edited beside the contact sketch while the panels borrow `self`.
+        let mut export_dir = std::mem::take(&mut self.session.export_dir);
+        let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
+        let scroll = egui::ScrollArea::new([multiples, multiples]).max_height(if multiples {
+            avail.y - if lecture { 0.0 } else { 32.0 }
+        } else {
+            f32::INFINITY
+        });
+        scroll.show(ui, |ui| {
+            // One panel: the plot with its legend, and its export buttons.
+            let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {
                 let point =
                     cursor.as_ref().and_then(|c| c.points.iter().find(|(id, _)| *id == fig.id).map(|(_, p)| *p));
                 let overlay = self.overlay_for(fig, point);
                 let locked = self.locked.as_ref().and_then(|l| l.get(&fig.id).copied());
+                let mut look = look;
+                if multiples && overlay.pinned.is_empty() {
+                    let signature = plot::legend_signature(fig);
+                    look.legend = !legends_shown.contains(&signature);
+                    legends_shown.push(signature);
+                }
                 ui.vertical(|ui| {
                     let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);
                     self.plot_rects.push(shown.rect);
@@ -1154,25 +1189,47 @@ impl GrainscopeApp {
                         }
                     });
                 });
-                if (k + 1) % cols == 0 {
-                    ui.end_row();
-                }
+            };
+            let lead = usize::from(multiples);
+            if let (true, Some(fig)) = (multiples, out.figures.first()) {
+                panel(ui, fig, lead_size);
             }
-            if let Some(t) = &trajectory {
-                ui.vertical(|ui| {
-                    ui.label(egui::RichText::new("Contact sketch").strong());
-                    sketch::show(ui, t, cursor_fraction, size);
-                    if lecture {
-                        return;
+            // Row by row; a last row with fewer panels shares the full width
+            // (no empty quadrant), except among small multiples.
+            let items: Vec<Option<&Figure>> =
+                out.figures.iter().skip(lead).map(Some).chain(trajectory.as_ref().map(|_| None)).collect();
+            for row in items.chunks(cols) {
+                let size = if row.len() < cols && !multiples {
+                    let spacing = ui.spacing().item_spacing.x;
+                    egui::vec2((avail.x - spacing * row.len() as f32) / row.len() as f32 - 4.0, size.y)
+                } else {
+                    size
+                };
+                ui.horizontal_top(|ui| {
+                    for item in row {
+                        match (item, &trajectory) {
+                            (Some(fig), _) => panel(ui, fig, size),
+                            (None, Some(t)) => {
+                                ui.vertical(|ui| {
+                                    ui.label(egui::RichText::new("Contact sketch").strong());
+                                    sketch::show(ui, t, cursor_fraction, size);
+                                    if lecture {
+                                        return;
+                                    }
+                                    ui.small("move the time cursor among the parameters");
+                                    ui.horizontal(|ui| {
+                                        let label = ui.label("export folder");
+                                        ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
+                                    });
+                                });
+                            }
+                            (None, None) => {}
+                        }
                     }
-                    ui.small("move the time cursor among the parameters");
-                    ui.horizontal(|ui| {
-                        let label = ui.label("export folder");
-                        ui.text_edit_singleline(&mut self.session.export_dir).labelled_by(label.id);
-                    });
                 });
             }
         });
+        self.session.export_dir = export_dir;
         if trajectory.is_none() && !lecture {
             ui.horizontal(|ui| {
                 let label = ui.label("export folder");

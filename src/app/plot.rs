@@ -7,7 +7,7 @@
 
 use crate::figure::layout::{self, ColourBar, Corner, View};
 use crate::figure::ticks::ticks;
-use crate::figure::{Family, Figure, Heatmap, Scale, Series, Style, colormap, family_fraction, human};
+use crate::figure::{Family, Figure, Fill, Heatmap, Scale, Series, Shape, Style, colormap, family_fraction, human};
 use egui::{Color32, Pos2, Rect, Stroke, Vec2};
 use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, PlotPoints, Points};
 use std::cell::RefCell;
@@ -57,6 +57,9 @@ pub struct Look {
     pub text: f32,
     /// Whether the window uses a dark theme (for the legend's background).
     pub dark: bool,
+    /// Whether the legend is drawn (small multiples show a legend once, on
+    /// the first panel that has it).
+    pub legend: bool,
 }
 
 /// Labelled and unlabelled grid marks for one axis, from the shared tick
@@ -110,12 +113,17 @@ struct Entry {
     swatch: bool,
 }
 
+/// What a figure's legend lists: (name, style, colour) of each entry, to
+/// tell panels with the same legend apart from the rest.
+pub fn legend_signature(fig: &Figure) -> Vec<(String, Style, [u8; 3])> {
+    fig.legend()
+}
+
 fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
     let mut out: Vec<Entry> = fig
-        .series
-        .iter()
-        .filter(|s| fig.in_legend(s))
-        .map(|s| Entry { text: s.name.clone(), style: s.style, color: rgb(fig.color_of(s), stale), swatch: false })
+        .legend()
+        .into_iter()
+        .map(|(text, style, color)| Entry { text, style, color: rgb(color, stale), swatch: false })
         .collect();
     for s in overlay.pinned.iter().filter(|s| s.family.is_none() || overlay.family.is_none()) {
         out.push(Entry {
@@ -171,7 +179,7 @@ pub fn show(
     let view = locked.unwrap_or_else(|| View::of(fig));
     let title = if stale { format!("{} (updating…)", fig.title) } else { fig.title.clone() };
     let font = egui::FontId::proportional(look.text);
-    let legend = entries(fig, overlay, stale);
+    let legend = if look.legend { entries(fig, overlay, stale) } else { Vec::new() };
     let bar = colour_bar(fig, overlay);
     let shown = ui.vertical(|ui| {
         ui.set_max_width(size.x);
@@ -213,6 +221,9 @@ pub fn show(
             _ => (0.0, 1.0),
         };
         let (bx, by) = (bounds(view.x, xs), bounds(view.y, ys));
+        // Room per labelled tick, points: about four characters of the tick
+        // text across, three lines up.
+        let (x_gap, y_gap) = (4.0 * look.text as f64, 2.9 * look.text as f64);
         let response = ui
             .horizontal(|ui| {
                 let plot = Plot::new(("figure", fig.id.as_str()))
@@ -222,8 +233,8 @@ pub fn show(
                     .y_axis_label(fig.y.title())
                     .default_x_bounds(bx.0, bx.1)
                     .default_y_bounds(by.0, by.1)
-                    .x_grid_spacer(move |input| grid_marks(input, xs, 85.0, &xl1))
-                    .y_grid_spacer(move |input| grid_marks(input, ys, 36.0, &yl1))
+                    .x_grid_spacer(move |input| grid_marks(input, xs, x_gap, &xl1))
+                    .y_grid_spacer(move |input| grid_marks(input, ys, y_gap, &yl1))
                     .x_axis_formatter(move |mark, _| label_of(mark.value, &xl2))
                     .y_axis_formatter(move |mark, _| label_of(mark.value, &yl2))
                     .label_formatter(move |hover: &egui_plot::HoverPosition<'_>| {
@@ -324,6 +335,52 @@ fn paint_legend(ui: &mut egui::Ui, legend: &[Entry], rect: Rect, look: Look) {
     }
 }
 
+/// A [`Style::Symbol`] of radius `r` at `c`, as egui_plot draws it.
+fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fill, color: Color32, line: f32) {
+    let stroke = Stroke::new((0.7 * line).max(1.2), color);
+    let poly = |pts: Vec<Pos2>| {
+        if fill == Fill::Filled {
+            egui::Shape::convex_polygon(pts, color, Stroke::NONE)
+        } else {
+            egui::Shape::closed_line(pts, stroke)
+        }
+    };
+    match shape {
+        Shape::Circle if fill == Fill::Filled => {
+            painter.circle_filled(c, r, color);
+        }
+        Shape::Circle => {
+            painter.circle_stroke(c, r, stroke);
+        }
+        Shape::Square => {
+            painter.add(poly(vec![
+                c + Vec2::new(-r, -r),
+                c + Vec2::new(r, -r),
+                c + Vec2::new(r, r),
+                c + Vec2::new(-r, r),
+            ]));
+        }
+        Shape::Diamond => {
+            painter.add(poly(vec![
+                c + Vec2::new(0.0, -r),
+                c + Vec2::new(r, 0.0),
+                c + Vec2::new(0.0, r),
+                c + Vec2::new(-r, 0.0),
+            ]));
+        }
+        Shape::TriangleDown => {
+            painter.add(poly(vec![c + Vec2::new(-r, -0.6 * r), c + Vec2::new(r, -0.6 * r), c + Vec2::new(0.0, r)]));
+        }
+        Shape::Asterisk => {
+            for k in 0..3 {
+                let a = std::f32::consts::FRAC_PI_2 + k as f32 * std::f32::consts::PI / 3.0;
+                let d = Vec2::new(a.cos(), -a.sin()) * r;
+                painter.line_segment([c - d, c + d], stroke);
+            }
+        }
+    }
+}
+
 /// One legend row: its line, marker or swatch, then its text.
 fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
     let painter = ui.painter().clone();
@@ -356,6 +413,9 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
                     e.color,
                     Stroke::new(1.0, Color32::BLACK),
                 ));
+            }
+            Style::Symbol(shape, fill) => {
+                paint_symbol(&painter, Pos2::new(x0 + 15.0, y), 6.0, shape, fill, e.color, look.line);
             }
             Style::LowerLimit | Style::UpperLimit => {
                 let c = Pos2::new(x0 + 15.0, y);
@@ -428,7 +488,7 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
     for s in &overlay.pinned {
         let pts = points(fig, s);
         let c = rgb(pin_color(s, overlay), false);
-        let line = Line::new(s.name.clone(), PlotPoints::from(pts)).color(c).width(look.line * 0.8);
+        let line = line(s.name.clone(), pts).color(c).width(look.line * 0.8);
         plot_ui.line(if s.family.is_some() && overlay.family.is_some() {
             line
         } else {
@@ -440,13 +500,10 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
         let c = rgb(fig.color_of(s), stale);
         let name = s.name.clone();
         match s.style {
-            Style::Line => plot_ui.line(Line::new(name, PlotPoints::from(pts)).color(c).width(look.line)),
-            Style::Dashed => plot_ui.line(
-                Line::new(name, PlotPoints::from(pts))
-                    .color(c)
-                    .width(look.line * 0.85)
-                    .style(LineStyle::Dashed { length: 9.0 }),
-            ),
+            Style::Line => plot_ui.line(line(name, pts).color(c).width(look.line)),
+            Style::Dashed => {
+                plot_ui.line(line(name, pts).color(c).width(look.line * 0.85).style(LineStyle::Dashed { length: 9.0 }))
+            }
             Style::Points => {
                 plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
             }
@@ -471,6 +528,22 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
                     .shape(MarkerShape::Down)
                     .filled(true),
             ),
+            Style::Symbol(shape, fill) => {
+                let marker = match shape {
+                    Shape::Circle => MarkerShape::Circle,
+                    Shape::Square => MarkerShape::Square,
+                    Shape::Diamond => MarkerShape::Diamond,
+                    Shape::TriangleDown => MarkerShape::Down,
+                    Shape::Asterisk => MarkerShape::Asterisk,
+                };
+                plot_ui.points(
+                    Points::new(name, PlotPoints::from(pts))
+                        .color(c)
+                        .radius(look.line * 2.6)
+                        .shape(marker)
+                        .filled(fill == Fill::Filled),
+                )
+            }
         }
     }
     if let Some(p) = overlay.cursor
@@ -484,6 +557,13 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
                 .filled(true),
         );
     }
+}
+
+/// A line through `pts` drawn as a stroke of even width. (egui_plot would
+/// otherwise merge points less than a pixel apart into vertical bands, which
+/// makes steep stretches of dense curves look thinner than flat ones.)
+fn line(name: String, pts: Vec<[f64; 2]>) -> Line<'static> {
+    Line::new(name, PlotPoints::from(pts)).allow_band(false)
 }
 
 /// Draws a heatmap as one filled polygon per cell (cells may be uneven on log axes).
@@ -507,7 +587,10 @@ fn heatmap(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, h: &Heatmap) {
             };
             let [r, g, b] = h.color_of(v, range);
             let c = Color32::from_rgb(r, g, b);
-            plot_ui.polygon(egui_plot::Polygon::new("", PlotPoints::from(pts)).fill_color(c).stroke(Stroke::NONE));
+            // An outline in the cell's own colour closes the hairline seams that
+            // anti-aliasing leaves between neighbouring cells.
+            plot_ui
+                .polygon(egui_plot::Polygon::new("", PlotPoints::from(pts)).fill_color(c).stroke(Stroke::new(0.8, c)));
         }
     }
 }

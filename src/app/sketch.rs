@@ -15,8 +15,22 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
     let (delta, a) = (s[1], s[2]);
     let a_max = t.samples.iter().map(|s| s[2]).fold(0.0, f64::max).max(1e-30);
 
+    // The readout along the bottom, wrapped to the sketch's width in the
+    // body text size (large in lecture mode).
+    let readout = format!(
+        "t = {:.2} ns   δ = {:.2} nm\na = {:.1} nm   F_E = {:.3} µN\n(contact in red; vertical scale exaggerated)",
+        s[0] * 1e9,
+        delta * 1e9,
+        a * 1e9,
+        s[3] * 1e6
+    );
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let galley = painter.layout(readout, font, text_color, (rect.width() - 16.0).max(40.0));
+    let text_top = rect.max.y - galley.size().y - 6.0;
+    painter.galley(pos2(rect.min.x + 8.0, text_top), galley, text_color);
+
     // Left: the two bodies at true scale.
-    let left = egui::Rect::from_min_size(rect.min, vec2(rect.width() * 0.35, rect.height()));
+    let left = egui::Rect::from_min_size(rect.min, vec2(rect.width() * 0.35, (text_top - rect.min.y - 4.0).max(20.0)));
     let r1 = t.radius_1;
     let r2 = if t.radius_2.is_finite() { t.radius_2 } else { 3.0 * r1 };
     let scale = (left.height() as f64 * 0.45) / (r1 + r2);
@@ -45,7 +59,7 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
     // Right: the contact neck, horizontal scale 3 a_max, vertical exaggerated.
     let right = egui::Rect::from_min_max(
         pos2(left.max.x + 10.0, rect.min.y + 10.0),
-        pos2(rect.max.x - 10.0, rect.max.y - 40.0),
+        pos2(rect.max.x - 10.0, (text_top - 8.0).max(rect.min.y + 30.0)),
     );
     let half_w = 1.5 * a_max;
     let mid = right.center();
@@ -69,18 +83,5 @@ pub fn show(ui: &mut egui::Ui, t: &Trajectory, fraction: f64, size: egui::Vec2) 
     painter.line_segment(
         [pos2(mid.x - ax, mid.y), pos2(mid.x + ax, mid.y)],
         Stroke::new(4.0, Color32::from_rgb(214, 39, 40)),
-    );
-    painter.text(
-        pos2(right.min.x, right.max.y + 4.0),
-        egui::Align2::LEFT_TOP,
-        format!(
-            "t = {:.2} ns   δ = {:.2} nm   a = {:.1} nm   F_E = {:.3} µN\n(contact in red; vertical scale exaggerated)",
-            s[0] * 1e9,
-            delta * 1e9,
-            a * 1e9,
-            s[3] * 1e6
-        ),
-        egui::FontId::proportional(13.0),
-        text_color,
     );
 }

@@ -69,6 +69,40 @@ pub enum Style {
     LowerLimit,
     /// Upper limits: markers pointing down.
     UpperLimit,
+    /// A symbol of the given shape, open or filled (events marked along
+    /// curves, as the thesis's figures mark them).
+    Symbol(Shape, Fill),
+}
+
+/// The shape of a [`Style::Symbol`].
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Shape {
+    /// ○ / ●
+    Circle,
+    /// □ / ■
+    Square,
+    /// ◇ / ◆
+    Diamond,
+    /// ▽ / ▼
+    TriangleDown,
+    /// ✳ (an asterisk of three strokes; the same open or filled)
+    Asterisk,
+}
+
+/// Whether a [`Style::Symbol`] is drawn open (outline) or filled.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
+pub enum Fill {
+    /// Outline only.
+    Open,
+    /// Filled, with a dark outline.
+    Filled,
+}
+
+impl Style {
+    /// Whether the style draws a line (as opposed to markers at the points).
+    pub fn is_line(self) -> bool {
+        matches!(self, Style::Line | Style::Dashed)
+    }
 }
 
 /// A named set of (x, y) points.
@@ -87,12 +121,24 @@ pub struct Series {
     /// map, with a colour bar instead of a legend entry.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub family: Option<f64>,
+    /// The legend entry this series shares with other series of the same
+    /// style (one symbol for an event marked on several curves): listed
+    /// once under this text, in a neutral grey when their colours differ.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub legend: Option<String>,
 }
 
 impl Series {
     /// A series from points.
     pub fn new(name: impl Into<String>, points: Vec<[f64; 2]>, style: Style, color: usize) -> Self {
-        Series { name: name.into(), points, style, color, family: None }
+        Series { name: name.into(), points, style, color, family: None, legend: None }
+    }
+
+    /// Shares the legend entry `text` with the other series of the same style
+    /// that name it (builder style).
+    pub fn keyed(mut self, text: impl Into<String>) -> Self {
+        self.legend = Some(text.into());
+        self
     }
 
     /// Marks the series as the member of the figure's family at `value`
@@ -139,6 +185,9 @@ pub const PALETTE: [[u8; 3]; 8] = [
     [128, 128, 128],
     [181, 158, 0],
 ];
+
+/// The colour of a legend entry shared by series of different colours.
+pub const NEUTRAL: [u8; 3] = [110, 110, 110];
 
 /// A colour map over a rectangular grid (e.g. a χ² landscape).
 #[derive(Debug, Clone, PartialEq)]
@@ -319,6 +368,26 @@ impl Figure {
     /// (those are explained by the colour bar).
     pub fn in_legend(&self, s: &Series) -> bool {
         !s.name.is_empty() && (self.family.is_none() || s.family.is_none())
+    }
+
+    /// The legend's entries in drawing order: (text, style, colour). Series
+    /// that share a legend key ([`Series::keyed`]) and style are listed once,
+    /// in [`NEUTRAL`] when their colours differ. The window and the file
+    /// writers list the same entries.
+    pub fn legend(&self) -> Vec<(String, Style, [u8; 3])> {
+        let mut out: Vec<(String, Style, [u8; 3])> = Vec::new();
+        for s in self.series.iter().filter(|s| self.in_legend(s)) {
+            let color = self.color_of(s);
+            match &s.legend {
+                Some(key) => match out.iter_mut().find(|e| &e.0 == key && e.1 == s.style) {
+                    Some(e) if e.2 != color => e.2 = NEUTRAL,
+                    Some(_) => {}
+                    None => out.push((key.clone(), s.style, color)),
+                },
+                None => out.push((s.name.clone(), s.style, color)),
+            }
+        }
+        out
     }
 
     /// The colour of a series: its family value on the sequential map, or

@@ -11,7 +11,7 @@
 
 use super::layout::{self, ColourBar, View};
 use super::ticks::{Tick, ticks};
-use super::{Figure, Heatmap, Series, Style, family_fraction};
+use super::{Figure, Fill, Heatmap, Series, Shape, Style, family_fraction};
 use std::fmt::Write;
 
 /// Font family named in the document (the bundled font, then any sans-serif).
@@ -228,10 +228,9 @@ impl Rect {
 
 fn legend_entries(fig: &Figure) -> Vec<Entry> {
     let mut out: Vec<Entry> = fig
-        .series
-        .iter()
-        .filter(|s| fig.in_legend(s))
-        .map(|s| Entry { text: s.name.clone(), sample: Sample::Series(s.style, fig.color_of(s)) })
+        .legend()
+        .into_iter()
+        .map(|(text, style, color)| Entry { text, sample: Sample::Series(style, color) })
         .collect();
     if let Some(h) = &fig.heatmap {
         for (i, c) in h.categories.iter().enumerate() {
@@ -291,6 +290,7 @@ fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look)
                 0.8 * s
             );
         }
+        Style::Symbol(shape, fill) => symbol(svg, shape, fill, p, 6.0 * s, color, look),
         Style::LowerLimit | Style::UpperLimit => {
             let r = 5.5 * s;
             let d = if style == Style::LowerLimit { -1.0 } else { 1.0 };
@@ -306,6 +306,36 @@ fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look)
             );
         }
     }
+}
+
+/// A [`Style::Symbol`] of radius `r` at `p` (pixels), drawn as the window
+/// draws it.
+fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color: &str, look: &Look) {
+    let w = (1.6 * look.s).max(1.0);
+    let paint = match fill {
+        Fill::Filled => format!(r#"fill="{color}""#),
+        Fill::Open => format!(r#"fill="none" stroke="{color}" stroke-width="{w:.2}""#),
+    };
+    let [x, y] = p;
+    let polygon = |pts: &[[f64; 2]]| {
+        let d: Vec<String> = pts.iter().map(|q| format!("{:.2} {:.2}", x + q[0] * r, y + q[1] * r)).collect();
+        format!(r#"<path d="M{}Z" {paint}/>"#, d.join("L"))
+    };
+    let _ = match shape {
+        Shape::Circle => write!(svg, r#"<circle cx="{x:.2}" cy="{y:.2}" r="{r:.2}" {paint}/>"#),
+        Shape::Square => write!(svg, "{}", polygon(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])),
+        Shape::Diamond => write!(svg, "{}", polygon(&[[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])),
+        Shape::TriangleDown => write!(svg, "{}", polygon(&[[-1.0, -0.6], [1.0, -0.6], [0.0, 1.0]])),
+        Shape::Asterisk => {
+            let mut d = String::new();
+            for k in 0..3 {
+                let a = std::f64::consts::FRAC_PI_2 + k as f64 * std::f64::consts::PI / 3.0;
+                let (dx, dy) = (a.cos() * r, -a.sin() * r);
+                let _ = write!(d, "M{:.2} {:.2}L{:.2} {:.2}", x - dx, y - dy, x + dx, y + dy);
+            }
+            write!(svg, r#"<path d="{d}" fill="none" stroke="{color}" stroke-width="{w:.2}"/>"#)
+        }
+    };
 }
 
 fn dash(style: Style, look: &Look) -> String {

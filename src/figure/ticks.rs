@@ -60,11 +60,22 @@ fn linear(lo: f64, hi: f64, max_labels: usize) -> Vec<Tick> {
     }
     let raw = span / max_labels as f64;
     let p = 10f64.powf(raw.log10().floor());
-    let (mantissa, step) = [1.0, 2.0, 5.0, 10.0]
+    let (mut mantissa, mut step) = [1.0, 2.0, 5.0, 10.0]
         .iter()
         .map(|&m| (m, m * p))
         .find(|&(_, s)| s >= raw * (1.0 - EDGE))
         .unwrap_or((10.0, 10.0 * p));
+    // At least two labels, so that the axis can be read: a step that leaves
+    // one multiple inside the range gives way to the next smaller 1-2-5 step.
+    let labelled = |step: f64| ((hi / step + EDGE).floor() - (lo / step - EDGE).ceil() + 1.0).max(0.0);
+    while labelled(step) < 2.0 {
+        (mantissa, step) = match mantissa {
+            10.0 => (5.0, step / 2.0),
+            5.0 => (2.0, step * 0.4),
+            2.0 => (1.0, step / 2.0),
+            _ => (5.0, step / 2.0),
+        };
+    }
     let minor = step / if mantissa == 2.0 { 4.0 } else { 5.0 };
     let decimals = decimals_for(step);
     let scientific = lo.abs().max(hi.abs()) >= 1e5 || (lo.abs().max(hi.abs()) < 1e-3);
@@ -331,6 +342,17 @@ mod tests {
                     let tol = 1e-6 * lo.abs().max(hi.abs());
                     assert!(t.iter().all(|t| t.value >= lo - tol && t.value <= hi + tol));
                 }
+            }
+        }
+    }
+
+    #[test]
+    fn a_linear_axis_always_carries_at_least_two_labels() {
+        for &(lo, hi) in &[(0.55, 1.02), (0.9, 1.0), (-0.26, 1.05), (7.1, 9.9), (1e-9, 1.7e-9), (999.0, 1001.0)] {
+            for n in 2..6 {
+                let t = ticks(lo, hi, Scale::Linear, n);
+                let majors = t.iter().filter(|t| t.is_major()).count();
+                assert!((2..=n + 1).contains(&majors), "{lo}..{hi} n={n}: {majors} labels");
             }
         }
     }

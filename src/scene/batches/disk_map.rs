@@ -107,7 +107,11 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     let t0 = run.frames.first().map_or(1.0, |f| f.t / YEAR);
     let t1 = p.run.duration_yr;
     for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
-        fig = fig.with(Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7));
+        // One legend entry for the four reference orbits.
+        fig = fig.with(
+            Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7)
+                .keyed("Jupiter, Saturn, Uranus, Neptune"),
+        );
     }
     let scalars = vec![
         Scalar {

@@ -5,7 +5,7 @@
 use super::common::CollisionParams;
 use crate::scene::controls::{Control, LogRange, ParamError};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Series, Style, human};
 use crate::physics::collision::{restitution, sticking_velocity};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
@@ -61,7 +61,7 @@ pub struct Params {
     pub r_min: f64,
     /// Largest reduced radius of e(R) and v_s(R), m (default 100 µm).
     pub r_max: f64,
-    /// Number of radii (default 16).
+    /// Number of radii (default 48).
     pub n_radii: usize,
     /// Smallest T_vis of the v_s(R) family, s (default 1e-13).
     pub t_vis_min: f64,
@@ -80,7 +80,7 @@ impl Default for Params {
             n_velocities: 200,
             r_min: 1e-7,
             r_max: 1e-4,
-            n_radii: 16,
+            n_radii: 48,
             t_vis_min: 1e-13,
             t_vis_max: 1e-10,
             n_t_vis: 4,
@@ -357,7 +357,7 @@ fn sticking_panel(
     );
     for (i, tv) in t_vis.iter().enumerate() {
         let pts = radii.iter().enumerate().map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]]).collect();
-        fig = fig.with(Series::new(format!("T_vis = {tv:.0e} s"), pts, Style::Line, i % 6));
+        fig = fig.with(Series::new(format!("T_vis = {} s", human(*tv)), pts, Style::Line, i % 6));
     }
     let jkr = radii.iter().map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()]).collect();
     fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));
@@ -366,7 +366,8 @@ fn sticking_panel(
         let stuck = vs[i * radii.len()..(i + 1) * radii.len()].iter().filter(|v| v.is_infinite()).count();
         if stuck > 0 {
             notes.push(format!(
-                "T_vis = {tv:.0e} s: at {stuck} of {} radii the spheres stick even at 10⁴ m/s (not drawn).",
+                "T_vis = {} s: at {stuck} of {} radii the spheres stick even at 10⁴ m/s (not drawn).",
+                human(*tv),
                 radii.len()
             ));
         }

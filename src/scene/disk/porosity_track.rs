@@ -4,7 +4,7 @@
 use crate::scene::controls::Control;
 use super::common::TrackParams;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::growth::{Porosity, Track};
 
 /// The scene (see [`Scene`]).
@@ -50,25 +50,26 @@ pub fn compute(p: &TrackParams) -> Result<SceneOutput, SceneError> {
     .with(Series::new("collisional compaction only", line(&coll), Style::Dashed, 1))
     .with(Series::new("collisional + gas + self-gravity", line(&full), Style::Line, 0));
     let mut scalars = Vec::new();
-    for (tag, t, off) in [("full", &full, 0), ("collisional", &coll, 1)] {
+    // The thesis's symbols: open for the crossings (○ a = λ_mfp, ◇ t_s = t_η,
+    // ▽ Ωt_s = α, □ Ωt_s = 1), filled at the first compaction of each kind;
+    // each symbol takes the colour of its track and is listed once.
+    for (tag, t, color) in [("full", &full, 0), ("collisional", &coll, 1)] {
         let m = &t.markers;
         let marks = [
-            ("a = λ_mfp", m.radius_mfp),
-            ("t_s = t_η", m.kolmogorov),
-            ("Ωt_s = α", m.settling),
-            ("Ωt_s = 1", m.stokes_one),
-            ("first collisional compaction", m.collisional),
-            ("first gas compaction", m.gas),
-            ("first self-gravity compaction", m.gravity),
+            ("a = λ_mfp", m.radius_mfp, Shape::Circle, Fill::Open),
+            ("t_s = t_η", m.kolmogorov, Shape::Diamond, Fill::Open),
+            ("Ωt_s = α", m.settling, Shape::TriangleDown, Fill::Open),
+            ("Ωt_s = 1", m.stokes_one, Shape::Square, Fill::Open),
+            ("first collisional compaction", m.collisional, Shape::Asterisk, Fill::Filled),
+            ("first gas compaction", m.gas, Shape::Circle, Fill::Filled),
+            ("first self-gravity compaction", m.gravity, Shape::Diamond, Fill::Filled),
         ];
-        for (k, (name, at)) in marks.iter().enumerate() {
+        for (name, at, shape, fill) in marks {
             if let Some([mass, phi]) = at {
-                fig = fig.with(Series::new(
-                    format!("{name} ({tag})"),
-                    vec![[mass * 1e3, *phi]],
-                    if k < 4 { Style::Points } else { Style::Marker },
-                    2 + k + off,
-                ));
+                fig = fig.with(
+                    Series::new(format!("{name} ({tag})"), vec![[mass * 1e3, phi]], Style::Symbol(shape, fill), color)
+                        .keyed(name),
+                );
             }
         }
     }

@@ -1,0 +1,114 @@
+//! Snapshot images of every scene as the window draws it, rendered without a
+//! display by egui_kittest on wgpu (Mesa's software renderer on Linux), kept
+//! in `tests/snapshots/` so that a change to any figure shows in review.
+//!
+//! Every scene is drawn at 1024 × 768 (a projector) in lecture mode, and the
+//! first scene also in the ordinary layout, dark and light, at 1024 × 768 and
+//! 1920 × 1080. The Monte Carlo column scenes run one short run (2 × 10⁴
+//! events) so that the suite stays quick; everything else is drawn at its
+//! defaults. A figure that changes on purpose is refreshed with
+//! `UPDATE_SNAPSHOTS=1 cargo test --release --test snapshots`; a failing
+//! comparison leaves `NAME.new.png` and `NAME.diff.png` beside the kept image.
+//! The kept images were drawn by Mesa's software Vulkan driver (lavapipe),
+//! which `.ci/run` installs; another renderer may differ by a few pixels.
+
+use std::time::{Duration, Instant};
+
+use egui_kittest::{Harness, SnapshotOptions};
+use grainscope::app::GrainscopeApp;
+use grainscope::scene::{SCENES, SceneParams};
+
+/// How long one scene may take to compute before the test gives up.
+const PATIENCE: Duration = Duration::from_secs(240);
+
+/// A harness that renders with wgpu, or none where this machine has no wgpu
+/// adapter (no GPU and no Mesa software driver): then the comparison is
+/// skipped with a message, except in CI (`CI` set), where it must run.
+fn harness(w: f32, h: f32) -> Option<Harness<'static, GrainscopeApp>> {
+    let build = || {
+        let app = GrainscopeApp::new(egui::Context::default(), None);
+        Harness::builder()
+            .with_size(egui::vec2(w, h))
+            .wgpu()
+            .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app)
+    };
+    match std::panic::catch_unwind(build) {
+        Ok(h) => Some(h),
+        Err(_) if std::env::var_os("CI").is_none() => {
+            eprintln!(
+                "snapshots skipped: no wgpu adapter here (on Debian/Ubuntu, `apt install mesa-vulkan-drivers` \
+                 gives Mesa's software renderer, which drew the kept images)"
+            );
+            None
+        }
+        Err(e) => std::panic::resume_unwind(e),
+    }
+}
+
+/// The parameters a scene is drawn with: its defaults, with the Monte Carlo
+/// column cut to one short run.
+fn snapshot_params(id: &str) -> SceneParams {
+    let mut p = SceneParams::default_for(id).expect("a registered scene");
+    if p.set("max_events_millions", "0.02").is_ok() {
+        p.set("runs", "1").expect("a Monte Carlo scene has runs");
+    }
+    p
+}
+
+/// Steps frames until the open scene's result is drawn.
+fn settle(h: &mut Harness<'static, GrainscopeApp>, what: &str) {
+    let start = Instant::now();
+    h.run_steps(2);
+    while h.state().busy() || h.state().output().is_none() {
+        assert!(start.elapsed() < PATIENCE, "{what}: no result after {PATIENCE:?}");
+        std::thread::sleep(Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    // Lay out once more with the final result (legend sizes, colour bars).
+    h.run_steps(3);
+}
+
+/// Opens scene `id` in the given look and compares its picture with the kept
+/// one; an error names what differs.
+fn check(
+    h: &mut Harness<'static, GrainscopeApp>,
+    id: &str,
+    name: &str,
+    lecture: bool,
+    light: bool,
+) -> Result<(), String> {
+    {
+        let app = h.state_mut();
+        app.session.scene = id.to_string();
+        app.session.params.insert(id.to_string(), snapshot_params(id));
+        app.session.lecture = lecture;
+        app.session.light = light;
+    }
+    settle(h, name);
+    h.try_snapshot_options(name, &SnapshotOptions::default()).map_err(|e| format!("{name}: {e}"))
+}
+
+#[test]
+fn every_scene_in_lecture_mode_at_projector_size() {
+    let Some(mut h) = harness(1024.0, 768.0) else { return };
+    // Every scene is compared before failing, so that one run shows every changed figure.
+    let failures: Vec<String> = SCENES
+        .iter()
+        .filter_map(|s| check(&mut h, s.id, &format!("lecture-1024x768/{}", s.id), true, true).err())
+        .collect();
+    assert!(failures.is_empty(), "{} of {} snapshots differ:\n{}", failures.len(), SCENES.len(), failures.join("\n"));
+}
+
+#[test]
+fn the_ordinary_layout_dark_and_light_at_projector_and_desktop_sizes() {
+    let first = SCENES[0].id;
+    let mut failures = Vec::new();
+    for (w, ht) in [(1024.0, 768.0), (1920.0, 1080.0)] {
+        let Some(mut h) = harness(w, ht) else { return };
+        for light in [false, true] {
+            let name = format!("window-{w}x{ht}/{first}-{}", if light { "light" } else { "dark" });
+            failures.extend(check(&mut h, first, &name, false, light).err());
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

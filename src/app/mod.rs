@@ -1118,8 +1118,7 @@ impl GrainscopeApp {
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
         // Many panels (a grid of experiments) are small multiples: each keeps
         // a legible size, as many columns as fit, and the grid scrolls; the
-        // first figure leads above them at twice the width, and a legend
-        // repeated from an earlier panel is drawn only once.
+        // first figure leads above them at twice the width.
         let multiples = n_panels > 6;
         let avail = ui.available_size();
         let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
@@ -1163,7 +1162,9 @@ impl GrainscopeApp {
                 let overlay = self.overlay_for(fig, point);
                 let locked = self.locked.as_ref().and_then(|l| l.get(&fig.id).copied());
                 let mut look = look;
-                if multiples && overlay.pinned.is_empty() {
+                // A legend that repeats an earlier panel's (same entries,
+                // styles and colours) is drawn once.
+                if overlay.pinned.is_empty() {
                     let signature = plot::legend_signature(fig);
                     look.legend = !legends_shown.contains(&signature);
                     legends_shown.push(signature);

@@ -64,10 +64,13 @@ pub struct Look {
 
 /// Labelled and unlabelled grid marks for one axis, from the shared tick
 /// rule; the labels are remembered for the axis formatter.
+/// On an x-axis (`char_px` > 0, the width of one character of tick text),
+/// fewer labels are asked for until their text fits side by side.
 fn grid_marks(
     input: GridInput,
     scale: Scale,
     px_per_label: f64,
+    char_px: f64,
     labels: &RefCell<Vec<(f64, String)>>,
 ) -> Vec<GridMark> {
     let (lo, hi) = input.bounds;
@@ -78,8 +81,16 @@ fn grid_marks(
     }
     // egui_plot passes the value of its minimum grid spacing (8 points).
     let px = span / input.base_step_size * 8.0;
-    let n = ((px / px_per_label) as usize).clamp(2, 10);
-    let t = ticks(untransform(lo, scale), untransform(hi, scale), scale, n);
+    let mut n = ((px / px_per_label) as usize).clamp(2, 10);
+    let mut t = ticks(untransform(lo, scale), untransform(hi, scale), scale, n);
+    while char_px > 0.0 && n > 2 {
+        let text: usize = t.iter().filter_map(|t| t.label.as_ref()).map(|l| l.chars().count() + 2).sum();
+        if text as f64 * char_px <= px {
+            break;
+        }
+        n -= 1;
+        t = ticks(untransform(lo, scale), untransform(hi, scale), scale, n);
+    }
     let mut remembered = labels.borrow_mut();
     remembered.clear();
     t.into_iter()
@@ -116,7 +127,13 @@ struct Entry {
 /// What a figure's legend lists: (name, style, colour) of each entry, to
 /// tell panels with the same legend apart from the rest.
 pub fn legend_signature(fig: &Figure) -> Vec<(String, Style, [u8; 3])> {
-    fig.legend()
+    let mut out = fig.legend();
+    if let Some(h) = &fig.heatmap {
+        out.extend(
+            h.categories.iter().enumerate().map(|(i, c)| (c.clone(), Style::Points, h.color_of(i as f64, (0.0, 1.0)))),
+        );
+    }
+    out
 }
 
 fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
@@ -210,6 +227,7 @@ pub fn show(
         if below {
             plot_size.y -= below_rows as f32 * row + 8.0;
         }
+        let y_title = axis_title_fitting(ui, &fig.y, plot_size.y - 24.0, look.text);
         let x_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
         let y_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
         let (xl1, xl2, yl1, yl2) =
@@ -224,17 +242,18 @@ pub fn show(
         // Room per labelled tick, points: about four characters of the tick
         // text across, three lines up.
         let (x_gap, y_gap) = (4.0 * look.text as f64, 2.9 * look.text as f64);
+        let char_px = 0.6 * look.text as f64;
         let response = ui
             .horizontal(|ui| {
                 let plot = Plot::new(("figure", fig.id.as_str()))
                     .width(plot_size.x.max(80.0))
                     .height(plot_size.y.max(60.0))
                     .x_axis_label(fig.x.title())
-                    .y_axis_label(fig.y.title())
+                    .y_axis_label(y_title)
                     .default_x_bounds(bx.0, bx.1)
                     .default_y_bounds(by.0, by.1)
-                    .x_grid_spacer(move |input| grid_marks(input, xs, x_gap, &xl1))
-                    .y_grid_spacer(move |input| grid_marks(input, ys, y_gap, &yl1))
+                    .x_grid_spacer(move |input| grid_marks(input, xs, x_gap, char_px, &xl1))
+                    .y_grid_spacer(move |input| grid_marks(input, ys, y_gap, 0.0, &yl1))
                     .x_axis_formatter(move |mark, _| label_of(mark.value, &xl2))
                     .y_axis_formatter(move |mark, _| label_of(mark.value, &yl2))
                     .label_formatter(move |hover: &egui_plot::HoverPosition<'_>| {
@@ -251,6 +270,12 @@ pub fn show(
                     });
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look));
                 let frame = *shown.transform.frame();
+                // The colour bar first: a legend inside the plot places its
+                // labels with the layout, which would move what follows.
+                if let Some(b) = &bar {
+                    let (rect, _) = ui.allocate_exact_size(Vec2::new(bar_w, plot_size.y), egui::Sense::hover());
+                    paint_bar(ui, b, Rect::from_x_y_ranges(rect.x_range(), frame.y_range()), look);
+                }
                 if !legend.is_empty() {
                     // The frame the plot would have with the legend inside.
                     let inside_w = frame.width() + if beside { legend_size.x + 8.0 } else { 0.0 };
@@ -282,10 +307,6 @@ pub fn show(
                     let (rect, _) = ui.allocate_exact_size(legend_size, egui::Sense::hover());
                     paint_legend(ui, &legend, rect, look);
                 }
-                if let Some(b) = &bar {
-                    let (rect, _) = ui.allocate_exact_size(Vec2::new(bar_w, plot_size.y), egui::Sense::hover());
-                    paint_bar(ui, b, Rect::from_x_y_ranges(rect.x_range(), frame.y_range()), look);
-                }
                 shown.response
             })
             .inner;
@@ -301,6 +322,33 @@ pub fn show(
     });
     // The whole panel: title, plot with its axes, legend and colour bar.
     shown.response.union(shown.inner)
+}
+
+/// An axis title that fits `room` points: as it is, else in a smaller size,
+/// else with its quantity shortened (the unit always kept), so that a short
+/// plot's y title does not run into the figure title.
+fn axis_title_fitting(ui: &egui::Ui, axis: &crate::figure::Axis, room: f32, size: f32) -> egui::RichText {
+    let width = |text: &str, size: f32| {
+        ui.painter().layout_no_wrap(text.to_string(), egui::FontId::proportional(size), Color32::WHITE).size().x
+    };
+    let title = axis.title();
+    if width(&title, size) <= room {
+        return egui::RichText::new(title);
+    }
+    let small = 0.8 * size;
+    if width(&title, small) <= room {
+        return egui::RichText::new(title).size(small);
+    }
+    let unit = if axis.unit.is_empty() { String::new() } else { format!(" [{}]", axis.unit) };
+    let mut label: Vec<char> = axis.label.chars().collect();
+    while !label.is_empty() {
+        label.pop();
+        let text = format!("{}…{unit}", label.iter().collect::<String>().trim_end());
+        if width(&text, small) <= room {
+            return egui::RichText::new(text).size(small);
+        }
+    }
+    egui::RichText::new(unit.trim().to_string()).size(small)
 }
 
 fn legend_size_one(ui: &egui::Ui, e: &Entry, font: &egui::FontId) -> Vec2 {
@@ -402,6 +450,14 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
                     4.0,
                 ));
             }
+            Style::Dotted => {
+                painter.extend(egui::Shape::dotted_line(
+                    &[Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)],
+                    e.color,
+                    2.2 * look.line,
+                    0.6 * look.line,
+                ));
+            }
             Style::Points => {
                 painter.circle_filled(Pos2::new(x0 + 15.0, y), 3.5, e.color);
             }
@@ -501,6 +557,9 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
         let name = s.name.clone();
         match s.style {
             Style::Line => plot_ui.line(line(name, pts).color(c).width(look.line)),
+            Style::Dotted => plot_ui.line(
+                line(name, pts).color(c).width(look.line * 0.6).style(LineStyle::Dotted { spacing: 2.2 * look.line }),
+            ),
             Style::Dashed => {
                 plot_ui.line(line(name, pts).color(c).width(look.line * 0.85).style(LineStyle::Dashed { length: 9.0 }))
             }

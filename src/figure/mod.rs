@@ -61,6 +61,9 @@ pub enum Style {
     Line,
     /// Dashed line (references such as Hertz or JKR).
     Dashed,
+    /// Dotted line (a third line style, e.g. for a third value of a
+    /// parameter that line styles tell apart).
+    Dotted,
     /// Markers only.
     Points,
     /// A single highlighted marker (e.g. the JKR equilibrium).
@@ -101,7 +104,7 @@ pub enum Fill {
 impl Style {
     /// Whether the style draws a line (as opposed to markers at the points).
     pub fn is_line(self) -> bool {
-        matches!(self, Style::Line | Style::Dashed)
+        matches!(self, Style::Line | Style::Dashed | Style::Dotted)
     }
 }
 
@@ -365,9 +368,10 @@ impl Figure {
     }
 
     /// Whether a series has a legend entry: named, and not a family member
-    /// (those are explained by the colour bar).
+    /// (those are explained by the colour bar) unless it names a shared
+    /// legend entry (e.g. the line style of a second varied parameter).
     pub fn in_legend(&self, s: &Series) -> bool {
-        !s.name.is_empty() && (self.family.is_none() || s.family.is_none())
+        !s.name.is_empty() && (self.family.is_none() || s.family.is_none() || s.legend.is_some())
     }
 
     /// The legend's entries in drawing order: (text, style, colour). Series

@@ -270,7 +270,7 @@ fn text(svg: &mut String, at: [f64; 2], t: &str, size: f64, anchor: &str, color:
 fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look) {
     let s = look.s;
     match style {
-        Style::Line | Style::Dashed => {}
+        Style::Line | Style::Dashed | Style::Dotted => {}
         Style::Points => {
             let _ = write!(svg, r#"<circle cx="{:.2}" cy="{:.2}" r="{:.2}" fill="{color}"/>"#, p[0], p[1], 3.2 * s);
         }
@@ -339,17 +339,19 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
 }
 
 fn dash(style: Style, look: &Look) -> String {
-    if style == Style::Dashed {
-        format!(r#" stroke-dasharray="{:.1} {:.1}""#, 8.0 * look.s, 5.0 * look.s)
-    } else {
-        String::new()
+    match style {
+        Style::Dashed => format!(r#" stroke-dasharray="{:.1} {:.1}""#, 8.0 * look.s, 5.0 * look.s),
+        Style::Dotted => {
+            format!(r#" stroke-dasharray="0.1 {:.1}" stroke-linecap="round""#, 2.2 * look.line.max(1.0))
+        }
+        _ => String::new(),
     }
 }
 
 fn draw_series(svg: &mut String, s: &Series, c: [u8; 3], look: &Look, map: &impl Fn([f64; 2]) -> Option<[f64; 2]>) {
     let color = rgb(c);
     match s.style {
-        Style::Line | Style::Dashed => {
+        Style::Line | Style::Dashed | Style::Dotted => {
             // A point the axes cannot show breaks the line.
             let mut d = String::new();
             let mut pen_down = false;
@@ -471,7 +473,7 @@ fn legend(svg: &mut String, entries: &[Entry], [x, y, w, h]: [f64; 4], look: &Lo
         match e.sample {
             Sample::Series(style, c) => {
                 let color = rgb(c);
-                if matches!(style, Style::Line | Style::Dashed) {
+                if style.is_line() {
                     let _ = write!(
                         svg,
                         r#"<line x1="{sx:.2}" y1="{cy:.2}" x2="{:.2}" y2="{cy:.2}" stroke="{color}" stroke-width="{:.2}"{}/>"#,

@@ -93,7 +93,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             si += usize::from(b.si);
         }
     }
-    fig = fig.with(Series::new("1e-3 ≤ Ωt_s ≤ 1", window, Style::Points, 2));
+    fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2));
     for (k, (pts, name)) in levels.into_iter().zip(["ρ*/ρ_g ≥ 0.1", "ρ*/ρ_g ≥ 0.5", "ρ*/ρ_g ≥ 1"]).enumerate()
     {
         fig = fig.with(Series::new(name, pts, Style::Points, [3, 0, 5][k]));

@@ -94,7 +94,7 @@ impl Params {
         ));
         c.push(Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1).default(d.r_c_1).unit("AU").range(5.0, 300.0).log().doc("first characteristic radius"));
         c.push(Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2).default(d.r_c_2).unit("AU").range(5.0, 300.0).log().doc("second characteristic radius"));
-        c.push(Control::choice("contrast", "dashed lines", &mut self.contrast, vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 1e-5")]).default(d.contrast.clone()).doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"));
+        c.push(Control::choice("contrast", "dashed lines", &mut self.contrast, vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")]).default(d.contrast.clone()).doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"));
         c
     }
 }
@@ -139,14 +139,14 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             let pts: Vec<[f64; 2]> =
                 masses.iter().enumerate().map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]]).collect();
             let label = match (c, p.contrast.as_str()) {
-                (1, "cold") => format!("R_c = {} AU, cold", crate::figure::tick_label(p.r_c_1)),
-                (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::tick_label(p.r_c_1)),
-                (1, "alpha") => format!("R_c = {} AU, α = 1e-5", crate::figure::tick_label(p.r_c_1)),
-                (1, _) => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_2)),
-                _ => format!("R_c = {} AU", crate::figure::tick_label(p.r_c_1)),
+                (1, "cold") => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
+                (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
+                (1, "alpha") => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
+                (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
+                _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
             };
             fig = fig.with(Series::new(
-                format!("Z₀ = {}, {label}", crate::figure::tick_label(*z)),
+                format!("Z₀ = {}, {label}", crate::figure::human(*z)),
                 pts,
                 if c == 0 { Style::Line } else { Style::Dashed },
                 zi,

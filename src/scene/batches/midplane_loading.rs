@@ -104,7 +104,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         for (k, zsol) in zs.iter().enumerate() {
             let z = zsol * 0.01;
             let pts = rs.iter().map(|&r| [r, max_loading(disk.eta(r * AU), z)]).collect();
-            fig = fig.with(Series::new(format!("Z* = {}", crate::figure::tick_label(z)), pts, Style::Line, k));
+            fig = fig.with(Series::new(format!("Z* = {}", crate::figure::human(z)), pts, Style::Line, k));
         }
         fig = fig.with(Series::new("loading = 1", vec![[1.0, 1.0], [200.0, 1.0]], Style::Dashed, 6));
         figures.push(fig);

@@ -4,7 +4,7 @@
 use super::common::{BatchParams, log_grid, sweep_controls};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::YEAR;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -118,21 +118,29 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     );
     let mut scalars = Vec::new();
     let mut min_fraction: f64 = 1.0;
+    // Up to three metallicities: the disk mass is the colour (a colour bar)
+    // and the metallicity the line style (one legend row each); more are
+    // told apart by colour alone.
+    let zs = log_grid(p.z_min, p.z_max, p.n_z);
+    let by_style = zs.len() <= 3 && p.n_mass > 1;
+    if by_style {
+        fig_m = fig_m.family("disk mass", "M_sun", Scale::Log);
+        fig_f = fig_f.family("disk mass", "M_sun", Scale::Log);
+    }
     for (k, (m, z, run)) in runs.iter().enumerate() {
-        let name = format!("M_D = {} M_sun, Z₀ = {}", crate::figure::tick_label(*m), crate::figure::tick_label(*z));
+        let name = format!("M_D = {} M_sun, Z₀ = {}", crate::figure::human(*m), crate::figure::human(*z));
         let earth = 5.972e24;
-        fig_m = fig_m.with(Series::new(
-            name.clone(),
-            run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / earth]).collect(),
-            Style::Line,
-            k,
-        ));
-        fig_f = fig_f.with(Series::new(
-            name,
-            run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / run.total_mass]).collect(),
-            Style::Line,
-            k,
-        ));
+        let series = |points: Vec<[f64; 2]>| {
+            let zi = zs.iter().position(|x| x == z).unwrap_or(0);
+            if by_style {
+                let style = [Style::Line, Style::Dashed, Style::Dotted][zi.min(2)];
+                Series::new(name.clone(), points, style, 0).at(*m).keyed(format!("Z₀ = {}", crate::figure::human(*z)))
+            } else {
+                Series::new(name.clone(), points, Style::Line, k)
+            }
+        };
+        fig_m = fig_m.with(series(run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / earth]).collect()));
+        fig_f = fig_f.with(series(run.frames.iter().map(|f| [f.t / YEAR, f.budget[1] / run.total_mass]).collect()));
         min_fraction = min_fraction.min(run.converted_fraction());
     }
     scalars.push(Scalar {

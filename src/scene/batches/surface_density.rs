@@ -4,7 +4,7 @@
 use super::common::{BatchParams, RunCache};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
 use crate::physics::constants::{AU, YEAR};
 use serde::{Deserialize, Serialize};
@@ -65,6 +65,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         Axis::log("radius R", "AU"),
         Axis::log("surface density", "g/cm²"),
     )
+    .family("time of the dust curve", "yr", Scale::Log)
     .with(Series::new(
         "gas Σ_g",
         rs.iter().map(|&r| [r, disk.surface_density(r * AU) * 0.1]).collect(),
@@ -90,7 +91,8 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
         let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
         pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
-        fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::tick_label(f.t / YEAR)), pts, Style::Line, k));
+        let t = f.t / YEAR;
+        fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::human(t)), pts, Style::Line, k).at(t));
     }
     // Planetesimals where they formed.
     let formed: Vec<(f64, f64)> = run

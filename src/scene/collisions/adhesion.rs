@@ -149,7 +149,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         0,
     ))
     .with(Series::new(
-        "(2E_break/m*)^{1/2}",
+        "√(2E_break/m*)",
         radii
             .iter()
             .map(|&r| {
@@ -206,7 +206,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             value: pair.jkr_sticking_velocity(),
             unit: "m s^-1",
         },
-        Scalar { key: "v_break", label: "(2E_break/m*)^{1/2}", value: v_break, unit: "m s^-1" },
+        Scalar { key: "v_break", label: "√(2E_break/m*)", value: v_break, unit: "m s^-1" },
         Scalar { key: "tabor", label: "Tabor parameter μ", value: pair.tabor(p.z0), unit: "" },
         Scalar { key: "E_K", label: "aggregate collision energy", value: e_k, unit: "J" },
     ];

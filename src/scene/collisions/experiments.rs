@@ -188,7 +188,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             e.reference,
             e.projectile,
             e.target,
-            crate::figure::tick_label(e.diameter * 1e6),
+            crate::figure::human(e.diameter * 1e6),
             if e.wall { "sphere on flat target" } else { "equal spheres" },
             e.v_min,
             e.v_max

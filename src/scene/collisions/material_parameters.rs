@@ -142,13 +142,13 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         let ls = logspace(0.01, 1e3, 20);
         fig_l = fig_l
             .with(Series::new(
-                "Y ~ l^-1/2",
+                "Y ∝ l^(−1/2)",
                 ls.iter().map(|&l| [l, y0 * (l / l0).powf(-0.5)]).collect(),
                 Style::Dashed,
                 0,
             ))
             .with(Series::new(
-                "Y ~ l^-1",
+                "Y ∝ l^(−1)",
                 ls.iter().map(|&l| [l, y0 * (l / l0).powf(-1.0)]).collect(),
                 Style::Dashed,
                 4,
@@ -188,7 +188,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
                 6,
             ))
             .with(Series::new(
-                "1e-3 t_H",
+                "10⁻³ t_H",
                 rs.iter().map(|&r| [r, 1e-3 * typical_hertz_time(r * 1e-6)]).collect(),
                 Style::Dashed,
                 6,

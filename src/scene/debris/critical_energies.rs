@@ -84,7 +84,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         for (eta, style, tag) in [(p.eta_low, Style::Dashed, "η low"), (p.eta_high, Style::Line, "η high")] {
             let pts = sizes.iter().map(|&s| [s, splitting_energy(m, eta, s)]).collect();
             fig = fig.with(Series::new(
-                format!("split {}, {tag} = {}", m.name, crate::figure::tick_label(eta)),
+                format!("split {}, {tag} = {}", m.name, crate::figure::human(eta)),
                 pts,
                 style,
                 i,

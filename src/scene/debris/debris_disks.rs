@@ -108,7 +108,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Axis::log("s_min / s_blow", ""),
     )
     .with(Series::new(
-        format!("L = {} L_sun (6.6)/(6.7)", crate::figure::tick_label(p.luminosity)),
+        format!("L = {} L_sun (6.6)/(6.7)", crate::figure::human(p.luminosity)),
         line(p.luminosity),
         Style::Line,
         0,

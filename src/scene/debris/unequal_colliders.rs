@@ -100,7 +100,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     for (i, k) in kappas.iter().enumerate() {
         let v = normalised_erosion(*k);
         fig = fig.with(Series::new(
-            format!("erosion (6.11), κ = {}", crate::figure::tick_label(*k)),
+            format!("erosion (6.11), κ = {}", crate::figure::human(*k)),
             vec![[p.erosive_ratio, v], [1e9, v]],
             Style::Line,
             1 + i,

@@ -105,7 +105,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     );
     for (i, h) in family(p.h_min, p.h_max, p.n_h).into_iter().enumerate() {
         let pts = radii.iter().map(|&r| [r * 1e6, critical_displacement(&c.pair(r), h) * 1e9]).collect();
-        fig = fig.with(Series::new(format!("Δγ/γ = {}", crate::figure::tick_label(h)), pts, Style::Line, i));
+        fig = fig.with(Series::new(format!("Δγ/γ = {}", crate::figure::human(h)), pts, Style::Line, i));
     }
     fig = fig.with(Series::new(
         "ξ = 0.3 nm (Dominik & Tielens)",

@@ -131,14 +131,14 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             let pair = c.pair(r);
             [x(r), rolling_force(&pair, rolling_torque(&pair, h))]
         });
-        fig = fig.with(Series::new(format!("Δγ/γ = {}", crate::figure::tick_label(h)), pts.collect(), Style::Line, i));
+        fig = fig.with(Series::new(format!("Δγ/γ = {}", crate::figure::human(h)), pts.collect(), Style::Line, i));
     }
     let dt = radii.iter().map(|&r| {
         let pair = c.pair(r);
         [x(r), rolling_force(&pair, small_asymmetry_torque(&pair, p.xi_dt))]
     });
     fig = fig.with(Series::new(
-        format!("Dominik & Tielens, ξ = {} nm", crate::figure::tick_label(p.xi_dt * 1e9)),
+        format!("Dominik & Tielens, ξ = {} nm", crate::figure::human(p.xi_dt * 1e9)),
         dt.collect(),
         Style::Dashed,
         6,
@@ -148,7 +148,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         [x(r), rolling_force(&pair, bulk_torque(&pair, p.q))]
     });
     fig = fig.with(Series::new(
-        format!("bulk, Q = {}", crate::figure::tick_label(p.q)),
+        format!("bulk, Q = {}", crate::figure::human(p.q)),
         bulk.collect(),
         Style::Dashed,
         7,

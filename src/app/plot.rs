@@ -245,7 +245,7 @@ pub fn show(
         let char_px = 0.6 * look.text as f64;
         let response = ui
             .horizontal(|ui| {
-                let plot = Plot::new(("figure", fig.id.as_str()))
+                let mut plot = Plot::new(("figure", fig.id.as_str()))
                     .width(plot_size.x.max(80.0))
                     .height(plot_size.y.max(60.0))
                     .x_axis_label(fig.x.title())
@@ -268,6 +268,16 @@ pub fn show(
                         let head = if name.is_empty() { String::new() } else { format!("{name}\n") };
                         Some(format!("{head}{x_name} = {} {x_unit}\n{y_name} = {} {y_unit}", human(x), human(y)))
                     });
+                // egui_plot keeps the first default bounds it was given: when
+                // the data's range moves (a parameter changed, axes unlocked),
+                // the plot is reset to the new range; a user's zoom stays
+                // while the range does not change.
+                let range_key = egui::Id::NULL.with(("figure-range", fig.id.as_str()));
+                let range = [bx.0, bx.1, by.0, by.1];
+                if ui.data(|d| d.get_temp::<[f64; 4]>(range_key)) != Some(range) {
+                    ui.data_mut(|d| d.insert_temp(range_key, range));
+                    plot = plot.reset();
+                }
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look));
                 let frame = *shown.transform.frame();
                 // The colour bar first: a legend inside the plot places its

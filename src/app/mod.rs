@@ -498,7 +498,11 @@ impl GrainscopeApp {
         if !self.notices.is_empty() {
             egui::Panel::top("notices").show(ui, |ui| self.notices_bar(ui));
         }
-        egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
+        // In lecture mode the status line shows only while something runs
+        // or went wrong, so that the plots keep the bottom of the screen.
+        if !self.session.lecture || self.worker.busy() || self.error.is_some() {
+            egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
+        }
         if !self.session.lecture {
             egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
                 egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
@@ -645,7 +649,7 @@ impl GrainscopeApp {
     fn top_bar(&mut self, ui: &mut egui::Ui) {
         if self.session.lecture {
             ui.horizontal(|ui| {
-                self.navigator(ui, 420.0);
+                self.navigator(ui, 380.0);
                 ui.separator();
                 ui.toggle_value(&mut self.lecture_params, "Parameters")
                     .on_hover_text("show the parameters over the plots");
@@ -653,6 +657,11 @@ impl GrainscopeApp {
                 ui.separator();
                 ui.checkbox(&mut self.session.lecture, "Lecture mode").on_hover_text("F5 toggles, Esc leaves");
             });
+            // The scene's headline result (e.g. e = 0.657, bounces) stays on
+            // screen while the parameters are hidden.
+            if !self.lecture_params {
+                self.headline(ui);
+            }
             return;
         }
         ui.horizontal_wrapped(|ui| {
@@ -1149,11 +1158,9 @@ impl GrainscopeApp {
         // Edited beside the contact sketch while the panels borrow `self`.
         let mut export_dir = std::mem::take(&mut self.session.export_dir);
         let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
-        let scroll = egui::ScrollArea::new([multiples, multiples]).max_height(if multiples {
-            avail.y - if lecture { 0.0 } else { 32.0 }
-        } else {
-            f32::INFINITY
-        });
+        let scroll = egui::ScrollArea::new([multiples, multiples])
+            .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+            .max_height(if multiples { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
         scroll.show(ui, |ui| {
             // One panel: the plot with its legend, and its export buttons.
             let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {

@@ -200,7 +200,14 @@ pub fn show(
     let bar = colour_bar(fig, overlay);
     let shown = ui.vertical(|ui| {
         ui.set_max_width(size.x);
-        ui.add(egui::Label::new(egui::RichText::new(title).strong().size(look.text + 1.0)).truncate());
+        // A long title is set smaller before it is cut.
+        let title_size = {
+            let full = look.text + 1.0;
+            let w =
+                ui.painter().layout_no_wrap(title.clone(), egui::FontId::proportional(full), Color32::WHITE).size().x;
+            if w > size.x { (full * size.x / w).max(0.8 * full) } else { full }
+        };
+        ui.add(egui::Label::new(egui::RichText::new(title).strong().size(title_size)).truncate());
         // Legend size in points, to find it a free corner.
         let row = look.text * 1.45;
         let text_w = legend
@@ -227,7 +234,15 @@ pub fn show(
         if below {
             plot_size.y -= below_rows as f32 * row + 8.0;
         }
-        let y_title = axis_title_fitting(ui, &fig.y, plot_size.y - 24.0, look.text);
+        if fig.square {
+            // The frame is square when the plot's outer size allows for its
+            // axes: about three text heights below, four text widths left.
+            let (axes_x, axes_y) = (4.5 * look.text + 10.0, 3.2 * look.text + 10.0);
+            let side = (plot_size.x - axes_x).min(plot_size.y - axes_y).max(40.0);
+            plot_size = Vec2::new(side + axes_x, side + axes_y);
+        }
+        // The frame is shorter than the plot by the x-axis ticks and title.
+        let y_title = axis_title_fitting(ui, &fig.y, plot_size.y - 3.2 * look.text - 16.0, look.text);
         let x_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
         let y_labels: Rc<RefCell<Vec<(f64, String)>>> = Rc::default();
         let (xl1, xl2, yl1, yl2) =
@@ -248,6 +263,10 @@ pub fn show(
                 let mut plot = Plot::new(("figure", fig.id.as_str()))
                     .width(plot_size.x.max(80.0))
                     .height(plot_size.y.max(60.0))
+                    // Grid lines in grey, lighter than any data line, so that
+                    // reference lines on a decade (Ωt_s = 1, loading = 1) stay
+                    // visible on a projector.
+                    .grid_color(if look.dark { Color32::from_gray(105) } else { Color32::from_gray(185) })
                     .x_axis_label(fig.x.title())
                     .y_axis_label(y_title)
                     .default_x_bounds(bx.0, bx.1)
@@ -278,7 +297,10 @@ pub fn show(
                     ui.data_mut(|d| d.insert_temp(range_key, range));
                     plot = plot.reset();
                 }
-                let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look));
+                // Pixels per axis unit (log10 units on log axes) at the
+                // default view, for thinning dense dashed lines.
+                let px = [plot_size.x as f64 / (bx.1 - bx.0), plot_size.y as f64 / (by.1 - by.0)];
+                let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look, px));
                 let frame = *shown.transform.frame();
                 // The colour bar first: a legend inside the plot places its
                 // labels with the layout, which would move what follows.
@@ -429,6 +451,9 @@ fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fi
         Shape::TriangleDown => {
             painter.add(poly(vec![c + Vec2::new(-r, -0.6 * r), c + Vec2::new(r, -0.6 * r), c + Vec2::new(0.0, r)]));
         }
+        Shape::TriangleUp => {
+            painter.add(poly(vec![c + Vec2::new(-r, 0.6 * r), c + Vec2::new(0.0, -r), c + Vec2::new(r, 0.6 * r)]));
+        }
         Shape::Asterisk => {
             for k in 0..3 {
                 let a = std::f32::consts::FRAC_PI_2 + k as f32 * std::f32::consts::PI / 3.0;
@@ -547,7 +572,14 @@ fn paint_bar(ui: &egui::Ui, b: &ColourBar, rect: Rect, look: Look) {
     painter.add(egui::epaint::TextShape::new(pos, galley, text_color).with_angle(-std::f32::consts::FRAC_PI_2));
 }
 
-fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overlay, stale: bool, look: Look) {
+fn draw_items(
+    plot_ui: &mut egui_plot::PlotUi<'_>,
+    fig: &Figure,
+    overlay: &Overlay,
+    stale: bool,
+    look: Look,
+    px: [f64; 2],
+) {
     if let Some(h) = &fig.heatmap {
         heatmap(plot_ui, fig, h);
     }
@@ -563,6 +595,7 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
     }
     for s in &fig.series {
         let pts = points(fig, s);
+        let pts = if matches!(s.style, Style::Dashed | Style::Dotted) { thinned(pts, px) } else { pts };
         let c = rgb(fig.color_of(s), stale);
         let name = s.name.clone();
         match s.style {
@@ -603,6 +636,7 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
                     Shape::Square => MarkerShape::Square,
                     Shape::Diamond => MarkerShape::Diamond,
                     Shape::TriangleDown => MarkerShape::Down,
+                    Shape::TriangleUp => MarkerShape::Up,
                     Shape::Asterisk => MarkerShape::Asterisk,
                 };
                 plot_ui.points(
@@ -626,6 +660,28 @@ fn draw_items(plot_ui: &mut egui_plot::PlotUi<'_>, fig: &Figure, overlay: &Overl
                 .filled(true),
         );
     }
+}
+
+/// A dashed line's points without those closer than a few pixels (at `px`
+/// pixels per unit) to the last one kept: egui cuts dashes into one piece
+/// per segment, and pieces shorter than a pixel all but vanish, so a dense
+/// dashed curve (a collision's 400 samples) would show only specks.
+fn thinned(pts: Vec<[f64; 2]>, px: [f64; 2]) -> Vec<[f64; 2]> {
+    const GAP: f64 = 3.0;
+    if pts.len() < 3 || !px.iter().all(|v| v.is_finite() && *v > 0.0) {
+        return pts;
+    }
+    let mut out = Vec::with_capacity(pts.len());
+    let mut last = pts[0];
+    out.push(last);
+    for p in &pts[1..pts.len() - 1] {
+        if ((p[0] - last[0]) * px[0]).hypot((p[1] - last[1]) * px[1]) >= GAP {
+            out.push(*p);
+            last = *p;
+        }
+    }
+    out.push(pts[pts.len() - 1]);
+    out
 }
 
 /// A line through `pts` drawn as a stroke of even width. (egui_plot would

@@ -88,6 +88,8 @@ pub enum Shape {
     Diamond,
     /// ▽ / ▼
     TriangleDown,
+    /// △ / ▲
+    TriangleUp,
     /// ✳ (an asterisk of three strokes; the same open or filled)
     Asterisk,
 }
@@ -328,6 +330,9 @@ pub struct Figure {
     /// On a logarithmic y-axis, how many decades below the highest point the
     /// axis reaches by default (distributions: the decades that hold mass).
     pub y_decades: Option<f64>,
+    /// Whether the plot area is square (maps of one quantity against itself,
+    /// such as mass against mass, or x against y in the same unit).
+    pub square: bool,
 }
 
 impl Figure {
@@ -342,7 +347,14 @@ impl Figure {
             heatmap: None,
             family: None,
             y_decades: None,
+            square: false,
         }
+    }
+
+    /// Makes the plot area square (builder style).
+    pub fn square(mut self) -> Self {
+        self.square = true;
+        self
     }
 
     /// Declares the parameter varied across the series marked with

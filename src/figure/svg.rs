@@ -92,7 +92,10 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
     if outside {
         right += legend_w + 12.0 * s;
     }
-    let plot = Rect { x0: left, y0: top, x1: (w - right).max(left + 20.0), y1: top + plot_h };
+    let mut plot = Rect { x0: left, y0: top, x1: (w - right).max(left + 20.0), y1: top + plot_h };
+    if fig.square && plot.x1 - plot.x0 > plot_h {
+        plot.x1 = plot.x0 + plot_h;
+    }
     let x_ticks = ticks(view.x[0], view.x[1], view.x_scale, x_label_count(&view, plot.x1 - plot.x0, &look));
 
     let mut svg = String::with_capacity(64 * 1024);
@@ -192,7 +195,7 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
                 let p = plot.at([fx0, fy1]);
                 (p[0], p[1])
             }
-            None => (w - legend_w - 10.0 * s, plot.y0),
+            None => ((plot.x1 + 12.0 * s + bar_w).min(w - legend_w - 10.0 * s), plot.y0),
         };
         legend(&mut svg, &entries, [x0, y0, legend_w, legend_h], &look);
     }
@@ -326,6 +329,7 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
         Shape::Square => write!(svg, "{}", polygon(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])),
         Shape::Diamond => write!(svg, "{}", polygon(&[[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])),
         Shape::TriangleDown => write!(svg, "{}", polygon(&[[-1.0, -0.6], [1.0, -0.6], [0.0, 1.0]])),
+        Shape::TriangleUp => write!(svg, "{}", polygon(&[[-1.0, 0.6], [0.0, -1.0], [1.0, 0.6]])),
         Shape::Asterisk => {
             let mut d = String::new();
             for k in 0..3 {

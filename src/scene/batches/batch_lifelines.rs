@@ -81,8 +81,8 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             .collect();
         fig = fig.with(Series::new("", pts, Style::Line, 6));
     }
-    let labels_st = ["Ωt_s < 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 0.01", "0.01 – 0.1", "0.1 – 1", "Ωt_s > 1"];
-    let labels_phi = ["φ < 10⁻⁵", "10⁻⁵ – 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 0.01", "0.01 – 0.1", "φ > 0.1"];
+    let labels_st = ["Ωt_s < 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 10⁻²", "10⁻² – 10⁻¹", "10⁻¹ – 1", "Ωt_s > 1"];
+    let labels_phi = ["φ < 10⁻⁵", "10⁻⁵ – 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 10⁻²", "10⁻² – 10⁻¹", "φ > 10⁻¹"];
     let mut bins: Vec<Vec<[f64; 2]>> = vec![Vec::new(); 6];
     for f in &run.frames {
         for b in f.batches.iter().filter(|b| b.dust && b.mass > 0.0) {

@@ -106,17 +106,17 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         let gamma_l = e.literature_surface_energy().unwrap_or(f64::NAN);
         let e_soft = e.softer_modulus().unwrap_or(f64::NAN);
         let length = e.plastic_length().unwrap_or(f64::NAN);
-        g.add(r_um, &e.gamma, gamma_l, 0);
+        g.add(r_um, &e.gamma, gamma_l, 1);
         y.add(r_um, &e.yield_strength, e_soft, 1);
         l.add(length * 1e6, &e.yield_strength, e_soft, 1);
-        t.add(r_um, &e.t_vis, 1.0, 2);
+        t.add(r_um, &e.t_vis, 1.0, 1);
         let ratio = e.gamma.representative() / gamma_l;
         within_two += usize::from((0.5..=2.0).contains(&ratio));
     }
     let radius_axis = || Axis::log("reduced radius R", "µm");
     let mut fig_g =
         Figure::new("surface-energy", "Surface energy (Fig. 2.7a)", radius_axis(), Axis::log("γ / γ_L", ""))
-            .with(Series::new("fit", g.values, Style::Points, 0))
+            .with(Series::new("fit", g.values, Style::Points, 1))
             .with(Series::new("γ = γ_L", vec![[0.3, 1.0], [2000.0, 1.0]], Style::Dashed, 6));
     fig_g.series.extend(g.bars);
     let mut fig_y =
@@ -179,7 +179,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     let rs = logspace(0.3, 2000.0, 30);
     let mut fig_t =
         Figure::new("relaxation-time", "Relaxation time (Fig. 2.8b)", radius_axis(), Axis::log("T_vis", "s"))
-            .with(Series::new("fit", t.values, Style::Points, 2))
+            .with(Series::new("fit", t.values, Style::Points, 1))
             .with(Series::new("upper limit", t.upper, Style::UpperLimit, 6))
             .with(Series::new(
                 "t_H (2.22)",

@@ -81,7 +81,9 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Axis::log("specific energy Q", "J/kg"),
     );
     for (i, m) in materials().iter().enumerate() {
-        for (eta, style, tag) in [(p.eta_low, Style::Dashed, "η low"), (p.eta_high, Style::Line, "η high")] {
+        // As in the thesis: the low efficiency dotted, the high one dashed,
+        // the disruption fits solid.
+        for (eta, style, tag) in [(p.eta_low, Style::Dotted, "η low"), (p.eta_high, Style::Dashed, "η high")] {
             let pts = sizes.iter().map(|&s| [s, splitting_energy(m, eta, s)]).collect();
             fig = fig.with(Series::new(
                 format!("split {}, {tag} = {}", m.name, crate::figure::human(eta)),

@@ -136,7 +136,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             fig = fig.with(Series::new(
                 format!("{} model, L = {} L_sun", s.name, s.luminosity),
                 model,
-                Style::Dashed,
+                Style::Line,
                 1 + k,
             ));
         }

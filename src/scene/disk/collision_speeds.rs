@@ -140,14 +140,16 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         "Relative velocity log₁₀ Δv [m/s] (Fig. 4.2)",
         axis("m_i / m₀"),
         axis("m_j / m₀"),
-    );
+    )
+    .square();
     fig_v.heatmap = Some(Heatmap::new(ns.clone(), ns.clone(), dv.clone(), "log₁₀ Δv", "m/s"));
     let mut fig_s = Figure::new(
         "dominant-source",
         "Dominant source of Δv (Fig. 4.2)",
         axis("m_i / m₀"),
         axis("m_j / m₀"),
-    );
+    )
+    .square();
     fig_s.heatmap = Some(Heatmap::categorical(
         ns.clone(),
         ns.clone(),

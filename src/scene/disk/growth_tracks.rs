@@ -147,7 +147,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         }
         fig
     };
-    fig_m = add(fig_m, &compact, "compact, v_frag = compact value", 1, &|q| q.mass * 1e3);
+    fig_m = add(fig_m, &compact, "compact", 1, &|q| q.mass * 1e3);
     fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
     fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
     fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);

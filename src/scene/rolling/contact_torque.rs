@@ -118,14 +118,16 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         "Pressure p(x, y) (Fig. 3.2A)",
         Axis::linear("x (rolling direction)", "nm"),
         Axis::linear("y", "nm"),
-    ));
+    )
+    .square());
     fig_p.heatmap = Some(Heatmap::new(nm.clone(), nm.clone(), pressure, "pressure (clipped)", "MPa"));
     let mut fig_m = markers(Figure::new(
         "torque-map",
         "Torque contributions x·p (Fig. 3.2B)",
         Axis::linear("x (rolling direction)", "nm"),
         Axis::linear("y", "nm"),
-    ));
+    )
+    .square());
     fig_m.heatmap = Some(Heatmap::new(nm.clone(), nm, moment, "x·p (clipped)", "N/m"));
 
     // Side view near the contact: sphere surface above the flat, exaggerated vertically.

@@ -6,7 +6,7 @@ use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange};
 use super::common::{RollingParams, family, family_controls};
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::rolling::{bulk_torque, rolling_force, rolling_torque, small_asymmetry_torque};
 use serde::{Deserialize, Serialize};
 
@@ -161,8 +161,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             let r = m.diameter / 2.0;
             let pair = c.pair(r);
             let xr = pair.radius * 1e6;
-            fig = fig.with(Series::new(m.label, vec![[xr, m.force]], Style::Marker, 3 + k));
-            fig = fig.with(Series::new("", vec![[xr, m.force - m.error], [xr, m.force + m.error]], Style::Line, 3 + k));
+            // Measurements in grey, one symbol each (● ▲ ■ as in the
+            // thesis), apart from the coloured model family.
+            let shape = [Shape::Circle, Shape::TriangleUp, Shape::Square][k % 3];
+            fig = fig.with(Series::new(m.label, vec![[xr, m.force]], Style::Symbol(shape, Fill::Filled), 6));
+            fig = fig.with(Series::new("", vec![[xr, m.force - m.error], [xr, m.force + m.error]], Style::Line, 6));
             let h = 0.5;
             let model = rolling_force(&pair, rolling_torque(&pair, h));
             let inside = (model - m.force).abs() <= m.error;

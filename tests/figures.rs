@@ -112,6 +112,32 @@ fn an_event_marked_on_several_curves_is_listed_once_by_its_symbol() {
 }
 
 #[test]
+fn every_line_style_and_symbol_renders_to_svg_and_png() {
+    let mut styles = vec![
+        Style::Line,
+        Style::Dashed,
+        Style::Dotted,
+        Style::Points,
+        Style::Marker,
+        Style::LowerLimit,
+        Style::UpperLimit,
+    ];
+    for shape in [Shape::Circle, Shape::Square, Shape::Diamond, Shape::TriangleDown, Shape::TriangleUp, Shape::Asterisk]
+    {
+        styles.extend([Style::Symbol(shape, Fill::Open), Style::Symbol(shape, Fill::Filled)]);
+    }
+    let mut fig = Figure::new("styles", "Styles", Axis::log("x", "m"), Axis::linear("y", ""));
+    for (k, style) in styles.iter().enumerate() {
+        let y = k as f64;
+        fig.series.push(Series::new(format!("{style:?}"), vec![[1.0, y], [3.0, y + 0.5], [10.0, y]], *style, k));
+    }
+    // resvg refuses malformed SVG (e.g. an attribute given twice), so this
+    // checks every style's markup, in the plot and in the legend.
+    let png = png_bytes(&fig, EXPORT_SIZE).expect("every style renders");
+    assert!(png.starts_with(b"\x89PNG"));
+}
+
+#[test]
 fn failed_export_leaves_earlier_files_intact() {
     let dir = tempfile::tempdir().expect("tempdir");
     let bad = dir.path().join("no-such-dir/figure.png");

@@ -346,7 +346,10 @@ fn dash(style: Style, look: &Look) -> String {
     match style {
         Style::Dashed => format!(r#" stroke-dasharray="{:.1} {:.1}""#, 8.0 * look.s, 5.0 * look.s),
         Style::Dotted => {
-            format!(r#" stroke-dasharray="0.1 {:.1}" stroke-linecap="round""#, 2.2 * look.line.max(1.0))
+            // Dots as long as the line is wide (the curves' round caps make
+            // them round; the legend's samples are square).
+            let w = look.line.max(1.0);
+            format!(r#" stroke-dasharray="{w:.1} {:.1}""#, 2.2 * w)
         }
         _ => String::new(),
     }

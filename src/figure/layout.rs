@@ -83,7 +83,7 @@ pub struct ColourBar {
     pub hi: f64,
     /// How values spread along the bar.
     pub scale: Scale,
-    /// Fraction of the colour map the top reaches (families stop at 0.9).
+    /// Fraction of the colour map the top reaches (families stop at [`super::FAMILY_TOP`]).
     pub top: f64,
 }
 
@@ -100,7 +100,7 @@ impl ColourBar {
     /// The bar of a family whose members span `lo..=hi`.
     pub fn family(f: &Family, (lo, hi): (f64, f64)) -> Option<ColourBar> {
         let scale = if f.scale == Scale::Log && lo > 0.0 { Scale::Log } else { Scale::Linear };
-        Some(ColourBar { title: f.title(), lo, hi, scale, top: 0.9 })
+        Some(ColourBar { title: f.title(), lo, hi, scale, top: super::FAMILY_TOP })
     }
 }
 

@@ -191,6 +191,10 @@ pub const PALETTE: [[u8; 3]; 8] = [
     [181, 158, 0],
 ];
 
+/// How far up viridis a family's colours reach: its palest yellows vanish on
+/// a white slide.
+pub const FAMILY_TOP: f64 = 0.82;
+
 /// The colour of a legend entry shared by series of different colours.
 pub const NEUTRAL: [u8; 3] = [110, 110, 110];
 
@@ -464,5 +468,5 @@ pub fn family_fraction(v: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
         _ if hi > lo => (v - lo) / (hi - lo),
         _ => 0.5,
     };
-    0.9 * t.clamp(0.0, 1.0)
+    FAMILY_TOP * t.clamp(0.0, 1.0)
 }

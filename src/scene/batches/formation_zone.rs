@@ -4,7 +4,7 @@
 use super::common::{BatchParams, log_grid, sweep_controls};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -132,7 +132,9 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
         Axis::log("disk mass", "M_sun"),
         Axis::linear("outer edge", "AU"),
-    );
+    )
+    // Metallicity is the colour (a colour bar), the disk set the line style.
+    .family("metallicity Z₀", "", Scale::Log);
     let mut scalars = Vec::new();
     for c in 0..2 {
         for (zi, z) in zs.iter().enumerate() {
@@ -145,12 +147,16 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
                 (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
                 _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
             };
-            fig = fig.with(Series::new(
-                format!("Z₀ = {}, {label}", crate::figure::human(*z)),
-                pts,
-                if c == 0 { Style::Line } else { Style::Dashed },
-                zi,
-            ));
+            fig = fig.with(
+                Series::new(
+                    format!("Z₀ = {}, {label}", crate::figure::human(*z)),
+                    pts,
+                    if c == 0 { Style::Line } else { Style::Dashed },
+                    zi,
+                )
+                .at(*z)
+                .keyed(label),
+            );
         }
     }
     let widest = edges.iter().copied().fold(0.0, f64::max);

@@ -5,7 +5,7 @@
 use super::common::CollisionParams;
 use crate::scene::controls::{Control, LogRange, ParamError};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style, human};
+use crate::figure::{Axis, Figure, Scale, Series, Style, human};
 use crate::physics::collision::{restitution, sticking_velocity};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
@@ -354,10 +354,13 @@ fn sticking_panel(
         "Sticking velocity against reduced radius",
         Axis::log("reduced radius R", "µm"),
         Axis::log("sticking velocity", "m/s"),
-    );
+    )
+    // T_vis is the colour, on a colour bar: the palette colours of the
+    // panels above mean e_I, e_JKR and e_D.
+    .family("relaxation time T_vis", "s", Scale::Log);
     for (i, tv) in t_vis.iter().enumerate() {
         let pts = radii.iter().enumerate().map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]]).collect();
-        fig = fig.with(Series::new(format!("T_vis = {} s", human(*tv)), pts, Style::Line, i % 6));
+        fig = fig.with(Series::new(format!("T_vis = {} s", human(*tv)), pts, Style::Line, i % 6).at(*tv));
     }
     let jkr = radii.iter().map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()]).collect();
     fig = fig.with(Series::new("JKR v_c (2.25)", jkr, Style::Dashed, 6));

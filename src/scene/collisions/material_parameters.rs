@@ -117,13 +117,13 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     let mut fig_g =
         Figure::new("surface-energy", "Surface energy (Fig. 2.7a)", radius_axis(), Axis::log("γ / γ_L", ""))
             .with(Series::new("fit", g.values, Style::Points, 1))
-            .with(Series::new("γ = γ_L", vec![[0.3, 1.0], [2000.0, 1.0]], Style::Dashed, 6));
+            .with(Series::new("γ = γ_L", vec![[0.3, 1.0], [2000.0, 1.0]], Style::Line, 6));
     fig_g.series.extend(g.bars);
     let mut fig_y =
         Figure::new("yield-strength", "Yield strength (Fig. 2.7b)", radius_axis(), Axis::log("Y / E_softer", ""))
             .with(Series::new("fit", y.values, Style::Points, 1))
             .with(Series::new("lower limit", y.lower, Style::LowerLimit, 6))
-            .with(Series::new("theoretical 0.2 E", vec![[0.3, 0.2], [2000.0, 0.2]], Style::Dashed, 3));
+            .with(Series::new("theoretical 0.2 E", vec![[0.3, 0.2], [2000.0, 0.2]], Style::Dotted, 3));
     fig_y.series.extend(y.bars);
 
     let mut fig_l = Figure::new(
@@ -134,7 +134,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     )
     .with(Series::new("fit", l.values.clone(), Style::Points, 1))
     .with(Series::new("lower limit", l.lower, Style::LowerLimit, 6))
-    .with(Series::new("theoretical 0.2 E", vec![[0.01, 0.2], [1e3, 0.2]], Style::Dashed, 3));
+    .with(Series::new("theoretical 0.2 E", vec![[0.01, 0.2], [1e3, 0.2]], Style::Dotted, 3));
     fig_l.series.extend(l.bars);
     if p.guides
         && let Some(&[l0, y0]) = l.values.first()

@@ -108,7 +108,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         fig = fig.with(Series::new(
             format!("{} limit (6.6)", m.name),
             vec![[p.s0_min, split], [p.s0_max, split]],
-            Style::Dashed,
+            Style::Dotted,
             i,
         ));
         scalars.push(Scalar {
@@ -129,7 +129,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             Style::Line,
             6,
         ))
-        .with(Series::new("self-gravity", vec![[p.gravity_size, 1e-12], [p.gravity_size, 1e6]], Style::Line, 6));
+        .with(Series::new("self-gravity", vec![[p.gravity_size, 1e-12], [p.gravity_size, 1e6]], Style::Dashed, 6));
     if let Some(s0) = collider_for(c, 0, 1e-6) {
         scalars.push(Scalar {
             key: "collider_for_1um_silicate",

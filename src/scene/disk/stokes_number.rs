@@ -92,7 +92,13 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         1 => p.porous_filling,
         _ => n.powf(1.0 - 3.0 / p.fractal_dimension).min(1.0),
     };
-    let families = ["compact", "constant φ", "fractal D_f"];
+    let families = [
+        "compact".to_string(),
+        format!("constant φ = {}", crate::figure::human(p.porous_filling)),
+        format!("fractal, D_f = {}", crate::figure::human(p.fractal_dimension)),
+    ];
+    // The thesis's colours: compact red, constant φ yellow, fractal green.
+    let colours = [0, 3, 2];
     let mut fig =
         Figure::new("stokes-number", "Stokes number (Fig. 4.1)", Axis::log("mass m / m₀", ""), Axis::log("Ωt_s", ""));
     let mut scalars = Vec::new();
@@ -139,16 +145,21 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         {
             scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value: n, unit: "" });
         }
-        fig = fig.with(Series::new(*name, full, Style::Line, k)).with(Series::new(
+        fig = fig.with(Series::new(name.clone(), full, Style::Line, colours[k])).with(Series::new(
             format!("{name}, Epstein + Stokes only"),
             no_newton,
             Style::Dashed,
-            k,
+            colours[k],
         ));
     }
     fig = fig
         .with(Series::new("Ωt_s = 1", vec![[1.0, 1.0], [p.max_monomers, 1.0]], Style::Dashed, 6))
-        .with(Series::new("Ωt_s = α", vec![[1.0, env.alpha], [p.max_monomers, env.alpha]], Style::Dashed, 7));
+        .with(Series::new(
+            format!("Ωt_s = α = {}", crate::figure::human(env.alpha)),
+            vec![[1.0, env.alpha], [p.max_monomers, env.alpha]],
+            Style::Dashed,
+            7,
+        ));
     scalars.push(Scalar {
         key: "newton_iterations",
         label: "largest Newton-drag iteration count",

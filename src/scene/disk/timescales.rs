@@ -71,7 +71,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     .with(Series::new(
         "t_drift / 30",
         pts.iter().map(|q| [q.mass * 1e3, q.t_drift / 30.0 / YEAR]).collect(),
-        Style::Dashed,
+        Style::Dotted,
         1,
     ));
     let worst = pts.iter().filter(|q| q.t_grow.is_finite()).map(|q| q.t_grow / q.t_drift).fold(0.0, f64::max);

@@ -150,7 +150,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     fig = fig.with(Series::new(
         format!("bulk, Q = {}", crate::figure::human(p.q)),
         bulk.collect(),
-        Style::Dashed,
+        Style::Dotted,
         7,
     ));
 

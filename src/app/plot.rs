@@ -35,6 +35,21 @@ fn points(fig: &Figure, s: &Series) -> Vec<[f64; 2]> {
     s.points.iter().filter_map(|p| Some([transform(p[0], fig.x.scale)?, transform(p[1], fig.y.scale)?])).collect()
 }
 
+/// The runs of a line between the points its axes cannot show (non-finite,
+/// or not positive on a log axis), in plot coordinates.
+fn runs(fig: &Figure, s: &Series) -> Vec<Vec<[f64; 2]>> {
+    let mut out: Vec<Vec<[f64; 2]>> = vec![Vec::new()];
+    for p in &s.points {
+        match (transform(p[0], fig.x.scale), transform(p[1], fig.y.scale)) {
+            (Some(x), Some(y)) => out.last_mut().into_iter().for_each(|r| r.push([x, y])),
+            _ if out.last().is_some_and(|r| !r.is_empty()) => out.push(Vec::new()),
+            _ => {}
+        }
+    }
+    out.retain(|r| !r.is_empty());
+    out
+}
+
 /// Extra items drawn over a figure (pins and cursors).
 #[derive(Default)]
 pub struct Overlay {
@@ -594,18 +609,24 @@ fn draw_items(
         });
     }
     for s in &fig.series {
-        let pts = points(fig, s);
-        let pts = if matches!(s.style, Style::Dashed | Style::Dotted) { thinned(pts, px) } else { pts };
         let c = rgb(fig.color_of(s), stale);
         let name = s.name.clone();
-        match s.style {
-            Style::Line => plot_ui.line(line(name, pts).color(c).width(look.line)),
-            Style::Dotted => plot_ui.line(
-                line(name, pts).color(c).width(look.line * 0.6).style(LineStyle::Dotted { spacing: 2.2 * look.line }),
-            ),
-            Style::Dashed => {
-                plot_ui.line(line(name, pts).color(c).width(look.line * 0.85).style(LineStyle::Dashed { length: 9.0 }))
+        if s.style.is_line() {
+            // A point the axes cannot show breaks the line, as in the files.
+            for run in runs(fig, s) {
+                let run = if s.style == Style::Line { run } else { thinned(run, px) };
+                let l = line(name.clone(), run).color(c);
+                plot_ui.line(match s.style {
+                    Style::Dotted => l.width(look.line * 0.6).style(LineStyle::Dotted { spacing: 2.2 * look.line }),
+                    Style::Dashed => l.width(look.line * 0.85).style(LineStyle::Dashed { length: 9.0 }),
+                    _ => l.width(look.line),
+                });
             }
+            continue;
+        }
+        let pts = points(fig, s);
+        match s.style {
+            Style::Line | Style::Dotted | Style::Dashed => {}
             Style::Points => {
                 plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
             }

@@ -2,6 +2,7 @@
 //! draws with egui_plot and the file writers render to SVG, PNG and CSV, so
 //! that the command line makes the same figures without a window.
 
+pub mod contour;
 mod export;
 pub mod layout;
 mod svg;

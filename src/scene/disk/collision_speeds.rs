@@ -5,7 +5,7 @@ use crate::scene::quantities;
 use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Heatmap, Series, Style};
+use crate::figure::{Axis, Figure, Heatmap, Scale, Series, Style};
 use crate::physics::aggregate::{Aggregate, Particle, TurbulenceModel, relative_velocity, stopping_time};
 use crate::physics::constants::AU;
 use rayon::prelude::*;
@@ -161,6 +161,22 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let diag = vec![[ns[0], ns[0]], [ns[ns.len() - 1], ns[ns.len() - 1]]];
     fig_v = fig_v.with(Series::new("m_i = m_j", diag.clone(), Style::Dashed, 6));
     fig_s = fig_s.with(Series::new("m_i = m_j", diag, Style::Dashed, 6));
+    // As in Fig. 4.2: contours of Δv over the dominant sources, one per
+    // decade of speed.
+    let decades: Vec<f64> = (-3..=2).map(f64::from).collect();
+    let shown: Vec<String> = decades
+        .iter()
+        .filter(|&&l| dv.iter().any(|&v| v < l) && dv.iter().any(|&v| v > l))
+        .map(|&l| crate::figure::human(10f64.powf(l)))
+        .collect();
+    let key = format!("Δv = {} m/s", shown.join(", "));
+    for level in decades {
+        let pts = crate::figure::contour::contour(&ns, &ns, &dv, level, (Scale::Log, Scale::Log));
+        if !pts.is_empty() {
+            let name = format!("Δv = {} m/s", crate::figure::human(10f64.powf(level)));
+            fig_s = fig_s.with(Series::new(name, pts, Style::Line, 6).keyed(key.clone()));
+        }
+    }
     let max = dv.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let mut counts = [0usize; 5];
     for d in &dom {

@@ -117,6 +117,7 @@ fn every_line_style_and_symbol_renders_to_svg_and_png() {
         Style::Line,
         Style::Dashed,
         Style::Dotted,
+        Style::Arrow,
         Style::Points,
         Style::Marker,
         Style::LowerLimit,
@@ -135,6 +136,9 @@ fn every_line_style_and_symbol_renders_to_svg_and_png() {
     // checks every style's markup, in the plot and in the legend.
     let png = png_bytes(&fig, EXPORT_SIZE).expect("every style renders");
     assert!(png.starts_with(b"\x89PNG"));
+    // An arrow ends in a filled head.
+    let svg = svg_string(&fig, EXPORT_SIZE).expect("svg");
+    assert!(svg.matches("Z\" fill=").count() >= 2, "arrowheads in the plot and the legend");
 }
 
 #[test]

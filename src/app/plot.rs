@@ -500,6 +500,9 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
                     4.0,
                 ));
             }
+            Style::Arrow => {
+                painter.arrow(Pos2::new(x0, y), Vec2::new(30.0, 0.0), stroke);
+            }
             Style::Dotted => {
                 painter.extend(egui::Shape::dotted_line(
                     &[Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)],
@@ -614,7 +617,17 @@ fn draw_items(
         if s.style.is_line() {
             // A point the axes cannot show breaks the line, as in the files.
             for run in runs(fig, s) {
-                let run = if s.style == Style::Line { run } else { thinned(run, px) };
+                if s.style == Style::Arrow
+                    && let [.., from, tip] = run[..]
+                {
+                    plot_ui.arrows(
+                        egui_plot::Arrows::new(String::new(), vec![from], vec![tip])
+                            .color(c)
+                            .tip_length(12.0)
+                            .allow_hover(false),
+                    );
+                }
+                let run = if matches!(s.style, Style::Line | Style::Arrow) { run } else { thinned(run, px) };
                 let l = line(name.clone(), run).color(c);
                 plot_ui.line(match s.style {
                     Style::Dotted => l.width(look.line * 0.6).style(LineStyle::Dotted { spacing: 2.2 * look.line }),
@@ -626,7 +639,7 @@ fn draw_items(
         }
         let pts = points(fig, s);
         match s.style {
-            Style::Line | Style::Dotted | Style::Dashed => {}
+            Style::Line | Style::Dotted | Style::Dashed | Style::Arrow => {}
             Style::Points => {
                 plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
             }

@@ -162,7 +162,7 @@ pub fn touches(s: &Series, view: &View, r: [f64; 4]) -> bool {
     let pts: Vec<Option<[f64; 2]>> = s.points.iter().map(|p| view.fraction(*p)).collect();
     let inside = |p: [f64; 2]| p[0] >= r[0] && p[0] <= r[2] && p[1] >= r[1] && p[1] <= r[3];
     match s.style {
-        Style::Line | Style::Dashed | Style::Dotted => {
+        Style::Line | Style::Dashed | Style::Dotted | Style::Arrow => {
             if pts.len() == 1 {
                 return pts[0].is_some_and(inside);
             }

@@ -65,6 +65,9 @@ pub enum Style {
     /// Dotted line (a third line style, e.g. for a third value of a
     /// parameter that line styles tell apart).
     Dotted,
+    /// A solid line with an arrowhead at its last point (the direction of a
+    /// change, e.g. the parameter arrows of Fig. 6.2).
+    Arrow,
     /// Markers only.
     Points,
     /// A single highlighted marker (e.g. the JKR equilibrium).
@@ -107,7 +110,7 @@ pub enum Fill {
 impl Style {
     /// Whether the style draws a line (as opposed to markers at the points).
     pub fn is_line(self) -> bool {
-        matches!(self, Style::Line | Style::Dashed | Style::Dotted)
+        matches!(self, Style::Line | Style::Dashed | Style::Dotted | Style::Arrow)
     }
 }
 

@@ -273,7 +273,7 @@ fn text(svg: &mut String, at: [f64; 2], t: &str, size: f64, anchor: &str, color:
 fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look) {
     let s = look.s;
     match style {
-        Style::Line | Style::Dashed | Style::Dotted => {}
+        Style::Line | Style::Dashed | Style::Dotted | Style::Arrow => {}
         Style::Points => {
             let _ = write!(svg, r#"<circle cx="{:.2}" cy="{:.2}" r="{:.2}" fill="{color}"/>"#, p[0], p[1], 3.2 * s);
         }
@@ -342,6 +342,28 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
     };
 }
 
+/// A filled arrowhead of length `len` at `tip`, pointing away from `from`.
+fn arrowhead(svg: &mut String, from: [f64; 2], tip: [f64; 2], color: &str, len: f64) {
+    let (dx, dy) = (tip[0] - from[0], tip[1] - from[1]);
+    let n = dx.hypot(dy);
+    if n <= 0.0 {
+        return;
+    }
+    let (ux, uy) = (dx / n, dy / n);
+    let base = [tip[0] - len * ux, tip[1] - len * uy];
+    let half = 0.45 * len;
+    let _ = write!(
+        svg,
+        r#"<path d="M{:.2} {:.2}L{:.2} {:.2}L{:.2} {:.2}Z" fill="{color}"/>"#,
+        tip[0],
+        tip[1],
+        base[0] - half * uy,
+        base[1] + half * ux,
+        base[0] + half * uy,
+        base[1] - half * ux
+    );
+}
+
 fn dash(style: Style, look: &Look) -> String {
     match style {
         Style::Dashed => format!(r#" stroke-dasharray="{:.1} {:.1}""#, 8.0 * look.s, 5.0 * look.s),
@@ -358,18 +380,23 @@ fn dash(style: Style, look: &Look) -> String {
 fn draw_series(svg: &mut String, s: &Series, c: [u8; 3], look: &Look, map: &impl Fn([f64; 2]) -> Option<[f64; 2]>) {
     let color = rgb(c);
     match s.style {
-        Style::Line | Style::Dashed | Style::Dotted => {
+        Style::Line | Style::Dashed | Style::Dotted | Style::Arrow => {
             // A point the axes cannot show breaks the line.
             let mut d = String::new();
             let mut pen_down = false;
+            let mut last_two: [Option<[f64; 2]>; 2] = [None, None];
             for p in &s.points {
                 match map(*p) {
                     Some(q) => {
                         let _ = write!(d, "{}{:.2} {:.2}", if pen_down { "L" } else { "M" }, q[0], q[1]);
                         pen_down = true;
+                        last_two = [last_two[1], Some(q)];
                     }
                     None => pen_down = false,
                 }
+            }
+            if let (Style::Arrow, [Some(from), Some(tip)]) = (s.style, last_two) {
+                arrowhead(svg, from, tip, &color, 9.0 * look.s);
             }
             if !d.is_empty() {
                 let _ = write!(
@@ -488,6 +515,9 @@ fn legend(svg: &mut String, entries: &[Entry], [x, y, w, h]: [f64; 4], look: &Lo
                         look.line,
                         dash(style, look)
                     );
+                    if style == Style::Arrow {
+                        arrowhead(svg, [sx, cy], [sx + 30.0 * s, cy], &color, 9.0 * s);
+                    }
                 } else {
                     marker(svg, style, [sx + 15.0 * s, cy], &color, look);
                 }

@@ -149,7 +149,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         fig = fig.with(Series::new(
             format!("arrow {name}"),
             vec![[r_ref * (1.0 + 0.15 * k as f64), q_ref], [r_ref * (1.0 + 0.15 * k as f64), q_ref * factor]],
-            Style::Line,
+            Style::Arrow,
             4 + k,
         ));
     }

@@ -118,6 +118,7 @@ fn every_line_style_and_symbol_renders_to_svg_and_png() {
         Style::Dashed,
         Style::Dotted,
         Style::Arrow,
+        Style::Region,
         Style::Points,
         Style::Marker,
         Style::LowerLimit,

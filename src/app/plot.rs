@@ -503,6 +503,16 @@ fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) {
             Style::Arrow => {
                 painter.arrow(Pos2::new(x0, y), Vec2::new(30.0, 0.0), stroke);
             }
+            Style::Region => {
+                let r = Rect::from_min_size(Pos2::new(x0 + 6.0, y - 6.0), Vec2::new(18.0, 12.0));
+                painter.rect(
+                    r,
+                    1.0,
+                    e.color.gamma_multiply(0.3),
+                    Stroke::new(0.6 * look.line, e.color),
+                    egui::StrokeKind::Inside,
+                );
+            }
             Style::Dotted => {
                 painter.extend(egui::Shape::dotted_line(
                     &[Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)],
@@ -640,6 +650,11 @@ fn draw_items(
         let pts = points(fig, s);
         match s.style {
             Style::Line | Style::Dotted | Style::Dashed | Style::Arrow => {}
+            Style::Region => plot_ui.polygon(
+                egui_plot::Polygon::new(name, PlotPoints::from(pts))
+                    .fill_color(c.gamma_multiply(0.3))
+                    .stroke(Stroke::new(0.6 * look.line, c)),
+            ),
             Style::Points => {
                 plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
             }

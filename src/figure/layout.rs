@@ -172,6 +172,14 @@ pub fn touches(s: &Series, view: &View, r: [f64; 4]) -> bool {
                 (None, None) => false,
             })
         }
+        Style::Region => {
+            // The whole region counts, not only its outline.
+            let f: Vec<[f64; 2]> = pts.iter().flatten().copied().collect();
+            let (lo, hi) = f.iter().fold(([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]), |(lo, hi), p| {
+                ([lo[0].min(p[0]), lo[1].min(p[1])], [hi[0].max(p[0]), hi[1].max(p[1])])
+            });
+            !f.is_empty() && lo[0] <= r[2] && hi[0] >= r[0] && lo[1] <= r[3] && hi[1] >= r[1]
+        }
         _ => {
             // Markers have a size: about 2 % of the plot.
             let g = [r[0] - 0.02, r[1] - 0.02, r[2] + 0.02, r[3] + 0.02];

@@ -65,6 +65,9 @@ pub enum Style {
     /// Dotted line (a third line style, e.g. for a third value of a
     /// parameter that line styles tell apart).
     Dotted,
+    /// A closed region (the points are its outline), filled translucent in
+    /// its colour and outlined (e.g. an observational constraint).
+    Region,
     /// A solid line with an arrowhead at its last point (the direction of a
     /// change, e.g. the parameter arrows of Fig. 6.2).
     Arrow,

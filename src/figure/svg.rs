@@ -273,7 +273,7 @@ fn text(svg: &mut String, at: [f64; 2], t: &str, size: f64, anchor: &str, color:
 fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look) {
     let s = look.s;
     match style {
-        Style::Line | Style::Dashed | Style::Dotted | Style::Arrow => {}
+        Style::Line | Style::Dashed | Style::Dotted | Style::Arrow | Style::Region => {}
         Style::Points => {
             let _ = write!(svg, r#"<circle cx="{:.2}" cy="{:.2}" r="{:.2}" fill="{color}"/>"#, p[0], p[1], 3.2 * s);
         }
@@ -407,6 +407,18 @@ fn draw_series(svg: &mut String, s: &Series, c: [u8; 3], look: &Look, map: &impl
                 );
             }
         }
+        Style::Region => {
+            let pts: Vec<String> =
+                s.points.iter().filter_map(|p| map(*p)).map(|q| format!("{:.2} {:.2}", q[0], q[1])).collect();
+            if pts.len() >= 3 {
+                let _ = write!(
+                    svg,
+                    r#"<path d="M{}Z" fill="{color}" fill-opacity="0.3" stroke="{color}" stroke-width="{:.2}"/>"#,
+                    pts.join("L"),
+                    0.6 * look.line
+                );
+            }
+        }
         style => {
             for q in s.points.iter().filter_map(|p| map(*p)) {
                 marker(svg, style, q, &color, look);
@@ -518,6 +530,16 @@ fn legend(svg: &mut String, entries: &[Entry], [x, y, w, h]: [f64; 4], look: &Lo
                     if style == Style::Arrow {
                         arrowhead(svg, [sx, cy], [sx + 30.0 * s, cy], &color, 9.0 * s);
                     }
+                } else if style == Style::Region {
+                    let _ = write!(
+                        svg,
+                        r#"<rect x="{:.2}" y="{:.2}" width="{:.2}" height="{:.2}" fill="{color}" fill-opacity="0.3" stroke="{color}" stroke-width="{:.2}"/>"#,
+                        sx + 6.0 * s,
+                        cy - 6.0 * s,
+                        18.0 * s,
+                        12.0 * s,
+                        0.6 * look.line
+                    );
                 } else {
                     marker(svg, style, [sx + 15.0 * s, cy], &color, look);
                 }

@@ -126,7 +126,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             fig = fig.with(Series::new(
                 format!("{} (observed)", s.name),
                 vec![[r0, q0], [r1, q0], [r1, q1], [r0, q1], [r0, q0]],
-                Style::Line,
+                Style::Region,
                 1 + k,
             ));
             let model = logspace(r0 * 0.7, r1 * 1.3, 10)

@@ -124,8 +124,15 @@ fn every_line_style_and_symbol_renders_to_svg_and_png() {
         Style::LowerLimit,
         Style::UpperLimit,
     ];
-    for shape in [Shape::Circle, Shape::Square, Shape::Diamond, Shape::TriangleDown, Shape::TriangleUp, Shape::Asterisk]
-    {
+    for shape in [
+        Shape::Circle,
+        Shape::Square,
+        Shape::Diamond,
+        Shape::TriangleDown,
+        Shape::TriangleUp,
+        Shape::Asterisk,
+        Shape::Plus,
+    ] {
         styles.extend([Style::Symbol(shape, Fill::Open), Style::Symbol(shape, Fill::Filled)]);
     }
     let mut fig = Figure::new("styles", "Styles", Axis::log("x", "m"), Axis::linear("y", ""));

@@ -469,6 +469,10 @@ fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fi
         Shape::TriangleUp => {
             painter.add(poly(vec![c + Vec2::new(-r, 0.6 * r), c + Vec2::new(0.0, -r), c + Vec2::new(r, 0.6 * r)]));
         }
+        Shape::Plus => {
+            painter.line_segment([c - Vec2::new(r, 0.0), c + Vec2::new(r, 0.0)], stroke);
+            painter.line_segment([c - Vec2::new(0.0, r), c + Vec2::new(0.0, r)], stroke);
+        }
         Shape::Asterisk => {
             for k in 0..3 {
                 let a = std::f32::consts::FRAC_PI_2 + k as f32 * std::f32::consts::PI / 3.0;
@@ -687,6 +691,7 @@ fn draw_items(
                     Shape::TriangleDown => MarkerShape::Down,
                     Shape::TriangleUp => MarkerShape::Up,
                     Shape::Asterisk => MarkerShape::Asterisk,
+                    Shape::Plus => MarkerShape::Plus,
                 };
                 plot_ui.points(
                     Points::new(name, PlotPoints::from(pts))

@@ -99,6 +99,8 @@ pub enum Shape {
     TriangleUp,
     /// ✳ (an asterisk of three strokes; the same open or filled)
     Asterisk,
+    /// + (two strokes; the same open or filled)
+    Plus,
 }
 
 /// Whether a [`Style::Symbol`] is drawn open (outline) or filled.

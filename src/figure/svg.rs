@@ -330,6 +330,14 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
         Shape::Diamond => write!(svg, "{}", polygon(&[[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])),
         Shape::TriangleDown => write!(svg, "{}", polygon(&[[-1.0, -0.6], [1.0, -0.6], [0.0, 1.0]])),
         Shape::TriangleUp => write!(svg, "{}", polygon(&[[-1.0, 0.6], [0.0, -1.0], [1.0, 0.6]])),
+        Shape::Plus => write!(
+            svg,
+            r#"<path d="M{:.2} {y:.2}L{:.2} {y:.2}M{x:.2} {:.2}L{x:.2} {:.2}" fill="none" stroke="{color}" stroke-width="{w:.2}"/>"#,
+            x - r,
+            x + r,
+            y - r,
+            y + r
+        ),
         Shape::Asterisk => {
             let mut d = String::new();
             for k in 0..3 {

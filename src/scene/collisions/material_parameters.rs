@@ -4,7 +4,7 @@
 
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::contact::Pair;
 use crate::physics::experiments::{Bounded, experiments};
 use crate::physics::material::{Material, combined_modulus};
@@ -170,7 +170,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         fig_l = fig_l.with(Series::new(
             "Lifshitz & Kolsky (1964)",
             vec![[l_lk * 1e6, y_lk / steel.youngs_modulus]],
-            Style::Marker,
+            Style::Symbol(Shape::Square, Fill::Filled),
             0,
         ));
         lk = Some(y_lk);

@@ -5,7 +5,7 @@
 use crate::scene::controls::Control;
 use super::common::RollingParams;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Heatmap, Series, Style};
+use crate::figure::{Axis, Figure, Fill, Heatmap, Series, Shape, Style};
 use crate::physics::rolling::{HalfDiscs, small_asymmetry_torque};
 use serde::{Deserialize, Serialize};
 
@@ -106,7 +106,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     clip(&mut moment);
     let nm: Vec<f64> = centres.iter().map(|v| v * 1e9).collect();
     let markers = |fig: Figure| {
-        fig.with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Points, 1)).with(Series::new(
+        fig.with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Symbol(Shape::Plus, Fill::Filled), 1)).with(Series::new(
             "centre of contact",
             vec![[-xi * 1e9, 0.0]],
             Style::Marker,
@@ -150,7 +150,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     .with(Series::new("sphere surface", surface, Style::Line, 1))
     .with(Series::new("substrate", vec![[xs[0] * 1e9, 0.0], [xs[200] * 1e9, 0.0]], Style::Line, 6))
     .with(Series::new("contact (a₂ | a₁)", vec![[-c.a2 * 1e9, 0.0], [c.a1 * 1e9, 0.0]], Style::Line, 0))
-    .with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Points, 1))
+    .with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Symbol(Shape::Plus, Fill::Filled), 1))
     .with(Series::new("centre of contact", vec![[-xi * 1e9, 0.0]], Style::Marker, 3));
 
     let (g1, g2) = c.release_rates(&pair);

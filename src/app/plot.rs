@@ -72,8 +72,8 @@ pub struct Look {
     pub text: f32,
     /// Whether the window uses a dark theme (for the legend's background).
     pub dark: bool,
-    /// Whether the legend is drawn (small multiples show a legend once, on
-    /// the first panel that has it).
+    /// Whether the legend is drawn (a scene shows a legend that repeats an
+    /// earlier panel's only once).
     pub legend: bool,
 }
 
@@ -659,46 +659,32 @@ fn draw_items(
                     .fill_color(c.gamma_multiply(0.3))
                     .stroke(Stroke::new(0.6 * look.line, c)),
             ),
-            Style::Points => {
-                plot_ui.points(Points::new(name, PlotPoints::from(pts)).color(c).radius(look.line * 1.5).filled(true))
-            }
-            Style::Marker => plot_ui.points(
-                Points::new(name, PlotPoints::from(pts))
-                    .color(c)
-                    .radius(look.line * 3.0)
-                    .shape(MarkerShape::Diamond)
-                    .filled(true),
-            ),
-            Style::LowerLimit => plot_ui.points(
-                Points::new(name, PlotPoints::from(pts))
-                    .color(c)
-                    .radius(look.line * 2.5)
-                    .shape(MarkerShape::Up)
-                    .filled(true),
-            ),
-            Style::UpperLimit => plot_ui.points(
-                Points::new(name, PlotPoints::from(pts))
-                    .color(c)
-                    .radius(look.line * 2.5)
-                    .shape(MarkerShape::Down)
-                    .filled(true),
-            ),
-            Style::Symbol(shape, fill) => {
-                let marker = match shape {
-                    Shape::Circle => MarkerShape::Circle,
-                    Shape::Square => MarkerShape::Square,
-                    Shape::Diamond => MarkerShape::Diamond,
-                    Shape::TriangleDown => MarkerShape::Down,
-                    Shape::TriangleUp => MarkerShape::Up,
-                    Shape::Asterisk => MarkerShape::Asterisk,
-                    Shape::Plus => MarkerShape::Plus,
+            marker_style => {
+                // Marker shape, radius in line widths, filled.
+                let (shape, radius, filled) = match marker_style {
+                    Style::Marker => (MarkerShape::Diamond, 3.0, true),
+                    Style::LowerLimit => (MarkerShape::Up, 2.5, true),
+                    Style::UpperLimit => (MarkerShape::Down, 2.5, true),
+                    Style::Symbol(shape, fill) => {
+                        let shape = match shape {
+                            Shape::Circle => MarkerShape::Circle,
+                            Shape::Square => MarkerShape::Square,
+                            Shape::Diamond => MarkerShape::Diamond,
+                            Shape::TriangleDown => MarkerShape::Down,
+                            Shape::TriangleUp => MarkerShape::Up,
+                            Shape::Asterisk => MarkerShape::Asterisk,
+                            Shape::Plus => MarkerShape::Plus,
+                        };
+                        (shape, 2.6, fill == Fill::Filled)
+                    }
+                    _ => (MarkerShape::Circle, 1.5, true),
                 };
                 plot_ui.points(
                     Points::new(name, PlotPoints::from(pts))
                         .color(c)
-                        .radius(look.line * 2.6)
-                        .shape(marker)
-                        .filled(fill == Fill::Filled),
+                        .radius(look.line * radius)
+                        .shape(shape)
+                        .filled(filled),
                 )
             }
         }

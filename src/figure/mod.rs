@@ -108,7 +108,7 @@ pub enum Shape {
 pub enum Fill {
     /// Outline only.
     Open,
-    /// Filled, with a dark outline.
+    /// Filled.
     Filled,
 }
 

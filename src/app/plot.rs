@@ -616,14 +616,15 @@ fn draw_items(
         heatmap(plot_ui, fig, h);
     }
     for s in &overlay.pinned {
-        let pts = points(fig, s);
         let c = rgb(pin_color(s, overlay), false);
-        let line = line(s.name.clone(), pts).color(c).width(look.line * 0.8);
-        plot_ui.line(if s.family.is_some() && overlay.family.is_some() {
-            line
-        } else {
-            line.style(LineStyle::Dashed { length: 9.0 })
-        });
+        // Pins of a sweep are solid in their family colour, others dashed;
+        // like the current curves, they break where the axes cannot show a
+        // point and are thinned when dashed.
+        let dashed = s.family.is_none() || overlay.family.is_none();
+        for run in runs(fig, s) {
+            let l = line(s.name.clone(), if dashed { thinned(run, px) } else { run }).color(c).width(look.line * 0.8);
+            plot_ui.line(if dashed { l.style(LineStyle::Dashed { length: 9.0 }) } else { l });
+        }
     }
     for s in &fig.series {
         let c = rgb(fig.color_of(s), stale);

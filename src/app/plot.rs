@@ -440,6 +440,10 @@ fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fi
             egui::Shape::closed_line(pts, stroke)
         }
     };
+    if let Some(corners) = shape.outline() {
+        painter.add(poly(corners.iter().map(|p| c + Vec2::new(p[0] as f32, p[1] as f32) * r).collect()));
+        return;
+    }
     match shape {
         Shape::Circle if fill == Fill::Filled => {
             painter.circle_filled(c, r, color);
@@ -447,33 +451,12 @@ fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fi
         Shape::Circle => {
             painter.circle_stroke(c, r, stroke);
         }
-        Shape::Square => {
-            painter.add(poly(vec![
-                c + Vec2::new(-r, -r),
-                c + Vec2::new(r, -r),
-                c + Vec2::new(r, r),
-                c + Vec2::new(-r, r),
-            ]));
-        }
-        Shape::Diamond => {
-            painter.add(poly(vec![
-                c + Vec2::new(0.0, -r),
-                c + Vec2::new(r, 0.0),
-                c + Vec2::new(0.0, r),
-                c + Vec2::new(-r, 0.0),
-            ]));
-        }
-        Shape::TriangleDown => {
-            painter.add(poly(vec![c + Vec2::new(-r, -0.6 * r), c + Vec2::new(r, -0.6 * r), c + Vec2::new(0.0, r)]));
-        }
-        Shape::TriangleUp => {
-            painter.add(poly(vec![c + Vec2::new(-r, 0.6 * r), c + Vec2::new(0.0, -r), c + Vec2::new(r, 0.6 * r)]));
-        }
         Shape::Plus => {
             painter.line_segment([c - Vec2::new(r, 0.0), c + Vec2::new(r, 0.0)], stroke);
             painter.line_segment([c - Vec2::new(0.0, r), c + Vec2::new(0.0, r)], stroke);
         }
-        Shape::Asterisk => {
+        // The polygonal shapes have their outline.
+        Shape::Square | Shape::Diamond | Shape::TriangleDown | Shape::TriangleUp | Shape::Asterisk => {
             for k in 0..3 {
                 let a = std::f32::consts::FRAC_PI_2 + k as f32 * std::f32::consts::PI / 3.0;
                 let d = Vec2::new(a.cos(), -a.sin()) * r;

@@ -103,6 +103,21 @@ pub enum Shape {
     Plus,
 }
 
+impl Shape {
+    /// The corners of a polygonal shape of unit radius, in screen
+    /// coordinates (y down), shared by the window and the file writers;
+    /// `None` for the circle and the stroked shapes (+, ✳).
+    pub fn outline(self) -> Option<&'static [[f64; 2]]> {
+        match self {
+            Shape::Square => Some(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]]),
+            Shape::Diamond => Some(&[[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]]),
+            Shape::TriangleDown => Some(&[[-1.0, -0.6], [1.0, -0.6], [0.0, 1.0]]),
+            Shape::TriangleUp => Some(&[[-1.0, 0.6], [0.0, -1.0], [1.0, 0.6]]),
+            Shape::Circle | Shape::Asterisk | Shape::Plus => None,
+        }
+    }
+}
+
 /// Whether a [`Style::Symbol`] is drawn open (outline) or filled.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Fill {

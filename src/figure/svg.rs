@@ -324,12 +324,12 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
         let d: Vec<String> = pts.iter().map(|q| format!("{:.2} {:.2}", x + q[0] * r, y + q[1] * r)).collect();
         format!(r#"<path d="M{}Z" {paint}/>"#, d.join("L"))
     };
+    if let Some(corners) = shape.outline() {
+        let _ = write!(svg, "{}", polygon(corners));
+        return;
+    }
     let _ = match shape {
         Shape::Circle => write!(svg, r#"<circle cx="{x:.2}" cy="{y:.2}" r="{r:.2}" {paint}/>"#),
-        Shape::Square => write!(svg, "{}", polygon(&[[-1.0, -1.0], [1.0, -1.0], [1.0, 1.0], [-1.0, 1.0]])),
-        Shape::Diamond => write!(svg, "{}", polygon(&[[0.0, -1.0], [1.0, 0.0], [0.0, 1.0], [-1.0, 0.0]])),
-        Shape::TriangleDown => write!(svg, "{}", polygon(&[[-1.0, -0.6], [1.0, -0.6], [0.0, 1.0]])),
-        Shape::TriangleUp => write!(svg, "{}", polygon(&[[-1.0, 0.6], [0.0, -1.0], [1.0, 0.6]])),
         Shape::Plus => write!(
             svg,
             r#"<path d="M{:.2} {y:.2}L{:.2} {y:.2}M{x:.2} {:.2}L{x:.2} {:.2}" fill="none" stroke="{color}" stroke-width="{w:.2}"/>"#,
@@ -338,7 +338,8 @@ fn symbol(svg: &mut String, shape: Shape, fill: Fill, p: [f64; 2], r: f64, color
             y - r,
             y + r
         ),
-        Shape::Asterisk => {
+        // The polygonal shapes have their outline.
+        Shape::Square | Shape::Diamond | Shape::TriangleDown | Shape::TriangleUp | Shape::Asterisk => {
             let mut d = String::new();
             for k in 0..3 {
                 let a = std::f64::consts::FRAC_PI_2 + k as f64 * std::f64::consts::PI / 3.0;

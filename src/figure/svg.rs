@@ -195,7 +195,10 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
                 let p = plot.at([fx0, fy1]);
                 (p[0], p[1])
             }
-            None => ((plot.x1 + 12.0 * s + bar_w).min(w - legend_w - 10.0 * s), plot.y0),
+            // Beside a square plot that left room on its right; at the right
+            // edge otherwise.
+            None if fig.square => ((plot.x1 + 12.0 * s + bar_w).min(w - legend_w - 10.0 * s), plot.y0),
+            None => (w - legend_w - 10.0 * s, plot.y0),
         };
         legend(&mut svg, &entries, [x0, y0, legend_w, legend_h], &look);
     }

@@ -484,8 +484,8 @@ impl Figure {
 }
 
 /// Where `v` sits between `lo` and `hi` on a family's colour scale, in
-/// [0, 1]; the map runs to 0.9 only, so the last member stays visible on a
-/// light background.
+/// [0, 1]; the map runs to [`FAMILY_TOP`] only, so the last member stays
+/// visible on a light background.
 pub fn family_fraction(v: f64, lo: f64, hi: f64, scale: Scale) -> f64 {
     let t = match scale {
         Scale::Log if lo > 0.0 && hi > lo => (v / lo).ln() / (hi / lo).ln(),

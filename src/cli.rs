@@ -1,8 +1,8 @@
 //! The headless harness: the same scenes as the window, from the command line.
 
-use crate::figure::{csv_bytes, png_bytes, svg_string};
 use crate::files::{FileSet, write_atomically};
 use crate::preset::{Preset, SHIPPED, resolve};
+use crate::provenance::{Stamp, figure_bytes};
 use crate::scene::{self, Progress, SceneOutput};
 use anyhow::{Context, Result, bail};
 use clap::{Parser, Subcommand};
@@ -21,14 +21,17 @@ pub struct Cli {
 /// Commands of the harness.
 #[derive(Debug, Subcommand)]
 pub enum Command {
-    /// Open the explorer window, optionally with a preset.
+    /// Open the explorer window, optionally with presets, exported figures
+    /// or a deck (presented at once).
     Gui {
-        /// Preset file or shipped preset name.
-        preset: Option<String>,
+        /// Preset files or shipped preset names, PNG/SVG/CSV files exported by
+        /// grainscope (their embedded state), or a deck file or shipped deck name.
+        files: Vec<String>,
     },
     /// Compute a preset's scene without a window.
     Run {
-        /// Preset file, or the name of a shipped preset (see `grainscope presets`).
+        /// Preset file, the name of a shipped preset (see `grainscope presets`),
+        /// or a PNG, SVG or CSV file exported by grainscope (its embedded state).
         preset: String,
         /// Override a parameter by its documented key (SI units), e.g. `--set velocity=4`.
         #[arg(long = "set", value_name = "KEY=VALUE")]
@@ -39,6 +42,41 @@ pub enum Command {
         /// Print the scalar results as one JSON object on stdout.
         #[arg(long)]
         json: bool,
+    },
+    /// Write a deck's handout: every slide's figures (PNG, SVG, CSV) in its
+    /// own folder and an index.md with titles and speaker notes.
+    Deck {
+        /// Deck file, or the name of a shipped deck (see `grainscope decks`).
+        deck: String,
+        /// Output folder.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
+    /// List the shipped decks.
+    Decks,
+    /// Play a scene's history and write its frames: numbered PNGs per figure
+    /// and an animated PNG (scenes with a time cursor).
+    Movie {
+        /// Preset file, shipped preset name or exported figure.
+        preset: String,
+        /// Override a parameter by its documented key, e.g. `--set velocity=4`.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Number of frames, from the start of the history to its end.
+        #[arg(long, default_value_t = 48, value_parser = clap::value_parser!(u32).range(2..=2000))]
+        frames: u32,
+        /// Only this figure (by id, the file stem of `run --out`).
+        #[arg(long, value_name = "ID")]
+        figure: Option<String>,
+        /// Frames per second of the animated PNG.
+        #[arg(long, default_value_t = 12, value_parser = clap::value_parser!(u16).range(1..=60))]
+        fps: u16,
+        /// Write only the numbered frames, no animated PNG.
+        #[arg(long)]
+        no_animation: bool,
+        /// Output folder.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
     },
     /// List the shipped presets.
     Presets,
@@ -110,18 +148,21 @@ pub fn apply_sets(preset: &mut Preset, sets: &[String]) -> Result<()> {
 /// Writes every figure of `out` as CSV, SVG and PNG into `dir`, plus the
 /// scalars as JSON, all or nothing: every file is rendered and staged before
 /// any is put in place, so a failure (a full disk, a read-only folder) leaves
-/// the folder as it was and no temporary file behind. Returns the files written.
-pub fn write_outputs(out: &SceneOutput, dir: &Path) -> Result<Vec<PathBuf>> {
+/// the folder as it was and no temporary file behind. With the `preset` that
+/// produced `out`, the figures show its time cursor and every file carries
+/// the preset (see [`crate::provenance`]). Returns the files written.
+pub fn write_outputs(out: &SceneOutput, preset: Option<&Preset>, dir: &Path) -> Result<Vec<PathBuf>> {
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
+    let stamp = preset.map(Stamp::of).transpose()?;
+    let figures = preset.map_or_else(|| out.figures.clone(), |p| p.scene.exported_figures(out));
     let mut set = FileSet::new();
     let staged = (|| -> Result<()> {
-        for fig in &out.figures {
-            let csv = csv_bytes(fig).with_context(|| format!("cannot write the data of figure '{}'", fig.id))?;
-            set.stage(&dir.join(format!("{}.csv", fig.id)), &csv)?;
-            let svg = svg_string(fig, crate::figure::EXPORT_SIZE)?;
-            set.stage(&dir.join(format!("{}.svg", fig.id)), svg.as_bytes())?;
-            let png = png_bytes(fig, crate::figure::EXPORT_SIZE)?;
-            set.stage(&dir.join(format!("{}.png", fig.id)), &png)?;
+        for fig in &figures {
+            for ext in ["csv", "svg", "png"] {
+                let bytes = figure_bytes(fig, ext, crate::figure::EXPORT_SIZE, stamp.as_ref())
+                    .with_context(|| format!("cannot write figure '{}' as {ext}", fig.id))?;
+                set.stage(&dir.join(format!("{}.{ext}", fig.id)), &bytes)?;
+            }
         }
         let text = serde_json::to_string_pretty(&out.scalars_json())?;
         set.stage(&dir.join("scalars.json"), text.as_bytes())?;
@@ -178,12 +219,38 @@ pub fn run(command: Command) -> Result<()> {
                 tell(format_args!("warning: {w}"));
             }
             if let Some(dir) = &out {
-                let files = write_outputs(&result, dir)?;
+                let files = write_outputs(&result, Some(&p), dir)?;
                 if !json {
                     tell(format_args!("wrote {} files to {}", files.len(), dir.display()));
                 }
             }
             if json { say(serde_json::to_string(&result.scalars_json())?) } else { print_scalars(&result) }
+        }
+        Command::Deck { deck, out } => {
+            let loaded = crate::deck::resolve(&deck)?;
+            let n = loaded.deck.slides.len();
+            let files =
+                crate::handout::deck(&loaded, &out, &|i, title| tell(format_args!("slide {}/{n}: {title}", i + 1)))?;
+            say(format_args!(
+                "wrote {} files to {} (index: {})",
+                files.len(),
+                out.display(),
+                out.join("index.md").display()
+            ))
+        }
+        Command::Decks => {
+            for (file, text) in crate::deck::SHIPPED {
+                let d = crate::deck::Deck::from_ron(text, file, None)?;
+                say(format_args!("{:<30} {:>3} slides  {}", file, d.deck.slides.len(), d.deck.title))?;
+            }
+            Ok(())
+        }
+        Command::Movie { preset, set, frames, figure, fps, no_animation, out } => {
+            let mut p = resolve(&preset)?;
+            apply_sets(&mut p, &set)?;
+            let files =
+                crate::handout::movie(&p, frames as usize, figure.as_deref(), !no_animation, fps, &out, &|| false)?;
+            say(format_args!("wrote {} files to {}", files.len(), out.display()))
         }
         Command::Presets => {
             for (file, text) in SHIPPED {
@@ -283,7 +350,7 @@ fn fit_command(
     });
     if let Some(dir) = out {
         let output = scene::collisions::fit::output(params, &measurements, &fit)?;
-        write_outputs(&output, dir)?;
+        write_outputs(&output, Some(&preset), dir)?;
     }
     if json { say(serde_json::to_string(&result)?) } else { say(serde_json::to_string_pretty(&result)?) }
 }
@@ -341,10 +408,10 @@ fn reproduce(dir: &Path, quick: bool) -> Result<()> {
     ] {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;
-        write_outputs(&out, &dir.join(name))?;
+        write_outputs(&out, Some(&p), &dir.join(name))?;
     }
     for (name, out) in &monte_carlo.figures {
-        write_outputs(out, &dir.join(name))?;
+        write_outputs(out, None, &dir.join(name))?;
     }
     let failures = checks.iter().filter(|c| !c.pass() && !c.known).count();
     // A reader that went away (`| head`) must not hide a failed comparison.

@@ -10,11 +10,14 @@
 #[cfg(feature = "gui")]
 pub mod app;
 pub mod cli;
+pub mod deck;
 pub mod figure;
 pub mod files;
+pub mod handout;
 pub mod measurements;
 pub mod physics;
 pub mod preset;
+pub mod provenance;
 pub mod reproduce;
 pub mod scene;
 pub mod session;

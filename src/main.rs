@@ -9,8 +9,8 @@ use std::process::ExitCode;
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
-        None => open_window(None),
-        Some(Command::Gui { preset }) => open_window(preset),
+        None => open_window(Vec::new()),
+        Some(Command::Gui { files }) => open_window(files),
         Some(command) => grainscope::cli::run(command),
     }
     .and_then(|()| Ok(std::io::stdout().flush()?));
@@ -27,13 +27,13 @@ fn main() -> ExitCode {
 
 /// Opens the explorer window.
 #[cfg(feature = "gui")]
-fn open_window(preset: Option<String>) -> anyhow::Result<()> {
-    grainscope::app::run(preset)
+fn open_window(files: Vec<String>) -> anyhow::Result<()> {
+    grainscope::app::run(files)
 }
 
 /// Without the `gui` feature there is no window: say so and point to the commands.
 #[cfg(not(feature = "gui"))]
-fn open_window(_preset: Option<String>) -> anyhow::Result<()> {
+fn open_window(_files: Vec<String>) -> anyhow::Result<()> {
     anyhow::bail!(
         "this grainscope was built without the window (feature `gui`); run `grainscope --help` for the commands"
     )

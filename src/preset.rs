@@ -68,6 +68,9 @@ pub enum PresetError {
     /// Serialisation failed.
     #[error("cannot serialise preset: {0}")]
     Serialise(String),
+    /// An exported figure or data file carries no usable state.
+    #[error(transparent)]
+    Embedded(Box<crate::provenance::ProvenanceError>),
 }
 
 impl Preset {
@@ -208,10 +211,14 @@ pub const SHIPPED: [(&str, &str); 50] = [
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or
-/// without `.ron`).
+/// without `.ron`). A PNG, SVG or CSV file exported by grainscope stands for
+/// the preset embedded in it (see [`crate::provenance`]).
 pub fn resolve(name: &str) -> Result<Preset, PresetError> {
     let path = Path::new(name);
     if path.exists() {
+        if crate::provenance::may_carry_state(path) {
+            return crate::provenance::read(path).map_err(|e| PresetError::Embedded(Box::new(e)));
+        }
         return Preset::load(path);
     }
     let stem = name.trim_end_matches(".ron");

@@ -295,3 +295,169 @@ fn switching_scenes_and_themes_never_panics() {
         h.run_steps(2);
     }
 }
+
+fn velocity(h: &Harness<'static, GrainscopeApp>) -> f64 {
+    let mut p = h.state().params().clone();
+    p.controls()
+        .into_iter()
+        .find_map(|c| match (c.key, c.kind) {
+            ("velocity", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
+            _ => None,
+        })
+        .unwrap_or(f64::NAN)
+}
+
+/// Runs frames until the open scene's result is ready.
+fn settle(h: &mut Harness<'static, GrainscopeApp>) {
+    for _ in 0..600 {
+        h.step();
+        if !h.state().busy() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(5));
+    }
+    h.run_steps(2);
+}
+
+fn scene_id(h: &Harness<'static, GrainscopeApp>) -> &'static str {
+    h.state().params().info().id
+}
+
+const DECK: &str = r#"(
+    title: "Test lecture",
+    slides: [
+        (title: "Slow ice", notes: "Notes of the first slide.", preset: Some("ice-bounce-8ms"), set: ["velocity=4"], highlight: ["velocity"]),
+        (title: "Restitution", notes: "Notes of the second slide.", preset: Some("restitution-ice"), enlarge: Some("restitution")),
+        (title: "Adhesion", notes: "Notes of the third slide.", preset: Some("adhesion-ice-monomers")),
+    ],
+)"#;
+
+/// A deck is presented with the keys a clicker sends: forward, back, jump,
+/// notes, leave; coming back to a slide shows it as the deck defines it.
+#[test]
+fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
+    let deck = grainscope::deck::Deck::from_ron(DECK, "test", None).expect("deck");
+    let mut h = harness_sized(1024.0, 768.0);
+    settle(&mut h);
+    h.state_mut().present(deck, 0);
+    settle(&mut h);
+    assert_eq!(scene_id(&h), "hysteresis");
+    assert_eq!(velocity(&h), 4.0);
+    assert!(h.state().session.lecture, "presenting uses the lecture look");
+    h.get_by_label_contains("Slow ice");
+    // The highlighted control is at hand beside the plots, and live.
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(6.0);
+    settle(&mut h);
+    assert_eq!(velocity(&h), 6.0);
+    h.key_press(egui::Key::ArrowRight);
+    settle(&mut h);
+    assert_eq!(scene_id(&h), "restitution");
+    h.key_press(egui::Key::PageUp);
+    settle(&mut h);
+    assert_eq!(scene_id(&h), "hysteresis");
+    assert_eq!(velocity(&h), 4.0, "the slide as the deck defines it");
+    h.key_press(egui::Key::Space);
+    h.key_press(egui::Key::Space);
+    settle(&mut h);
+    assert_eq!(scene_id(&h), "adhesion");
+    h.key_press(egui::Key::Num2);
+    settle(&mut h);
+    assert_eq!(scene_id(&h), "restitution");
+    h.key_press(egui::Key::End);
+    settle(&mut h);
+    assert_eq!(h.state().presenting().map(|p| p.index), Some(2));
+    h.key_press(egui::Key::ArrowRight);
+    settle(&mut h);
+    assert_eq!(h.state().presenting().map(|p| p.index), Some(2), "stays at the last slide");
+    assert!(h.query_by_label_contains("Notes of the third slide").is_none());
+    h.key_press(egui::Key::N);
+    settle(&mut h);
+    h.get_by_label_contains("Notes of the third slide");
+    h.key_press(egui::Key::Escape);
+    settle(&mut h);
+    assert!(h.state().presenting().is_none());
+    assert!(!h.state().session.lecture, "leaving restores the look from before");
+}
+
+/// A slider drag is one undo step: Ctrl+Z restores the value from before
+/// the drag, Ctrl+Shift+Z the dragged one.
+#[test]
+fn undo_restores_the_value_from_before_a_slider_drag() {
+    let mut h = harness();
+    h.run();
+    assert_eq!(velocity(&h), 8.0);
+    let rect = h.get_by_role_and_label(Role::Slider, "impact velocity v").rect();
+    let y = rect.center().y;
+    h.drag_at(egui::pos2(rect.left() + 0.7 * rect.width(), y));
+    h.run();
+    for k in 1..=5 {
+        h.hover_at(egui::pos2(rect.left() + (0.7 - 0.1 * k as f32) * rect.width(), y));
+        h.run();
+    }
+    h.drop_at(egui::pos2(rect.left() + 0.2 * rect.width(), y));
+    h.run();
+    let dragged = velocity(&h);
+    assert!(dragged < 8.0, "the drag moved the slider: {dragged}");
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::Z);
+    h.run();
+    assert_eq!(velocity(&h), 8.0, "one drag, one step");
+    h.key_press_modifiers(egui::Modifiers::COMMAND | egui::Modifiers::SHIFT, egui::Key::Z);
+    h.run();
+    assert_eq!(velocity(&h), dragged);
+}
+
+/// Play advances the time cursor without recomputing the model; pause
+/// stops it; the shortcut list opens with F1.
+#[test]
+fn play_advances_the_time_cursor_and_pause_stops_it() {
+    let mut h = harness();
+    h.run();
+    let before = h.state().output().map(|o| o as *const _);
+    let t0 = h.state().time().expect("the collision has a time cursor");
+    h.key_press(egui::Key::Space);
+    h.run_steps(3);
+    h.get_by_label("❚❚ Pause");
+    assert!(h.state().playing());
+    let t1 = h.state().time().expect("time");
+    assert!(t1 > t0, "{t0} → {t1}");
+    assert_eq!(before, h.state().output().map(|o| o as *const _), "playing never recomputes");
+    h.get_by_label("❚❚ Pause").click();
+    h.run_steps(3);
+    let t2 = h.state().time().expect("time");
+    h.run_steps(10);
+    assert!(!h.state().playing());
+    assert_eq!(h.state().time(), Some(t2));
+    h.key_press(egui::Key::Period);
+    h.run();
+    assert!((h.state().time().expect("time") - (t2 + 0.01)).abs() < 1e-9);
+    h.key_press(egui::Key::F1);
+    h.run();
+    h.get_by_label("Keyboard shortcuts");
+    h.get_by_label_contains("undo the last parameter change");
+}
+
+/// A figure exported from the window reopens its state when opened (or dropped).
+#[test]
+fn an_exported_figure_reopens_its_state() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let mut h = harness();
+    h.run();
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(3.0);
+    h.run();
+    let exported = h.state().params().clone();
+    h.state_mut().session.export_dir = dir.path().display().to_string();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::E);
+    h.run();
+    let png = dir.path().join("hysteresis-energy-budget.png");
+    assert!(png.exists(), "{}", h.state().status());
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(5.0);
+    h.run();
+    h.state_mut().open_file(&png);
+    h.run();
+    assert_eq!(h.state().params(), &exported);
+    let plain = dir.path().join("plain.png");
+    std::fs::write(&plain, b"not a png").expect("write");
+    h.state_mut().open_file(&plain);
+    h.run();
+    assert_eq!(h.state().params(), &exported, "a file without state changes nothing");
+}

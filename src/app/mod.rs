@@ -2,11 +2,17 @@
 //! physics happens in [`crate::scene`], inline for cheap scenes and on a
 //! worker thread for heavy ones.
 
+mod history;
+mod playback;
 mod plot;
+mod presenter;
+pub mod shortcuts;
 mod sketch;
 mod worker;
 
 pub use worker::Worker;
+
+use shortcuts::{Action, Mode};
 
 use crate::figure::{self, Figure, Series, Style, View};
 use crate::preset::{Preset, resolve};
@@ -33,17 +39,20 @@ pub fn session_path() -> Option<PathBuf> {
     }
 }
 
-/// Opens the explorer window, optionally with a preset. A preset that cannot
-/// be loaded does not stop the window: it opens with the restored session and
-/// shows why the preset was not loaded.
-pub fn run(preset: Option<String>) -> anyhow::Result<()> {
-    let initial = preset.map(|p| {
-        resolve(&p).map_err(|e| {
-            let message = format!("preset not loaded: {e}");
-            let _ = writeln!(std::io::stderr(), "error: {message}");
-            message
+/// Opens the explorer window with `files`: presets (files or shipped
+/// names), figures exported by grainscope (their embedded state) or a deck
+/// (presented at once). A file that cannot be loaded does not stop the
+/// window: it opens with the restored session and shows why.
+pub fn run(files: Vec<String>) -> anyhow::Result<()> {
+    let initial: Vec<Result<Opened, String>> = files
+        .iter()
+        .map(|f| {
+            open_named(f).map_err(|message| {
+                let _ = writeln!(std::io::stderr(), "error: {message}");
+                message
+            })
         })
-    });
+        .collect();
     let options = eframe::NativeOptions {
         viewport: egui::ViewportBuilder::default()
             .with_inner_size([1440.0, 920.0])
@@ -59,15 +68,40 @@ pub fn run(preset: Option<String>) -> anyhow::Result<()> {
             if let Some(path) = session_path() {
                 app.open_session(path, cc.storage);
             }
-            match initial {
-                Some(Ok(p)) => app.apply_preset(p, "command line"),
-                Some(Err(message)) => app.notify(message),
-                None => {}
+            for (opened, name) in initial.into_iter().zip(&files) {
+                match opened {
+                    Ok(Opened::Preset(p)) => app.apply_preset(*p, name),
+                    Ok(Opened::Deck(d)) => app.present(d, 0),
+                    Err(message) => app.notify(message),
+                }
             }
             Ok(Box::new(app))
         }),
     )
     .map_err(|e| anyhow::anyhow!("cannot open the window: {e}"))
+}
+
+/// What a file or name given to the window stands for.
+pub enum Opened {
+    /// A scene's state.
+    Preset(Box<Preset>),
+    /// A lecture.
+    Deck(crate::deck::LoadedDeck),
+}
+
+/// Resolves a name as the window opens it: a preset (file, shipped name or
+/// exported figure), else a deck (file or shipped name).
+pub fn open_named(name: &str) -> Result<Opened, String> {
+    match resolve(name) {
+        Ok(p) => Ok(Opened::Preset(Box::new(p))),
+        Err(preset_error) => match crate::deck::resolve(name) {
+            Ok(d) => Ok(Opened::Deck(d)),
+            Err(crate::deck::DeckError::Read { .. }) | Err(crate::deck::DeckError::Syntax { .. }) => {
+                Err(format!("preset not loaded: {preset_error}"))
+            }
+            Err(deck_error) => Err(format!("deck not loaded: {deck_error}")),
+        },
+    }
 }
 
 /// Results of the worker.
@@ -79,6 +113,7 @@ enum Job {
 /// What a file dialog returned.
 enum Dialog {
     Open(Option<PathBuf>),
+    Movie(Result<Vec<PathBuf>, String>),
     Save(Option<PathBuf>),
     Export(Option<PathBuf>, Box<Figure>),
     ImportData(Option<PathBuf>),
@@ -131,6 +166,21 @@ pub struct GrainscopeApp {
     session_path: Option<PathBuf>,
     /// Whether saving the session failed already (said once).
     session_save_failed: bool,
+    /// Playing the open scene's history.
+    playback: playback::Playback,
+    /// Scenes (by index) whose optional time-cursor marks are shown: those
+    /// played or scrubbed.
+    timeline_shown: std::collections::HashSet<usize>,
+    /// Undo and redo of parameter changes.
+    history: history::History,
+    /// Whether the list of keyboard shortcuts is shown.
+    help: bool,
+    /// The deck being presented.
+    presenter: Option<presenter::Presenter>,
+    /// The deck being built.
+    deck_editor: presenter::DeckEditor,
+    /// Whether a movie is being written.
+    movie_running: bool,
 }
 
 impl GrainscopeApp {
@@ -164,6 +214,13 @@ impl GrainscopeApp {
             control_notice: None,
             session_path: None,
             session_save_failed: false,
+            playback: playback::Playback::default(),
+            timeline_shown: Default::default(),
+            history: history::History::default(),
+            help: false,
+            presenter: None,
+            deck_editor: presenter::DeckEditor::default(),
+            movie_running: false,
         }
     }
 
@@ -240,6 +297,9 @@ impl GrainscopeApp {
 
     /// Opens scene `i` of [`SCENES`].
     fn open_scene(&mut self, i: usize) {
+        if self.session.index() != i {
+            self.playback.playing = false;
+        }
         self.session.scene = SCENES[i].id.to_string();
         self.control_notice = None;
     }
@@ -303,10 +363,30 @@ impl GrainscopeApp {
         }
     }
 
-    fn load_preset_file(&mut self, path: &Path) {
+    /// Opens a file as a user means it: a preset or a deck (.ron), a figure
+    /// exported by grainscope (its embedded state), or measurements (a CSV
+    /// file without embedded state). A file that cannot be used changes
+    /// nothing and says why.
+    pub fn open_file(&mut self, path: &Path) {
+        let shown = path.display().to_string();
+        let is_csv = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
+        if crate::provenance::may_carry_state(path) {
+            match crate::provenance::read(path) {
+                Ok(p) => self.apply_preset(p, &shown),
+                Err(crate::provenance::ProvenanceError::Missing(_)) if is_csv => self.import_data(path),
+                Err(e) => self.error = Some(format!("nothing changed: {e}")),
+            }
+            return;
+        }
         match Preset::load(path) {
-            Ok(p) => self.apply_preset(p, &path.display().to_string()),
-            Err(e) => self.error = Some(format!("preset not loaded, nothing changed: {e}")),
+            Ok(p) => self.apply_preset(p, &shown),
+            Err(preset_error) => match crate::deck::Deck::load(path) {
+                Ok(d) => self.present(d, 0),
+                Err(crate::deck::DeckError::Syntax { .. }) | Err(crate::deck::DeckError::Read { .. }) => {
+                    self.error = Some(format!("preset not loaded, nothing changed: {preset_error}"))
+                }
+                Err(e) => self.error = Some(format!("deck not loaded, nothing changed: {e}")),
+            },
         }
     }
 
@@ -376,7 +456,20 @@ impl GrainscopeApp {
         }
         while let Ok(d) = self.dialogs.1.try_recv() {
             match d {
-                Dialog::Open(Some(p)) => self.load_preset_file(&p),
+                Dialog::Open(Some(p)) => self.open_file(&p),
+                Dialog::Movie(result) => {
+                    self.movie_running = false;
+                    match result {
+                        Ok(files) => {
+                            self.status = format!(
+                                "wrote the movie: {} files, {}",
+                                files.len(),
+                                files.last().map_or(String::new(), |f| f.display().to_string())
+                            )
+                        }
+                        Err(e) => self.error = Some(format!("movie not written: {e}")),
+                    }
+                }
                 Dialog::Save(Some(p)) => self.save_preset_file(&p),
                 Dialog::Export(Some(p), fig) => self.export(&fig, &p),
                 Dialog::ImportData(Some(p)) => self.import_data(&p),
@@ -390,11 +483,7 @@ impl GrainscopeApp {
             i.raw.dropped_files.iter().map(|f| f.path().to_path_buf()).filter(|p| !p.as_os_str().is_empty()).collect()
         });
         for p in dropped {
-            if p.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv")) {
-                self.import_data(&p);
-            } else {
-                self.load_preset_file(&p);
-            }
+            self.open_file(&p);
         }
         if self.worker.busy() {
             // A long run offers intermediate results: draw them as they come.
@@ -407,21 +496,87 @@ impl GrainscopeApp {
         }
     }
 
+    /// Writes `fig` to `path` (PNG, SVG or CSV by its extension), carrying
+    /// the open scene's state so that the file reopens it.
     fn export(&mut self, fig: &Figure, path: &Path) {
         let ext = path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase();
-        let result = match ext.as_str() {
-            "png" => figure::write_png(fig, path, figure::EXPORT_SIZE),
-            "svg" => figure::write_svg(fig, path, figure::EXPORT_SIZE),
-            "csv" => figure::write_csv(fig, path),
-            _ => {
-                self.error = Some(format!("cannot export to {}: use a .png, .svg or .csv file name", path.display()));
+        if !matches!(ext.as_str(), "png" | "svg" | "csv") {
+            self.error = Some(format!("cannot export to {}: use a .png, .svg or .csv file name", path.display()));
+            return;
+        }
+        let preset = self.current_preset();
+        let stamp = match crate::provenance::Stamp::of(&preset) {
+            Ok(s) => s,
+            Err(e) => {
+                self.error = Some(format!("export failed: {e}"));
                 return;
             }
         };
+        let result = crate::provenance::figure_bytes(fig, &ext, figure::EXPORT_SIZE, Some(&stamp))
+            .map_err(|e| e.to_string())
+            .and_then(|bytes| crate::files::write_atomically(path, &bytes).map_err(|e| e.to_string()));
         match result {
             Ok(()) => self.status = format!("exported {}", path.display()),
             Err(e) => self.error = Some(format!("export failed, earlier files untouched: {e}")),
         }
+    }
+
+    /// The open scene's state as a preset.
+    pub fn current_preset(&self) -> Preset {
+        let params = self.params().clone();
+        Preset { title: params.info().title.to_string(), description: String::new(), scene: params }
+    }
+
+    /// The open scene's figures as drawn: with the time cursor's marks when
+    /// they are shown.
+    fn drawn_figures(&self, out: &SceneOutput) -> Vec<Figure> {
+        let mut figures = out.figures.clone();
+        if let Some(c) = self.shown_cursor(out) {
+            c.apply(&mut figures);
+        }
+        figures
+    }
+
+    /// The open scene's time cursor over `out` when its marks are shown.
+    fn shown_cursor(&self, out: &SceneOutput) -> Option<scene::Cursor> {
+        self.params().cursor(out).filter(|c| !c.optional || self.timeline_shown.contains(&self.session.index()))
+    }
+
+    /// Exports every figure of the open scene (PNG, SVG, CSV) to the export folder.
+    fn export_all(&mut self) {
+        let Some(out) = self.outputs[self.session.index()].clone() else { return };
+        let dir = PathBuf::from(&self.session.export_dir);
+        if let Err(e) = std::fs::create_dir_all(&dir) {
+            self.error = Some(format!("cannot create export folder {}: {e}", dir.display()));
+            return;
+        }
+        let id = self.params().info().id;
+        for fig in self.drawn_figures(&out) {
+            for ext in ["png", "svg", "csv"] {
+                self.export(&fig, &dir.join(format!("{id}-{}.{ext}", fig.id)));
+            }
+        }
+        if self.error.is_none() {
+            self.status = format!("exported {} figures to {}", out.figures.len(), dir.display());
+        }
+    }
+
+    /// Writes the open scene's played history as frames (and an animated
+    /// PNG) into the export folder, on a thread of its own.
+    fn export_movie(&mut self) {
+        if self.movie_running {
+            return;
+        }
+        let preset = self.current_preset();
+        let dir = PathBuf::from(&self.session.export_dir).join(format!("{}-movie", preset.scene.info().id));
+        let tx = self.dialogs.0.clone();
+        self.movie_running = true;
+        self.status = format!("writing the movie to {}…", dir.display());
+        std::thread::spawn(move || {
+            let result =
+                crate::handout::movie(&preset, 48, None, true, 12, &dir, &|| false).map_err(|e| format!("{e:#}"));
+            let _ = tx.send(Dialog::Movie(result));
+        });
     }
 
     fn spawn_dialog(&self, make: impl FnOnce() -> Dialog + Send + 'static) {
@@ -494,7 +649,12 @@ impl GrainscopeApp {
         self.poll(&ctx);
         self.apply_look(&ctx);
         self.keys(&ctx);
-        egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
+        self.play(&ctx);
+        if self.presenter.is_some() {
+            egui::Panel::top("top").show(ui, |ui| self.presenter_bar(ui));
+        } else {
+            egui::Panel::top("top").show(ui, |ui| self.top_bar(ui));
+        }
         if !self.notices.is_empty() {
             egui::Panel::top("notices").show(ui, |ui| self.notices_bar(ui));
         }
@@ -502,6 +662,9 @@ impl GrainscopeApp {
         // or went wrong, so that the plots keep the bottom of the screen.
         if !self.session.lecture || self.worker.busy() || self.error.is_some() {
             egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
+        }
+        if self.presenter.as_ref().is_some_and(|p| p.notes) {
+            egui::Panel::bottom("notes").show(ui, |ui| self.notes_panel(ui));
         }
         if !self.session.lecture {
             egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
@@ -527,34 +690,218 @@ impl GrainscopeApp {
                 });
             self.lecture_params = open;
         }
+        self.deck_editor(&ctx);
+        if self.help {
+            self.help_overlay(&ctx);
+        }
+        // A whole slider drag is one step of the history.
+        if !ctx.input(|i| i.pointer.any_down()) {
+            let now = self.params().clone();
+            self.history.observe(&self.session.scene, &now);
+        }
     }
 
-    /// Keys a presenter presses: Page Up / Page Down move between scenes (in
-    /// navigator order), F5 toggles lecture mode, Escape leaves it.
+    /// The keyboard shortcuts (see [`shortcuts::SHORTCUTS`]); none while a
+    /// text field has the keyboard.
     fn keys(&mut self, ctx: &egui::Context) {
         if ctx.egui_wants_keyboard_input() {
             return;
         }
-        let (next, prev, f5, esc) = ctx.input(|i| {
-            (
-                i.key_pressed(egui::Key::PageDown),
-                i.key_pressed(egui::Key::PageUp),
-                i.key_pressed(egui::Key::F5),
-                i.key_pressed(egui::Key::Escape),
-            )
-        });
-        if next {
-            self.step_scene(1);
+        let mode = if self.presenter.is_some() { Mode::Presenter } else { Mode::Explorer };
+        for action in shortcuts::pressed(ctx, mode) {
+            self.act(action);
         }
-        if prev {
-            self.step_scene(-1);
+    }
+
+    /// Does what a shortcut (or its button) asks.
+    pub fn act(&mut self, action: Action) {
+        match action {
+            Action::Help => self.help = !self.help,
+            Action::Undo => self.undo(),
+            Action::Redo => self.redo(),
+            Action::PlayPause => self.toggle_play(),
+            Action::StepForward => self.step_time(1.0),
+            Action::StepBack => self.step_time(-1.0),
+            Action::Rewind => self.set_time(0.0),
+            Action::NextScene => self.step_scene(1),
+            Action::PreviousScene => self.step_scene(-1),
+            Action::ToggleLecture => self.session.lecture = !self.session.lecture,
+            Action::Leave => {
+                if self.help {
+                    self.help = false;
+                } else if self.presenter.is_some() {
+                    self.stop_presenting();
+                } else {
+                    self.session.lecture = false;
+                }
+            }
+            Action::ResetScene => self.reset_scene(),
+            Action::Export => self.export_all(),
+            Action::NextSlide => self.step_slide(1),
+            Action::PreviousSlide => self.step_slide(-1),
+            Action::FirstSlide => self.step_slide(isize::MIN / 2),
+            Action::LastSlide => self.step_slide(isize::MAX / 2),
+            Action::Slide(n) => {
+                if self.presenter.as_ref().is_some_and(|p| n < p.deck.deck.slides.len()) {
+                    self.go_to_slide(n);
+                }
+            }
+            Action::ToggleNotes => self.toggle_notes(),
+            Action::ResetSlide => self.reset_slide(),
         }
-        if f5 {
-            self.session.lecture = !self.session.lecture;
+    }
+
+    /// Whether the open scene's history is playing.
+    pub fn playing(&self) -> bool {
+        self.playback.playing
+    }
+
+    /// The open scene's time cursor (fraction of its history), if it has one.
+    pub fn time(&self) -> Option<f64> {
+        self.params().clone().cursor_mut().map(|c| *c)
+    }
+
+    fn set_time(&mut self, fraction: f64) {
+        let i = self.session.index();
+        if let Some(c) = self.params_mut().cursor_mut() {
+            *c = fraction.clamp(0.0, 1.0);
+            self.timeline_shown.insert(i);
         }
-        if esc && self.session.lecture {
-            self.session.lecture = false;
+    }
+
+    fn toggle_play(&mut self) {
+        let i = self.session.index();
+        let mut playback = self.playback.clone();
+        if let Some(c) = self.params_mut().cursor_mut() {
+            playback.toggle(c);
+            self.timeline_shown.insert(i);
+            self.status = if playback.playing { "playing (Space pauses)".into() } else { "paused".into() };
+        } else {
+            self.status = "this scene has no history to play".into();
         }
+        self.playback = playback;
+    }
+
+    fn step_time(&mut self, by: f64) {
+        self.playback.playing = false;
+        if let Some(t) = self.time() {
+            self.set_time(playback::step(t, by));
+        }
+    }
+
+    /// Advances a playing history by the frame's time.
+    fn play(&mut self, ctx: &egui::Context) {
+        if !self.playback.playing {
+            return;
+        }
+        let dt = f64::from(ctx.input(|i| i.stable_dt));
+        let mut playback = self.playback.clone();
+        match self.params_mut().cursor_mut() {
+            Some(c) => *c = playback.advance(*c, dt),
+            None => playback.playing = false,
+        }
+        self.playback = playback;
+        ctx.request_repaint();
+    }
+
+    /// Undoes the last parameter change (opening the scene it was made in).
+    pub fn undo(&mut self) {
+        let params = self.session.params.clone();
+        let defaults = self.defaults.clone();
+        let current = |id: &str| {
+            params.get(id).cloned().unwrap_or_else(|| {
+                defaults.iter().find(|d| d.info().id == id).cloned().unwrap_or_else(|| defaults[0].clone())
+            })
+        };
+        match self.history.undo(current) {
+            Some(step) => self.restore(step, "undone"),
+            None => self.status = "nothing to undo".into(),
+        }
+    }
+
+    /// Redoes the last undone change.
+    pub fn redo(&mut self) {
+        let params = self.session.params.clone();
+        let defaults = self.defaults.clone();
+        let current = |id: &str| {
+            params.get(id).cloned().unwrap_or_else(|| {
+                defaults.iter().find(|d| d.info().id == id).cloned().unwrap_or_else(|| defaults[0].clone())
+            })
+        };
+        match self.history.redo(current) {
+            Some(step) => self.restore(step, "redone"),
+            None => self.status = "nothing to redo".into(),
+        }
+    }
+
+    fn restore(&mut self, step: history::Step, what: &str) {
+        let mut last = None;
+        for (id, p) in step {
+            last = SCENES.iter().position(|s| s.id == id);
+            self.session.params.insert(id, p);
+        }
+        if let Some(i) = last {
+            self.open_scene(i);
+        }
+        let (u, r) = self.history.depth();
+        self.status = format!("{what} ({u} more to undo, {r} to redo)");
+        self.control_notice = None;
+    }
+
+    /// Resets the open scene's parameters to their defaults (one undo step).
+    pub fn reset_scene(&mut self) {
+        let default = self.defaults[self.session.index()].clone();
+        *self.params_mut() = default;
+        self.control_notice = None;
+        self.status = "scene reset to its defaults (Ctrl+Z undoes)".into();
+    }
+
+    /// Resets every scene's parameters to their defaults (one undo step).
+    pub fn reset_all(&mut self) {
+        let before: history::Step = SCENES
+            .iter()
+            .enumerate()
+            .filter(|(i, s)| self.session.params.get(s.id).is_some_and(|p| p != &self.defaults[*i]))
+            .map(|(_, s)| (s.id.to_string(), self.session.params[s.id].clone()))
+            .collect();
+        let after: history::Step =
+            SCENES.iter().zip(&self.defaults).map(|(s, d)| (s.id.to_string(), d.clone())).collect();
+        let n = before.len();
+        self.history.record(before, &after);
+        self.session.params = after.into_iter().collect();
+        self.control_notice = None;
+        self.status = format!("reset {n} scenes to their defaults (Ctrl+Z undoes)");
+    }
+
+    /// The list of keyboard shortcuts, over everything.
+    fn help_overlay(&mut self, ctx: &egui::Context) {
+        let mut open = true;
+        egui::Window::new("Keyboard shortcuts")
+            .open(&mut open)
+            .collapsible(false)
+            .anchor(egui::Align2::CENTER_CENTER, [0.0, 0.0])
+            .show(ctx, |ui| {
+                egui::ScrollArea::vertical().max_height(ctx.content_rect().height() * 0.8).show(ui, |ui| {
+                    for mode in [Mode::Anywhere, Mode::Explorer, Mode::Presenter] {
+                        ui.label(egui::RichText::new(mode.heading()).strong());
+                        egui::Grid::new(("shortcuts", mode.heading())).num_columns(2).striped(true).show(ui, |ui| {
+                            for s in shortcuts::SHORTCUTS.iter().filter(|s| s.mode == mode) {
+                                let keys: Vec<String> = s.keys.iter().map(|k| k.text()).collect();
+                                let keys = if matches!(s.action, Action::Slide(_)) {
+                                    "1 … 9".to_string()
+                                } else {
+                                    keys.join(", ")
+                                };
+                                ui.label(egui::RichText::new(keys).monospace());
+                                ui.label(s.text);
+                                ui.end_row();
+                            }
+                        });
+                        ui.add_space(6.0);
+                    }
+                });
+            });
+        self.help = self.help && open;
     }
 
     /// Opens the scene `by` places after the open one in navigator order.
@@ -649,19 +996,27 @@ impl GrainscopeApp {
     fn top_bar(&mut self, ui: &mut egui::Ui) {
         if self.session.lecture {
             ui.horizontal(|ui| {
-                self.navigator(ui, 380.0);
+                self.navigator(ui, 320.0);
                 ui.separator();
                 ui.toggle_value(&mut self.lecture_params, "Parameters")
                     .on_hover_text("show the parameters over the plots");
                 ui.menu_button("Presets", |ui| self.presets_menu(ui));
+                ui.menu_button("Present", |ui| self.decks_menu(ui));
                 ui.separator();
                 ui.checkbox(&mut self.session.lecture, "Lecture mode").on_hover_text("F5 toggles, Esc leaves");
+                if ui.button("?").on_hover_text("keyboard shortcuts (F1)").clicked() {
+                    self.help = !self.help;
+                }
             });
             // The scene's headline result (e.g. e = 0.657, bounces) stays on
-            // screen while the parameters are hidden.
-            if !self.lecture_params {
-                self.headline(ui);
-            }
+            // screen while the parameters are hidden, with the transport of
+            // a history beside it.
+            ui.horizontal(|ui| {
+                if !self.lecture_params {
+                    self.headline(ui);
+                }
+                self.transport_row(ui);
+            });
             return;
         }
         ui.horizontal_wrapped(|ui| {
@@ -685,7 +1040,7 @@ impl GrainscopeApp {
             );
             if ui.button("Load").clicked() {
                 let p = PathBuf::from(&self.session.preset_path);
-                self.load_preset_file(&p);
+                self.open_file(&p);
             }
             if ui.button("Save").clicked() {
                 let p = PathBuf::from(&self.session.preset_path);
@@ -696,7 +1051,51 @@ impl GrainscopeApp {
             ui.checkbox(&mut self.session.light, "Light theme");
             ui.checkbox(&mut self.session.lecture, "Lecture mode")
                 .on_hover_text("plots fill the screen in a light high-contrast theme (F5 toggles, Esc leaves)");
+            ui.separator();
+            let (undo, redo) = self.history.depth();
+            if ui
+                .add_enabled(undo > 0, egui::Button::new("Undo"))
+                .on_hover_text("undo the last parameter change (Ctrl+Z)")
+                .clicked()
+            {
+                self.undo();
+            }
+            if ui.add_enabled(redo > 0, egui::Button::new("Redo")).on_hover_text("redo (Ctrl+Shift+Z)").clicked() {
+                self.redo();
+            }
+            if ui
+                .button("Reset all")
+                .on_hover_text("every scene's parameters to their defaults (Ctrl+Z undoes)")
+                .clicked()
+            {
+                self.reset_all();
+            }
+            ui.separator();
+            ui.toggle_value(&mut self.deck_editor.open, "Deck")
+                .on_hover_text("build a lecture from the window's states");
+            ui.menu_button("Present", |ui| self.decks_menu(ui));
+            if ui.button("Keys").on_hover_text("keyboard shortcuts (F1)").clicked() {
+                self.help = !self.help;
+            }
         });
+    }
+
+    /// The shipped decks, each presented from its first slide when picked.
+    fn decks_menu(&mut self, ui: &mut egui::Ui) {
+        let mut picked = None;
+        for (file, text) in crate::deck::SHIPPED {
+            let title = ron::from_str::<crate::deck::Deck>(text).map_or_else(|_| file.to_string(), |d| d.title);
+            if ui.button(title).on_hover_text(file).clicked() {
+                picked = Some(file);
+            }
+        }
+        if let Some(file) = picked {
+            match crate::deck::resolve(file) {
+                Ok(d) => self.present(d, 0),
+                Err(e) => self.error = Some(e.to_string()),
+            }
+            ui.close();
+        }
     }
 
     fn notices_bar(&mut self, ui: &mut egui::Ui) {
@@ -776,10 +1175,18 @@ impl GrainscopeApp {
     }
 
     fn controls(&mut self, ui: &mut egui::Ui) {
+        self.controls_of(ui, None);
+    }
+
+    /// The open scene's controls, or only those named in `only` (a slide's
+    /// highlighted parameters).
+    fn controls_of(&mut self, ui: &mut egui::Ui, only: Option<&[String]>) {
         let mut material_changed = false;
         let data_path = &mut self.session.data_path;
         let mut load_typed = false;
-        if let Some(data) = self.session.params.get_mut(&self.session.scene).and_then(|p| p.measurements()) {
+        if let Some(data) =
+            self.session.params.get_mut(&self.session.scene).and_then(|p| p.measurements()).filter(|_| only.is_none())
+        {
             let n = data.len();
             ui.horizontal(|ui| {
                 ui.label(if n == 0 {
@@ -821,8 +1228,10 @@ impl GrainscopeApp {
         {
             let params = self.params_mut();
             let mut controls = params.controls();
-            egui::Grid::new("controls").num_columns(1).striped(false).show(ui, |ui| {
-                for c in controls.iter_mut() {
+            egui::Grid::new(("controls", only.is_some())).num_columns(1).striped(false).show(ui, |ui| {
+                // A slide's few highlighted controls sit side by side in one row.
+                let in_row = only.is_some();
+                for c in controls.iter_mut().filter(|c| only.is_none_or(|keys| keys.iter().any(|k| k == c.key))) {
                     let (key, label, unit, doc) = (c.key, c.label, c.unit, c.doc);
                     match &mut c.kind {
                         ControlKind::Number { value, min, max, log, display_scale } => {
@@ -905,7 +1314,9 @@ impl GrainscopeApp {
                             });
                         }
                     }
-                    ui.end_row();
+                    if !in_row {
+                        ui.end_row();
+                    }
                     if let Some((k, message)) = &shown_notice
                         && k == key
                         && accepted.as_deref() != Some(key)
@@ -924,10 +1335,9 @@ impl GrainscopeApp {
         if material_changed {
             self.params_mut().material_changed();
         }
-        if ui.button("Reset to defaults").clicked() {
-            let default = self.defaults[self.session.index()].clone();
-            *self.params_mut() = default;
-            self.control_notice = None;
+        if only.is_none() && ui.button("Reset to defaults").on_hover_text("this scene's parameters (Ctrl+R)").clicked()
+        {
+            self.reset_scene();
         }
     }
 
@@ -1050,7 +1460,7 @@ impl GrainscopeApp {
         self.requested[self.session.index()] = None;
     }
 
-    fn overlay_for(&self, fig: &Figure, cursor: Option<[f64; 2]>) -> plot::Overlay {
+    fn overlay_for(&self, fig: &Figure, cursor: Vec<scene::Mark>) -> plot::Overlay {
         let current = self.params();
         let pinned: Vec<Series> = self
             .session
@@ -1095,6 +1505,78 @@ impl GrainscopeApp {
         plot::Overlay { pinned, family, cursor }
     }
 
+    /// The transport, when the open scene's result is a history.
+    fn transport_row(&mut self, ui: &mut egui::Ui) {
+        let Some(out) = self.output().cloned() else { return };
+        if let Some(c) = self.params().cursor(&out) {
+            self.transport(ui, &c.label);
+        }
+    }
+
+    /// The transport of a scene whose result is a history: rewind, step,
+    /// play/pause, a scrubber, the time, the speed, loop and (outside the
+    /// lecture look) the movie export.
+    fn transport(&mut self, ui: &mut egui::Ui, label: &str) {
+        let Some(mut t) = self.time() else { return };
+        let before = t;
+        let lecture = self.session.lecture;
+        ui.horizontal_wrapped(|ui| {
+            if ui.button("|◀").on_hover_text("to the start (Home)").clicked() {
+                self.playback.playing = false;
+                t = 0.0;
+            }
+            if ui.button("◀").on_hover_text("step back (,)").clicked() {
+                self.playback.playing = false;
+                t = playback::step(t, -1.0);
+            }
+            let play = if self.playback.playing { "❚❚ Pause" } else { "▶ Play" };
+            if ui.button(play).on_hover_text("play or pause (Space, P)").clicked() {
+                self.toggle_play();
+                t = self.time().unwrap_or(t);
+            }
+            if ui.button("▶|").on_hover_text("step forward (.)").clicked() {
+                self.playback.playing = false;
+                t = playback::step(t, 1.0);
+            }
+            let width = if lecture { 200.0 } else { 160.0 };
+            ui.spacing_mut().slider_width = width;
+            let scrub = ui
+                .add(egui::Slider::new(&mut t, 0.0..=1.0).show_value(false))
+                .on_hover_text("scrub through the history");
+            if scrub.dragged() {
+                self.playback.playing = false;
+            }
+            scrub.labelled_by(ui.label(egui::RichText::new(label).monospace()).id);
+            let speed_text = |v: f64| match v {
+                0.25 => "¼×".to_string(),
+                0.5 => "½×".to_string(),
+                v => format!("{v}×"),
+            };
+            egui::ComboBox::from_label("speed").selected_text(speed_text(self.playback.speed)).width(60.0).show_ui(
+                ui,
+                |ui| {
+                    for v in playback::SPEEDS {
+                        ui.selectable_value(&mut self.playback.speed, v, speed_text(v));
+                    }
+                },
+            );
+            ui.checkbox(&mut self.playback.looping, "loop");
+            if !lecture {
+                let busy = self.movie_running;
+                if ui
+                    .add_enabled(!busy, egui::Button::new(if busy { "Writing movie…" } else { "Movie" }))
+                    .on_hover_text("write 48 frames of the history (PNG) and an animated PNG into the export folder")
+                    .clicked()
+                {
+                    self.export_movie();
+                }
+            }
+        });
+        if t != before {
+            self.set_time(t);
+        }
+    }
+
     /// The "Lock axes" switch: keeps every plot's range while parameters change.
     fn lock_axes(&mut self, ui: &mut egui::Ui, figures: &[Figure]) {
         let mut lock = self.locked.is_some();
@@ -1118,17 +1600,29 @@ impl GrainscopeApp {
         }
         let lecture = self.session.lecture;
         if !lecture {
-            ui.horizontal(|ui| self.lock_axes(ui, &out.figures));
+            ui.horizontal_wrapped(|ui| {
+                self.lock_axes(ui, &out.figures);
+                ui.separator();
+                self.transport_row(ui);
+            });
         }
+        let full_cursor = self.params().cursor(&out);
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
             Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
+        // A slide may enlarge one figure: it leads across the full width,
+        // the others share one row below it.
+        let enlarged = self
+            .presenter
+            .as_ref()
+            .and_then(|p| p.slide().enlarge.clone())
+            .and_then(|id| out.figures.iter().position(|f| f.id == id));
         // Many panels (a grid of experiments) are small multiples: each keeps
         // a legible size, as many columns as fit, and the grid scrolls; the
         // first figure leads above them at twice the width.
-        let multiples = n_panels > 6;
+        let multiples = n_panels > 6 && enlarged.is_none();
         let avail = ui.available_size();
         let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
         let cols = match n_panels {
@@ -1143,8 +1637,8 @@ impl GrainscopeApp {
             (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(min_h),
         );
         let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
-        let cursor = self.params().cursor(&out);
-        let cursor_fraction = cursor.as_ref().map_or(0.0, |c| c.fraction);
+        let cursor = self.shown_cursor(&out);
+        let cursor_fraction = full_cursor.as_ref().map_or(0.0, |c| c.fraction);
         let mut export: Option<(Figure, &'static str)> = None;
         self.plot_rects.clear();
         let look = self.plot_look(ui);
@@ -1164,9 +1658,9 @@ impl GrainscopeApp {
         scroll.show(ui, |ui| {
             // One panel: the plot with its legend, and its export buttons.
             let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {
-                let point =
-                    cursor.as_ref().and_then(|c| c.points.iter().find(|(id, _)| *id == fig.id).map(|(_, p)| *p));
-                let overlay = self.overlay_for(fig, point);
+                let marks: Vec<scene::Mark> =
+                    cursor.as_ref().map(|c| c.marks_on(&fig.id).cloned().collect()).unwrap_or_default();
+                let overlay = self.overlay_for(fig, marks);
                 let locked = self.locked.as_ref().and_then(|l| l.get(&fig.id).copied());
                 let mut look = look;
                 // A legend that repeats an earlier panel's (same entries,
@@ -1198,14 +1692,55 @@ impl GrainscopeApp {
                     });
                 });
             };
-            let lead = usize::from(multiples);
-            if let (true, Some(fig)) = (multiples, out.figures.first()) {
-                panel(ui, fig, lead_size);
+            // One item: a figure, or (None) the contact sketch.
+            let mut draw = |ui: &mut egui::Ui, item: Option<&Figure>, size: egui::Vec2| match (item, &trajectory) {
+                (Some(fig), _) => panel(ui, fig, size),
+                (None, Some(t)) => {
+                    ui.vertical(|ui| {
+                        ui.label(egui::RichText::new("Contact sketch").strong());
+                        sketch::show(ui, t, cursor_fraction, size);
+                        if lecture {
+                            return;
+                        }
+                        ui.small("play the collision or move its time above the plots");
+                        ui.horizontal(|ui| {
+                            let label = ui.label("export folder");
+                            ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
+                        });
+                    });
+                }
+                (None, None) => {}
+            };
+            let lead = if multiples { Some(0) } else { enlarged };
+            let items: Vec<Option<&Figure>> = out
+                .figures
+                .iter()
+                .enumerate()
+                .filter(|(k, _)| Some(*k) != lead)
+                .map(|(_, f)| Some(f))
+                .chain(trajectory.as_ref().map(|_| None))
+                .collect();
+            if let Some(k) = enlarged {
+                // The enlarged figure fills most of the width; the others
+                // stack beside it.
+                let side_w = if items.is_empty() { 0.0 } else { (0.34 * avail.x).max(220.0) };
+                let lead_size = egui::vec2(avail.x - side_w - 16.0, avail.y - 8.0);
+                let each = egui::vec2(side_w - 8.0, ((avail.y - 8.0) / items.len().max(1) as f32 - 10.0).max(140.0));
+                ui.horizontal_top(|ui| {
+                    draw(ui, out.figures.get(k), lead_size);
+                    ui.vertical(|ui| {
+                        for item in &items {
+                            draw(ui, *item, each);
+                        }
+                    });
+                });
+                return;
+            }
+            if let Some(fig) = lead.and_then(|k| out.figures.get(k)) {
+                draw(ui, Some(fig), lead_size);
             }
             // Row by row; a last row with fewer panels shares the full width
             // (no empty quadrant), except among small multiples.
-            let items: Vec<Option<&Figure>> =
-                out.figures.iter().skip(lead).map(Some).chain(trajectory.as_ref().map(|_| None)).collect();
             for row in items.chunks(cols) {
                 let size = if row.len() < cols && !multiples {
                     let spacing = ui.spacing().item_spacing.x;
@@ -1215,24 +1750,7 @@ impl GrainscopeApp {
                 };
                 ui.horizontal_top(|ui| {
                     for item in row {
-                        match (item, &trajectory) {
-                            (Some(fig), _) => panel(ui, fig, size),
-                            (None, Some(t)) => {
-                                ui.vertical(|ui| {
-                                    ui.label(egui::RichText::new("Contact sketch").strong());
-                                    sketch::show(ui, t, cursor_fraction, size);
-                                    if lecture {
-                                        return;
-                                    }
-                                    ui.small("move the time cursor among the parameters");
-                                    ui.horizontal(|ui| {
-                                        let label = ui.label("export folder");
-                                        ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
-                                    });
-                                });
-                            }
-                            (None, None) => {}
-                        }
+                        draw(ui, *item, size);
                     }
                 });
             }
@@ -1244,6 +1762,10 @@ impl GrainscopeApp {
                 ui.text_edit_singleline(&mut self.session.export_dir).labelled_by(label.id);
             });
         }
+        // Files show what the window shows, the time cursor included.
+        let drawn = |fig: Figure| self.drawn_figures(&out).into_iter().find(|f| f.id == fig.id).unwrap_or(fig);
+        let export = export.map(|(fig, ext)| (drawn(fig), ext));
+        let save_as = save_as.map(drawn);
         if let Some((fig, ext)) = export {
             let dir = PathBuf::from(&self.session.export_dir);
             if let Err(e) = std::fs::create_dir_all(&dir) {

@@ -8,6 +8,7 @@
 use crate::figure::layout::{self, ColourBar, Corner, View};
 use crate::figure::ticks::ticks;
 use crate::figure::{Family, Figure, Fill, Heatmap, Scale, Series, Shape, Style, colormap, family_fraction, human};
+use crate::scene::timeline::{CURSOR_COLOR, Mark};
 use egui::{Color32, Pos2, Rect, Stroke, Vec2};
 use egui_plot::{GridInput, GridMark, Line, LineStyle, MarkerShape, Plot, PlotPoints, Points};
 use std::cell::RefCell;
@@ -59,8 +60,8 @@ pub struct Overlay {
     /// The parameter a sweep varied across the pinned series marked with a
     /// family value.
     pub family: Option<Family>,
-    /// Highlighted point (e.g. the time cursor), in data units.
-    pub cursor: Option<[f64; 2]>,
+    /// What the time cursor marks on this figure, in data units.
+    pub cursor: Vec<Mark>,
 }
 
 /// How plots are drawn: line width and text size grow in lecture mode.
@@ -673,16 +674,39 @@ fn draw_items(
             }
         }
     }
-    if let Some(p) = overlay.cursor
-        && let (Some(x), Some(y)) = (transform(p[0], fig.x.scale), transform(p[1], fig.y.scale))
-    {
-        plot_ui.points(
-            Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
-                .color(Color32::from_rgb(230, 159, 0))
-                .radius(look.line * 2.8)
-                .shape(MarkerShape::Circle)
-                .filled(true),
-        );
+    // The cursor in the text colour, apart from every data colour.
+    let c = if look.dark { Color32::WHITE } else { Color32::BLACK };
+    for mark in &overlay.cursor {
+        match mark {
+            Mark::Point(p) => {
+                if let (Some(x), Some(y)) = (transform(p[0], fig.x.scale), transform(p[1], fig.y.scale)) {
+                    plot_ui.points(
+                        Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
+                            .color(c)
+                            .radius(look.line * 2.8)
+                            .shape(MarkerShape::Circle)
+                            .filled(true),
+                    );
+                }
+            }
+            Mark::Time(x) => {
+                if let Some(x) = transform(*x, fig.x.scale) {
+                    plot_ui.vline(
+                        egui_plot::VLine::new("time cursor", x)
+                            .color(c)
+                            .width(look.line * 0.7)
+                            .style(LineStyle::Dashed { length: 6.0 })
+                            .allow_hover(false),
+                    );
+                }
+            }
+            Mark::Curve(points) => {
+                let s = Series::new("time cursor", points.clone(), Style::Line, CURSOR_COLOR);
+                for run in runs(fig, &s) {
+                    plot_ui.line(line("time cursor".into(), run).color(c).width(look.line * 1.8));
+                }
+            }
+        }
     }
 }
 

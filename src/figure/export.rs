@@ -86,6 +86,12 @@ fn fonts() -> Arc<resvg::usvg::fontdb::Database> {
 /// Renders the figure as PNG bytes: the SVG document rasterised with the
 /// bundled font, so both files show the same figure.
 pub fn png_bytes(fig: &Figure, size: (u32, u32)) -> Result<Vec<u8>, ExportError> {
+    png_bytes_with_text(fig, size, &[])
+}
+
+/// Like [`png_bytes`], with (keyword, text) pairs stored as international
+/// text chunks (iTXt, UTF-8) that image viewers list as metadata.
+pub fn png_bytes_with_text(fig: &Figure, size: (u32, u32), text: &[(&str, &str)]) -> Result<Vec<u8>, ExportError> {
     let draw_err = |message: String| ExportError::Draw { id: fig.id.clone(), message };
     let svg = svg_string(fig, size)?;
     let options = resvg::usvg::Options { fontdb: fonts(), font_family: FONT_FAMILY.into(), ..Default::default() };
@@ -97,10 +103,19 @@ pub fn png_bytes(fig: &Figure, size: (u32, u32)) -> Result<Vec<u8>, ExportError>
     resvg::render(&tree, resvg::tiny_skia::Transform::identity(), &mut pixmap.as_mut());
     // Opaque white background: premultiplied and straight RGB agree.
     let rgb: Vec<u8> = pixmap.data().chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect();
-    let img = image::RgbImage::from_raw(w, h, rgb).ok_or_else(|| draw_err("bad buffer size".into()))?;
-    let mut png = std::io::Cursor::new(Vec::new());
-    img.write_to(&mut png, image::ImageFormat::Png).map_err(|e| draw_err(e.to_string()))?;
-    Ok(png.into_inner())
+    let mut out = Vec::new();
+    {
+        let mut encoder = png::Encoder::new(&mut out, w, h);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        for (keyword, value) in text {
+            encoder.add_itxt_chunk(keyword.to_string(), value.to_string()).map_err(|e| draw_err(e.to_string()))?;
+        }
+        let mut writer = encoder.write_header().map_err(|e| draw_err(e.to_string()))?;
+        writer.write_image_data(&rgb).map_err(|e| draw_err(e.to_string()))?;
+        writer.finish().map_err(|e| draw_err(e.to_string()))?;
+    }
+    Ok(out)
 }
 
 /// Writes the figure as PNG.

@@ -3,6 +3,7 @@
 //! without a cycle; the registry in [`crate::scene`] sits on top of both.
 
 use super::controls::Control;
+pub use super::timeline::Cursor;
 use crate::figure::Figure;
 use crate::physics::fit::Measurement;
 use serde::Serialize;
@@ -71,16 +72,6 @@ pub struct Context<'a> {
     pub progress: &'a Progress,
     /// Partial results kept between computations.
     pub caches: &'a mut Caches,
-}
-
-/// A time cursor: the fraction of the history it stands at and the point it
-/// marks on each figure (by figure id, in the figure's display units).
-#[derive(Debug, Clone, PartialEq)]
-pub struct Cursor {
-    /// Fraction of the run, 0–1.
-    pub fraction: f64,
-    /// (figure id, point) pairs.
-    pub points: Vec<(&'static str, [f64; 2])>,
 }
 
 /// A scalar result, e.g. the coefficient of restitution.

@@ -16,11 +16,13 @@
 pub mod controls;
 pub mod core;
 pub mod quantities;
+pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory, logspace,
+    Caches, Context, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory, logspace,
 };
+pub use timeline::{Cursor, Mark};
 
 use crate::physics::fit::Measurement;
 use serde::{Deserialize, Serialize};
@@ -191,6 +193,25 @@ impl SceneParams {
         trial.validate()?;
         *self = trial;
         Ok(())
+    }
+
+    /// The time cursor's value (fraction of the run, 0–1) of a scene whose
+    /// result is a history, for playing it.
+    pub fn cursor_mut(&mut self) -> Option<&mut f64> {
+        self.controls().into_iter().find_map(|c| match (c.key, c.kind) {
+            ("cursor", ControlKind::Number { value, .. }) => Some(value),
+            _ => None,
+        })
+    }
+
+    /// The figures of `out` as they are exported: with the time cursor's
+    /// marks where the scene always shows them.
+    pub fn exported_figures(&self, out: &SceneOutput) -> Vec<crate::figure::Figure> {
+        let mut figures = out.figures.clone();
+        if let Some(c) = self.cursor(out).filter(|c| !c.optional) {
+            c.apply(&mut figures);
+        }
+        figures
     }
 
     /// The parameters with every styling-only value reset: two parameter sets

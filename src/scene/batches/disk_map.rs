@@ -4,8 +4,10 @@
 
 use super::common::{BatchParams, RunCache};
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::scene::quantities;
+use crate::scene::timeline;
+use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
 use serde::{Deserialize, Serialize};
@@ -35,6 +37,13 @@ the present orbits of Jupiter, Saturn, Uranus and Neptune.",
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }
+
+    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+        let range = timeline::x_range(out, "disk-map")?;
+        let t = timeline::time_at(range, p.cursor, Scale::Log);
+        let marks = timeline::along_x(out, "disk-map", t);
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
+    }
 }
 
 /// Parameters of the disk-map scene.
@@ -45,11 +54,13 @@ pub struct Params {
     pub run: BatchParams,
     /// Draw every n-th batch's path (default 5).
     pub every: usize,
+    /// Time cursor, as a fraction of the run in log time (styling only).
+    pub cursor: f64,
 }
 
 impl Default for Params {
     fn default() -> Self {
-        Params { run: BatchParams::default(), every: 5 }
+        Params { run: BatchParams::default(), every: 5, cursor: 0.0 }
     }
 }
 
@@ -59,6 +70,7 @@ impl Params {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
         c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
+        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the batch paths, as a fraction of the run in log time").style_only());
         c
     }
 }

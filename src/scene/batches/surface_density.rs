@@ -3,7 +3,9 @@
 
 use super::common::{BatchParams, RunCache};
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
+use crate::scene::timeline;
+use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
 use crate::physics::constants::{AU, YEAR};
@@ -36,6 +38,15 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }
+
+    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+        let fig = out.figures.iter().find(|f| f.id == "surface-density")?;
+        let (lo, hi) = fig.family_range()?;
+        let t = timeline::time_at((lo, hi), p.cursor, Scale::Log);
+        let (mark, shown) = timeline::snapshot(out, "surface-density", t)?;
+        let label = format!("t = {} yr (dust at the nearest snapshot)", crate::figure::human(shown));
+        Some(Cursor { fraction: p.cursor, label, marks: vec![mark], optional: true })
+    }
 }
 
 /// Parameters of the surface-density scene.
@@ -44,13 +55,18 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
 pub struct Params {
     /// The run.
     pub run: BatchParams,
+    /// Time cursor over the dust snapshots, as a fraction of their span in
+    /// log time (styling only).
+    pub cursor: f64,
 }
 
 impl Params {
     /// The documented parameters.
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
-        self.run.controls(&d.run)
+        let mut c = self.run.controls(&d.run);
+        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("the dust snapshot to highlight, as a fraction of their span in log time").style_only());
+        c
     }
 }
 

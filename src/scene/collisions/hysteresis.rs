@@ -4,6 +4,7 @@
 
 use super::common::{CollisionParams, reference_curves};
 use crate::scene::quantities;
+use crate::scene::timeline::{self, Mark};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Cursor, Extra, Trajectory, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
@@ -48,10 +49,12 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
     fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
         let Extra::Collision(t) = &out.extra else { return None };
         let s = t.sample_at(p.cursor)?;
-        Some(Cursor {
-            fraction: p.cursor,
-            points: vec![("contact-radius", [s[1] * 1e9, s[2] * 1e9]), ("elastic-force", [s[1] * 1e9, s[3] * 1e6])],
-        })
+        let mut marks = vec![
+            ("contact-radius".to_string(), Mark::Point([s[1] * 1e9, s[2] * 1e9])),
+            ("elastic-force".to_string(), Mark::Point([s[1] * 1e9, s[3] * 1e6])),
+        ];
+        marks.extend(timeline::along_x(out, "energy-budget", s[0] * 1e9));
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} ns", crate::figure::human(s[0] * 1e9)), marks, optional: false })
     }
 }
 

@@ -4,8 +4,10 @@
 
 use super::common::{ColumnParams, RunCache, endings, summary};
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::scene::quantities;
+use crate::scene::timeline;
+use crate::scene::core::{Context, Cursor, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::coagulation::{Run, Sample, mass_distribution};
 use crate::physics::constants::YEAR;
 use serde::{Deserialize, Serialize};
@@ -39,6 +41,18 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }
+
+    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+        let range = timeline::x_range(out, "peak-mass-history")?;
+        let t = timeline::time_at(range, p.cursor, Scale::Log);
+        let mut marks = timeline::along_x(out, "peak-mass-history", t);
+        let mut label = format!("t = {} yr", crate::figure::human(t));
+        if let Some((mark, shown)) = timeline::snapshot(out, "mass-distribution", t) {
+            marks.push(mark);
+            label.push_str(&format!("; distribution at {} yr", crate::figure::human(shown)));
+        }
+        Some(Cursor { fraction: p.cursor, label, marks, optional: true })
+    }
 }
 
 /// Parameters of the scene.
@@ -49,11 +63,13 @@ pub struct Params {
     pub run: ColumnParams,
     /// Histogram bins per mass decade (default 2).
     pub bins_per_decade: usize,
+    /// Time cursor, as a fraction of the run in log time (styling only).
+    pub cursor: f64,
 }
 
 impl Default for Params {
     fn default() -> Self {
-        Params { run: ColumnParams::default(), bins_per_decade: 2 }
+        Params { run: ColumnParams::default(), bins_per_decade: 2, cursor: 0.0 }
     }
 }
 
@@ -63,6 +79,7 @@ impl Params {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
         c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"));
+        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time").style_only());
         c
     }
 }

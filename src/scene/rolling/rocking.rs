@@ -5,8 +5,9 @@
 use crate::scene::quantities;
 use crate::scene::controls::Control;
 use super::common::RollingParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
-use crate::figure::{Axis, Figure, Series, Style};
+use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::figure::{Axis, Figure, Scale, Series, Style};
+use crate::scene::timeline;
 use crate::physics::rolling::{Rocking as RockingModel, RockingSample, critical_displacement, small_asymmetry_torque};
 use serde::{Deserialize, Serialize};
 
@@ -40,6 +41,16 @@ Q/π periods (3.25): Peri & Cetinkaya's rocking dies out in ~10 periods, Q ~ 30.
 
     fn material_changed(p: &mut Params) {
         p.contact.material_changed();
+    }
+
+    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+        let range = timeline::x_range(out, "rocking-displacement")?;
+        let t = timeline::time_at(range, p.cursor, Scale::Linear);
+        let marks = ["rocking-displacement", "rocking-energy", "rocking-state"]
+            .iter()
+            .flat_map(|id| timeline::along_x(out, id, t))
+            .collect();
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} µs", crate::figure::human(t)), marks, optional: false })
     }
 }
 
@@ -125,9 +136,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     let e0 = samples.first().map_or(1.0, |s| s.energy).max(f64::MIN_POSITIVE);
     let t_us = |s: &RockingSample| s.t * 1e6;
     let t_end = samples.last().map_or(0.0, t_us);
-    let cursor = samples.get(((samples.len() - 1) as f64 * p.cursor).round() as usize).copied();
 
-    let mut fig_xi = Figure::new(
+    let fig_xi = Figure::new(
         "rocking-displacement",
         "Rolling displacement ξ(t)",
         Axis::linear("time t", "µs"),
@@ -136,7 +146,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     .with(Series::new("ξ", samples.iter().map(|s| [t_us(s), s.xi * 1e9]).collect(), Style::Line, 0))
     .with(Series::new("±ξ_crit (3.16)", vec![[0.0, xi_crit * 1e9], [t_end, xi_crit * 1e9]], Style::Dashed, 6))
     .with(Series::new("", vec![[0.0, -xi_crit * 1e9], [t_end, -xi_crit * 1e9]], Style::Dashed, 6));
-    let mut fig_e =
+    let fig_e =
         Figure::new("rocking-energy", "Rocking energy", Axis::linear("time t", "µs"), Axis::log("E / E(0)", ""))
             .with(Series::new("energy", samples.iter().map(|s| [t_us(s), s.energy / e0]).collect(), Style::Line, 2))
             .with(Series::new(
@@ -145,7 +155,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
                 Style::Dashed,
                 6,
             ));
-    let mut fig_r = Figure::new(
+    let fig_r = Figure::new(
         "rocking-state",
         "Rolled distance and state",
         Axis::linear("time t", "µs"),
@@ -158,11 +168,6 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Style::Dashed,
         4,
     ));
-    if let Some(c) = cursor {
-        fig_xi = fig_xi.with(Series::new("time cursor", vec![[t_us(&c), c.xi * 1e9]], Style::Marker, 1));
-        fig_e = fig_e.with(Series::new("time cursor", vec![[t_us(&c), (c.energy / e0).max(1e-300)]], Style::Marker, 1));
-        fig_r = fig_r.with(Series::new("time cursor", vec![[t_us(&c), c.rolled * 1e9]], Style::Marker, 1));
-    }
     let max_xi = samples.iter().map(|s| s.xi.abs()).fold(0.0, f64::max);
     let rolled = samples.last().map_or(0.0, |s| s.rolled);
     let efold = samples.iter().find(|s| s.energy < e0 / std::f64::consts::E).map(|s| s.t * f0);

@@ -1,0 +1,221 @@
+//! Lecture material written without a window: a deck's handout (every
+//! slide's figures and an index with titles and notes) and the frames of a
+//! played history (numbered PNGs and an animated PNG).
+
+use crate::deck::{LoadedDeck, slide_folder};
+use crate::figure::Figure;
+use crate::files::{FileSet, write_atomically};
+use crate::preset::Preset;
+use crate::provenance::{Stamp, figure_bytes};
+use crate::scene::{self, Progress, SceneError, SceneOutput, SceneParams};
+use anyhow::{Context, Result, bail};
+use std::fmt::Write as _;
+use std::path::{Path, PathBuf};
+
+/// Writes the handout of `deck` into `dir`: one folder per slide
+/// ("01-title") with its figures (PNG, SVG, CSV, each carrying the slide's
+/// state) and scalars, and `index.md` listing the slides in order with
+/// their titles, notes and figures. `progress` is told of each slide in
+/// turn. Returns the files written.
+pub fn deck(deck: &LoadedDeck, dir: &Path, progress: &dyn Fn(usize, &str)) -> Result<Vec<PathBuf>> {
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
+    let mut index = String::new();
+    let title = if deck.deck.title.is_empty() { "Lecture" } else { deck.deck.title.as_str() };
+    let _ = writeln!(index, "# {title}\n");
+    if !deck.deck.description.is_empty() {
+        let _ = writeln!(index, "{}\n", deck.deck.description);
+    }
+    let _ = writeln!(index, "Made with {} from `{}`.\n", crate::provenance::program(), deck.origin);
+    let mut written = Vec::new();
+    for (i, (slide, params)) in deck.deck.slides.iter().zip(&deck.params).enumerate() {
+        progress(i, &slide.title);
+        let out = scene::compute(params, &Progress::default())
+            .with_context(|| format!("slide {} ('{}')", i + 1, slide.title))?;
+        let folder = slide_folder(i, slide);
+        let preset = Preset { title: slide.title.clone(), description: slide.notes.clone(), scene: params.clone() };
+        let files = crate::cli::write_outputs(&out, Some(&preset), &dir.join(&folder))?;
+        written.extend(files);
+        let info = params.info();
+        let _ = writeln!(index, "## {}. {}\n", i + 1, slide.title);
+        let _ = writeln!(index, "*Scene: {} ({})*\n", info.title, info.source);
+        for line in slide.notes.lines() {
+            let _ = writeln!(index, "{line}");
+        }
+        index.push('\n');
+        let mut figures = params.exported_figures(&out);
+        // The enlarged figure first, as on the slide.
+        if let Some(big) = &slide.enlarge
+            && let Some(k) = figures.iter().position(|f| &f.id == big)
+        {
+            let f = figures.remove(k);
+            figures.insert(0, f);
+        }
+        for fig in &figures {
+            let _ = writeln!(
+                index,
+                "![{}]({folder}/{}.png)  \n[SVG]({folder}/{}.svg) · [CSV]({folder}/{}.csv)\n",
+                fig.title, fig.id, fig.id, fig.id
+            );
+        }
+    }
+    let path = dir.join("index.md");
+    write_atomically(&path, index.as_bytes())?;
+    written.push(path);
+    Ok(written)
+}
+
+/// Size of movie frames, pixels.
+pub const FRAME_SIZE: (u32, u32) = (1200, 825);
+
+/// The figures of `params`' scene at `frames` evenly spaced cursor positions
+/// over its history (first to last), with the cursor's marks drawn.
+pub fn frames(params: &SceneParams, out: &SceneOutput, frames: usize) -> Result<Vec<Vec<Figure>>, SceneError> {
+    let n = frames.max(2);
+    let mut probe = params.clone();
+    if probe.cursor_mut().is_none() {
+        return Err(SceneError::Param(scene::ParamError::Inconsistent(format!(
+            "scene '{}' has no time to play (scenes with a time cursor: hysteresis, rocking, disk-map, surface-density, mass-distribution)",
+            params.info().id
+        ))));
+    }
+    (0..n)
+        .map(|k| {
+            let mut p = params.clone();
+            if let Some(c) = p.cursor_mut() {
+                *c = k as f64 / (n - 1) as f64;
+            }
+            let cursor = p
+                .cursor(out)
+                .ok_or_else(|| SceneError::Param(scene::ParamError::Inconsistent("no history to play".into())))?;
+            let mut figures = out.figures.clone();
+            cursor.apply(&mut figures);
+            Ok(figures)
+        })
+        .collect()
+}
+
+/// Writes a played history into `dir`: for each figure (or only `only`),
+/// numbered frames `ID-0001.png` … and, with `animate`, one animated PNG
+/// `ID.png` playing them at `fps`. All or nothing. Returns the files written.
+pub fn movie(
+    preset: &Preset,
+    n_frames: usize,
+    only: Option<&str>,
+    animate: bool,
+    fps: u16,
+    dir: &Path,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<Vec<PathBuf>> {
+    let out = scene::compute(&preset.scene, &Progress::default())?;
+    let played = frames(&preset.scene, &out, n_frames)?;
+    let ids: Vec<String> = out.figures.iter().map(|f| f.id.clone()).filter(|id| only.is_none_or(|o| o == id)).collect();
+    if ids.is_empty() {
+        let known: Vec<&str> = out.figures.iter().map(|f| f.id.as_str()).collect();
+        bail!("no figure '{}' in this scene (figures: {})", only.unwrap_or_default(), known.join(", "));
+    }
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
+    let stamp = Stamp::of(preset)?;
+    let mut set = FileSet::new();
+    for id in &ids {
+        let mut images = Vec::new();
+        for (k, figs) in played.iter().enumerate() {
+            if cancelled() {
+                bail!("cancelled; nothing was written");
+            }
+            let Some(fig) = figs.iter().find(|f| &f.id == id) else { continue };
+            let bytes = figure_bytes(fig, "png", FRAME_SIZE, Some(&stamp))?;
+            set.stage(&dir.join(format!("{id}-{:04}.png", k + 1)), &bytes)?;
+            if animate {
+                images.push(bytes);
+            }
+        }
+        if animate {
+            let apng = animated_png(&images, fps, &stamp).with_context(|| format!("cannot animate figure '{id}'"))?;
+            set.stage(&dir.join(format!("{id}.png")), &apng)?;
+        }
+    }
+    Ok(set.commit()?)
+}
+
+/// Joins PNG frames of equal size into one animated PNG (APNG) that loops,
+/// each frame shown for 1/`fps` s; viewers without APNG show the first frame.
+fn animated_png(frames: &[Vec<u8>], fps: u16, stamp: &Stamp) -> Result<Vec<u8>> {
+    let decoded: Vec<(u32, u32, Vec<u8>)> = frames
+        .iter()
+        .map(|bytes| {
+            let mut reader = png::Decoder::new(std::io::Cursor::new(bytes.as_slice())).read_info()?;
+            let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
+            let info = reader.next_frame(&mut buf)?;
+            buf.truncate(info.buffer_size());
+            Ok((info.width, info.height, buf))
+        })
+        .collect::<Result<_, png::DecodingError>>()?;
+    let Some((w, h, _)) = decoded.first() else { bail!("no frames") };
+    let (w, h) = (*w, *h);
+    let mut out = Vec::new();
+    {
+        let mut encoder = png::Encoder::new(&mut out, w, h);
+        encoder.set_color(png::ColorType::Rgb);
+        encoder.set_depth(png::BitDepth::Eight);
+        for (k, v) in stamp.png_text() {
+            encoder.add_itxt_chunk(k.to_string(), v.to_string())?;
+        }
+        encoder.set_animated(decoded.len() as u32, 0)?;
+        encoder.set_frame_delay(1, fps.max(1))?;
+        let mut writer = encoder.write_header()?;
+        for (fw, fh, data) in &decoded {
+            if (*fw, *fh) != (w, h) {
+                bail!("frames differ in size");
+            }
+            writer.write_image_data(data)?;
+        }
+        writer.finish()?;
+    }
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Frames of a played collision: the cursor's point moves along the
+    /// loop, the first frame at the start of contact and the last at its end.
+    #[test]
+    fn a_played_collision_moves_its_cursor() {
+        let preset = crate::preset::resolve("ice-bounce-8ms").expect("shipped");
+        let out = scene::compute(&preset.scene, &Progress::default()).expect("computes");
+        let played = frames(&preset.scene, &out, 5).expect("frames");
+        assert_eq!(played.len(), 5);
+        let marker = |figs: &Vec<Figure>| {
+            let fig = figs.iter().find(|f| f.id == "contact-radius").expect("figure");
+            fig.series.iter().find(|s| s.name == "time cursor").expect("cursor").points[0]
+        };
+        let (first, mid, last) = (marker(&played[0]), marker(&played[2]), marker(&played[4]));
+        assert!(first[0].abs() < 1e-6, "contact starts at δ = 0: {first:?}");
+        assert!(mid[1] > 0.0 && mid != last, "{mid:?} {last:?}");
+        let budget = played[2].iter().find(|f| f.id == "energy-budget").expect("budget");
+        let marks = budget.series.iter().filter(|s| s.color == crate::scene::timeline::CURSOR_COLOR).count();
+        assert!(marks >= 6, "a time line and five energies: {marks}");
+    }
+
+    /// A scene without a history is refused with the scenes that have one.
+    #[test]
+    fn scenes_without_time_are_refused() {
+        let preset = crate::preset::resolve("restitution-ice").expect("shipped");
+        let err = frames(&preset.scene, &SceneOutput::default(), 3).expect_err("no time").to_string();
+        assert!(err.contains("no time to play") && err.contains("hysteresis"), "{err}");
+    }
+
+    /// The animated PNG holds every frame and the preset.
+    #[test]
+    fn movies_are_written_with_an_animation() {
+        let preset = crate::preset::resolve("rolling-psl-aluminium-rocking").expect("shipped");
+        let dir = tempfile::tempdir().expect("tempdir");
+        let files = movie(&preset, 4, Some("rocking-displacement"), true, 8, dir.path(), &|| false).expect("movie");
+        assert_eq!(files.len(), 5);
+        let apng = std::fs::read(dir.path().join("rocking-displacement.png")).expect("apng");
+        let reader = png::Decoder::new(std::io::Cursor::new(apng)).read_info().expect("decodes");
+        assert_eq!(reader.info().animation_control().map(|a| a.num_frames), Some(4));
+        assert_eq!(crate::provenance::read(&dir.path().join("rocking-displacement-0002.png")).expect("state"), preset);
+    }
+}

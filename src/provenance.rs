@@ -1,0 +1,227 @@
+//! Exported files that reopen their state. Every PNG (an iTXt chunk), SVG
+//! (a `<metadata>` element) and CSV (`#` comment lines at the top) written by
+//! grainscope carries the program version and the preset that produced it,
+//! as RON. [`read`] takes such a file back to that preset, so
+//! `grainscope run figure.png` recomputes exactly what the figure shows.
+
+use crate::figure::{ExportError, Figure};
+use crate::preset::{Preset, PresetError};
+use std::path::Path;
+
+/// Keyword of the PNG text chunk and name of the SVG element holding the preset.
+pub const PRESET_KEY: &str = "grainscope-preset";
+
+/// Keyword of the PNG text chunk naming the program and its version.
+pub const SOFTWARE_KEY: &str = "Software";
+
+/// The first line of the comment block of an exported CSV file.
+const CSV_HEAD: &str = "# grainscope-preset (RON) follows, one line per comment; data below";
+
+/// What an exported file carries about its origin.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Stamp {
+    /// Program and version, e.g. "grainscope 0.1.0".
+    pub program: String,
+    /// The preset that produced the file, as RON.
+    pub preset: String,
+}
+
+/// Why no state could be read from a file.
+#[derive(Debug, thiserror::Error)]
+pub enum ProvenanceError {
+    /// The file could not be read.
+    #[error("cannot read {path}: {cause}")]
+    Read {
+        /// File.
+        path: String,
+        /// What the operating system said.
+        cause: std::io::Error,
+    },
+    /// The file is of a kind that carries no state.
+    #[error("{0}: not a PNG, SVG or CSV file exported by grainscope")]
+    Kind(String),
+    /// The file carries no embedded preset.
+    #[error(
+        "{0} carries no grainscope state (only figures exported by grainscope 0.1 or later do; a preset file or a shipped preset name works instead)"
+    )]
+    Missing(String),
+    /// The embedded preset does not load.
+    #[error("the state embedded in {origin} does not load: {error}")]
+    Invalid {
+        /// File.
+        origin: String,
+        /// Why.
+        error: Box<PresetError>,
+    },
+}
+
+impl Stamp {
+    /// The stamp of a preset, with this program's version.
+    pub fn of(preset: &Preset) -> Result<Stamp, PresetError> {
+        let text = ron::ser::to_string_pretty(preset, ron::ser::PrettyConfig::default().struct_names(false))
+            .map_err(|e| PresetError::Serialise(e.to_string()))?;
+        Ok(Stamp { program: program(), preset: text })
+    }
+
+    /// PNG text chunks: (keyword, text).
+    pub fn png_text(&self) -> [(&str, &str); 2] {
+        [(SOFTWARE_KEY, self.program.as_str()), (PRESET_KEY, self.preset.as_str())]
+    }
+
+    /// The SVG document with a `<metadata>` element right after its root tag.
+    pub fn svg(&self, svg: &str) -> String {
+        let Some(start) = svg.find("<svg") else { return svg.to_string() };
+        let Some(end) = svg[start..].find('>').map(|e| start + e + 1) else { return svg.to_string() };
+        // Inside CDATA only "]]>" needs care: split it across two sections.
+        let body = self.preset.replace("]]>", "]]]]><![CDATA[>");
+        let program = escape(&self.program);
+        format!(
+            "{}\n<metadata><{PRESET_KEY} program=\"{program}\"><![CDATA[{body}]]></{PRESET_KEY}></metadata>{}",
+            &svg[..end],
+            &svg[end..]
+        )
+    }
+
+    /// The CSV data preceded by comment lines: the program, then the preset.
+    pub fn csv(&self, csv: &[u8]) -> Vec<u8> {
+        let mut out = format!("# {}\n{CSV_HEAD}\n", self.program);
+        for line in self.preset.lines() {
+            out.push_str("#  ");
+            out.push_str(line);
+            out.push('\n');
+        }
+        let mut out = out.into_bytes();
+        out.extend_from_slice(csv);
+        out
+    }
+}
+
+/// The bytes of `fig` as a file of kind `ext` ("png", "svg" or "csv";
+/// images at `size` pixels), carrying `stamp` when given.
+pub fn figure_bytes(fig: &Figure, ext: &str, size: (u32, u32), stamp: Option<&Stamp>) -> Result<Vec<u8>, ExportError> {
+    let draw_err = |message: String| ExportError::Draw { id: fig.id.clone(), message };
+    match (ext, stamp) {
+        ("png", Some(st)) => crate::figure::png_bytes_with_text(fig, size, &st.png_text()),
+        ("png", None) => crate::figure::png_bytes(fig, size),
+        ("svg", _) => {
+            let svg = crate::figure::svg_string(fig, size)?;
+            Ok(stamp.map_or(svg.clone(), |st| st.svg(&svg)).into_bytes())
+        }
+        ("csv", _) => {
+            let csv = crate::figure::csv_bytes(fig).map_err(|e| draw_err(e.to_string()))?;
+            Ok(stamp.map_or(csv.clone(), |st| st.csv(&csv)))
+        }
+        _ => Err(draw_err(format!("cannot write a '.{ext}' file: use .png, .svg or .csv"))),
+    }
+}
+
+/// "grainscope VERSION".
+pub fn program() -> String {
+    format!("grainscope {}", env!("CARGO_PKG_VERSION"))
+}
+
+fn escape(s: &str) -> String {
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('"', "&quot;")
+}
+
+/// Whether `path` names a file kind that can carry a stamp (PNG, SVG, CSV).
+pub fn may_carry_state(path: &Path) -> bool {
+    matches!(extension(path).as_str(), "png" | "svg" | "csv")
+}
+
+fn extension(path: &Path) -> String {
+    path.extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase()
+}
+
+/// The preset embedded in an exported PNG, SVG or CSV file.
+pub fn read(path: &Path) -> Result<Preset, ProvenanceError> {
+    let origin = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|cause| ProvenanceError::Read { path: origin.clone(), cause })?;
+    let text = match extension(path).as_str() {
+        "png" => png_text(&bytes),
+        "svg" => std::str::from_utf8(&bytes).ok().and_then(svg_text),
+        "csv" => std::str::from_utf8(&bytes).ok().and_then(csv_text),
+        _ => return Err(ProvenanceError::Kind(origin)),
+    };
+    let text = text.ok_or_else(|| ProvenanceError::Missing(origin.clone()))?;
+    Preset::from_ron(&text, &format!("{origin} (embedded state)"))
+        .map_err(|error| ProvenanceError::Invalid { origin, error: Box::new(error) })
+}
+
+fn png_text(bytes: &[u8]) -> Option<String> {
+    let reader = png::Decoder::new(std::io::Cursor::new(bytes)).read_info().ok()?;
+    let info = reader.info();
+    info.utf8_text.iter().find(|c| c.keyword == PRESET_KEY).and_then(|c| c.get_text().ok())
+}
+
+fn svg_text(svg: &str) -> Option<String> {
+    let open = format!("<{PRESET_KEY}");
+    let start = svg.find(&open)?;
+    let after = start + svg[start..].find('>')? + 1;
+    let end = after + svg[after..].find(&format!("</{PRESET_KEY}>"))?;
+    let inner = &svg[after..end];
+    // Join the CDATA sections.
+    let mut out = String::new();
+    let mut rest = inner;
+    while let Some(s) = rest.find("<![CDATA[") {
+        let body = &rest[s + 9..];
+        let e = body.find("]]>")?;
+        out.push_str(&body[..e]);
+        rest = &body[e + 3..];
+    }
+    Some(out)
+}
+
+fn csv_text(csv: &str) -> Option<String> {
+    let mut lines = csv.lines();
+    lines.next().filter(|l| l.starts_with("# grainscope"))?;
+    lines.next().filter(|l| *l == CSV_HEAD)?;
+    let body: Vec<&str> = lines.map_while(|l| l.strip_prefix("#  ")).collect();
+    (!body.is_empty()).then(|| body.join("\n"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn preset() -> Preset {
+        crate::preset::resolve("ice-bounce-8ms").expect("shipped")
+    }
+
+    /// The embedded preset reads back equal from all three kinds of file,
+    /// and a file without one is refused with a message naming it.
+    #[test]
+    fn state_survives_every_export_format() {
+        let preset = preset();
+        let stamp = Stamp::of(&preset).expect("stamp");
+        let dir = tempfile::tempdir().expect("tempdir");
+        let out = crate::scene::compute(&preset.scene, &crate::scene::Progress::default()).expect("computes");
+        let fig = &out.figures[0];
+        let png = crate::figure::png_bytes_with_text(fig, (320, 240), &stamp.png_text()).expect("png");
+        let svg = stamp.svg(&crate::figure::svg_string(fig, (320, 240)).expect("svg"));
+        let csv = stamp.csv(&crate::figure::csv_bytes(fig).expect("csv"));
+        for (name, bytes) in [("f.png", png), ("f.svg", svg.into_bytes()), ("f.csv", csv)] {
+            let path = dir.path().join(name);
+            std::fs::write(&path, bytes).expect("write");
+            assert_eq!(read(&path).expect(name), preset, "{name}");
+        }
+        let plain = dir.path().join("plain.csv");
+        std::fs::write(&plain, "x,y\n1,2\n").expect("write");
+        let err = read(&plain).expect_err("no state").to_string();
+        assert!(err.contains("plain.csv") && err.contains("carries no grainscope state"), "{err}");
+        let other = dir.path().join("notes.txt");
+        std::fs::write(&other, "hello").expect("write");
+        assert!(read(&other).expect_err("kind").to_string().contains("not a PNG, SVG or CSV"));
+    }
+
+    /// A preset whose text contains the CDATA terminator still round-trips.
+    #[test]
+    fn cdata_terminators_are_split() {
+        let mut preset = preset();
+        preset.description = "a ]]> b".into();
+        let stamp = Stamp::of(&preset).expect("stamp");
+        let svg = stamp.svg("<svg width=\"1\">\n</svg>");
+        let back = Preset::from_ron(&svg_text(&svg).expect("found"), "t").expect("loads");
+        assert_eq!(back, preset);
+    }
+}

@@ -199,3 +199,51 @@ fn fit_command_rejects_malformed_data_with_the_line() {
     ]);
     assert!(!out.status.success());
 }
+
+/// A figure written by `run --out` reopens its state: `run FIGURE.png
+/// --json` prints what the preset printed, for each kind of file.
+#[test]
+fn an_exported_figure_runs_as_its_preset() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path().to_str().expect("utf8");
+    let first = grainscope(&["run", "ice-bounce-8ms", "--set", "velocity=3", "--out", d, "--json"]);
+    assert!(first.status.success(), "{}", String::from_utf8_lossy(&first.stderr));
+    for file in ["energy-budget.png", "contact-radius.svg", "elastic-force.csv"] {
+        let path = dir.path().join(file);
+        let again = grainscope(&["run", path.to_str().expect("utf8"), "--json"]);
+        assert!(again.status.success(), "{file}: {}", String::from_utf8_lossy(&again.stderr));
+        assert_eq!(again.stdout, first.stdout, "{file}");
+    }
+    let plain = dir.path().join("plain.png");
+    std::fs::write(&plain, b"not an image").expect("write");
+    let refused = grainscope(&["run", plain.to_str().expect("utf8"), "--json"]);
+    assert_eq!(refused.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&refused.stderr).contains("carries no grainscope state"));
+}
+
+/// A deck's handout: one folder per slide with its figures, each carrying
+/// the slide's state, and an index with every title and note.
+#[test]
+fn a_deck_handout_lists_every_slide() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path().to_str().expect("utf8");
+    let out = grainscope(&["deck", "sticking-and-rolling", "--out", d]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let deck = grainscope::deck::resolve("sticking-and-rolling").expect("shipped deck");
+    let index = std::fs::read_to_string(dir.path().join("index.md")).expect("index");
+    for (i, (slide, params)) in deck.deck.slides.iter().zip(&deck.params).enumerate() {
+        assert!(index.contains(&slide.title), "{}", slide.title);
+        assert!(index.contains(slide.notes.lines().next().unwrap_or_default()));
+        let folder = dir.path().join(grainscope::deck::slide_folder(i, slide));
+        let png = std::fs::read_dir(&folder)
+            .expect("slide folder")
+            .filter_map(|e| e.ok())
+            .map(|e| e.path())
+            .find(|p| p.extension().is_some_and(|e| e == "png"))
+            .expect("a figure");
+        assert_eq!(&grainscope::provenance::read(&png).expect("state").scene, params, "{}", slide.title);
+    }
+    let movie = grainscope(&["movie", "restitution-ice", "--out", d]);
+    assert_eq!(movie.status.code(), Some(2), "a scene without time has no movie");
+    assert!(String::from_utf8_lossy(&movie.stderr).contains("no time to play"));
+}

@@ -57,6 +57,23 @@ fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() 
             }
         }
         assert!(out.scalars.iter().all(|s| !s.value.is_nan()), "{file}");
+        // An exported figure carries the preset: it reads back equal, and a
+        // cheap scene recomputed from a PNG gives the same JSON (CI checks
+        // every preset through the command line).
+        let run = Preset { scene: quick.clone(), ..preset.clone() };
+        let stamp = grainscope::provenance::Stamp::of(&run).expect("stamp");
+        let cheap = !quick.info().heavy;
+        let ext = if cheap { "png" } else { "svg" };
+        let bytes =
+            grainscope::provenance::figure_bytes(&out.figures[0], ext, (400, 275), Some(&stamp)).expect("bytes");
+        let exported = dir.path().join(format!("{file}.{ext}"));
+        std::fs::write(&exported, bytes).expect("write");
+        let reopened = resolve(exported.to_str().expect("utf8")).unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert_eq!(reopened, run, "{file}: the exported state");
+        if cheap {
+            let again = scene::compute(&reopened.scene, &Progress::default()).expect("recomputes");
+            assert_eq!(again.scalars_json(), out.scalars_json(), "{file}: the same results from the PNG");
+        }
         let path = dir.path().join(file);
         preset.save(&path).expect("save");
         let back = Preset::load(&path).expect("load");

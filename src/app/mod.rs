@@ -664,7 +664,8 @@ impl GrainscopeApp {
             egui::Panel::bottom("status").show(ui, |ui| self.status_bar(ui));
         }
         if self.presenter.as_ref().is_some_and(|p| p.notes) {
-            egui::Panel::bottom("notes").show(ui, |ui| self.notes_panel(ui));
+            let height = (0.27 * ctx.content_rect().height()).max(120.0);
+            egui::Panel::bottom("notes").exact_size(height).show(ui, |ui| self.notes_panel(ui));
         }
         if !self.session.lecture {
             egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
@@ -1669,6 +1670,11 @@ impl GrainscopeApp {
                     let signature = plot::legend_signature(fig);
                     look.legend = !legends_shown.contains(&signature);
                     legends_shown.push(signature);
+                }
+                // Beside an enlarged figure the small plots keep their
+                // height: no legend (hovering still names each curve).
+                if enlarged.is_some_and(|k| out.figures.get(k).is_some_and(|f| f.id != fig.id)) {
+                    look.legend = false;
                 }
                 ui.vertical(|ui| {
                     let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);

@@ -116,11 +116,14 @@ impl GrainscopeApp {
                 go = Some(1);
             }
             ui.separator();
-            ui.label(egui::RichText::new(title).heading().strong());
+            // The buttons keep the right end; a long title is cut before them.
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 leave = ui.button("Leave").on_hover_text("leave presenter mode (Esc)").clicked();
                 reset = ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked();
                 toggle_notes = ui.selectable_label(notes, "Notes").on_hover_text("speaker notes (N)").clicked();
+                ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
+                    ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).truncate());
+                });
             });
         });
         if self.presenter.as_ref().is_some_and(|p| !p.slide().highlight.is_empty()) {
@@ -159,7 +162,7 @@ impl GrainscopeApp {
     /// The speaker notes, under the plots.
     pub(super) fn notes_panel(&self, ui: &mut egui::Ui) {
         let Some(p) = &self.presenter else { return };
-        egui::ScrollArea::vertical().max_height(ui.ctx().content_rect().height() * 0.3).show(ui, |ui| {
+        egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
             ui.add(egui::Label::new(egui::RichText::new(&p.slide().notes).size(17.0)).wrap());
         });
     }

@@ -461,3 +461,45 @@ fn an_exported_figure_reopens_its_state() {
     h.run();
     assert_eq!(h.state().params(), &exported, "a file without state changes nothing");
 }
+
+/// A deck built in the window: two states added as slides, saved, and read
+/// back with each slide's parameters.
+#[test]
+fn a_deck_built_from_the_window_saves_each_state() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let path = dir.path().join("lecture.ron");
+    let mut h = harness();
+    h.run();
+    h.get_by_label("Deck").click();
+    h.run();
+    h.get_by_label("Add the current state as a slide").click();
+    h.run();
+    h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(2.0);
+    h.run();
+    let slow = h.state().params().clone();
+    h.get_by_label("Add the current state as a slide").click();
+    h.run();
+    h.get_by_role_and_label(Role::TextInput, "deck file").focus();
+    h.run();
+    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::A);
+    h.run();
+    h.get_by_role_and_label(Role::TextInput, "deck file").type_text(path.to_str().expect("utf8"));
+    h.run();
+    h.get_by_label("Save deck").click();
+    h.run();
+    let deck = grainscope::deck::Deck::load(&path).unwrap_or_else(|e| panic!("{e}: {}", h.state().status()));
+    assert_eq!(deck.params.len(), 2);
+    assert_eq!(deck.params[1], slow);
+    assert_eq!(velocity_of(&deck.params[0]), 8.0);
+}
+
+fn velocity_of(p: &grainscope::scene::SceneParams) -> f64 {
+    let mut p = p.clone();
+    p.controls()
+        .into_iter()
+        .find_map(|c| match (c.key, c.kind) {
+            ("velocity", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
+            _ => None,
+        })
+        .unwrap_or(f64::NAN)
+}

@@ -120,6 +120,8 @@ impl GrainscopeApp {
             ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
                 leave = ui.button("Leave").on_hover_text("leave presenter mode (Esc)").clicked();
                 reset = ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked();
+                ui.toggle_value(&mut self.lecture_params, "Parameters")
+                    .on_hover_text("every parameter of the scene, over the plots");
                 toggle_notes = ui.selectable_label(notes, "Notes").on_hover_text("speaker notes (N)").clicked();
                 ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
                     ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).truncate());
@@ -194,9 +196,12 @@ impl GrainscopeApp {
             egui::ScrollArea::vertical().max_height(ctx.content_rect().height() * 0.55).show(ui, |ui| {
                 for (i, slide) in editor.deck.slides.iter_mut().enumerate() {
                     ui.push_id(i, |ui| {
+                        let mut number = None;
                         ui.horizontal(|ui| {
-                            ui.label(format!("{}.", i + 1));
-                            ui.add(egui::TextEdit::singleline(&mut slide.title).desired_width(220.0));
+                            let label = ui.label(format!("{}.", i + 1));
+                            number = Some(label.id);
+                            ui.add(egui::TextEdit::singleline(&mut slide.title).desired_width(220.0))
+                                .labelled_by(label.id);
                             if ui.add_enabled(i > 0, egui::Button::new("↑")).on_hover_text("move up").clicked() {
                                 action = Some(EditorAction::Swap(i - 1, i));
                             }
@@ -211,12 +216,15 @@ impl GrainscopeApp {
                                 action = Some(EditorAction::Remove(i));
                             }
                         });
-                        ui.add(
+                        let notes = ui.add(
                             egui::TextEdit::multiline(&mut slide.notes)
                                 .hint_text("speaker notes")
                                 .desired_rows(2)
                                 .desired_width(f32::INFINITY),
                         );
+                        if let Some(id) = number {
+                            notes.labelled_by(id);
+                        }
                     });
                 }
             });
@@ -225,12 +233,12 @@ impl GrainscopeApp {
             }
             ui.separator();
             ui.horizontal(|ui| {
-                let label = ui.label("file");
-                ui.add(egui::TextEdit::singleline(&mut editor.path).desired_width(240.0)).labelled_by(label.id);
-                if ui.button("Save").clicked() {
+                let label = ui.label("deck file");
+                ui.add(egui::TextEdit::singleline(&mut editor.path).desired_width(220.0)).labelled_by(label.id);
+                if ui.button("Save deck").clicked() {
                     action = Some(EditorAction::Save);
                 }
-                if ui.button("Open").clicked() {
+                if ui.button("Open deck").clicked() {
                     action = Some(EditorAction::Open);
                 }
             });

@@ -185,14 +185,19 @@ fn an_unreadable_session_file_starts_clean_and_is_kept() {
 
 /// The radius of the adhesion scene (m).
 fn monomer_radius(h: &Harness<'static, GrainscopeApp>) -> f64 {
-    let mut p = h.state().params().clone();
+    number(h.state().params(), "radius")
+}
+
+/// The value of the number parameter `key`, SI (NaN if there is none).
+fn number(p: &grainscope::scene::SceneParams, key: &str) -> f64 {
+    let mut p = p.clone();
     p.controls()
         .into_iter()
-        .find_map(|c| match (c.key, c.kind) {
-            ("radius", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
+        .find_map(|c| match c.kind {
+            grainscope::scene::ControlKind::Number { value, .. } if c.key == key => Some(*value),
             _ => None,
         })
-        .expect("radius")
+        .unwrap_or(f64::NAN)
 }
 
 #[test]
@@ -297,14 +302,7 @@ fn switching_scenes_and_themes_never_panics() {
 }
 
 fn velocity(h: &Harness<'static, GrainscopeApp>) -> f64 {
-    let mut p = h.state().params().clone();
-    p.controls()
-        .into_iter()
-        .find_map(|c| match (c.key, c.kind) {
-            ("velocity", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
-            _ => None,
-        })
-        .unwrap_or(f64::NAN)
+    number(h.state().params(), "velocity")
 }
 
 /// Runs frames until the open scene's result is ready.
@@ -490,16 +488,5 @@ fn a_deck_built_from_the_window_saves_each_state() {
     let deck = grainscope::deck::Deck::load(&path).unwrap_or_else(|e| panic!("{e}: {}", h.state().status()));
     assert_eq!(deck.params.len(), 2);
     assert_eq!(deck.params[1], slow);
-    assert_eq!(velocity_of(&deck.params[0]), 8.0);
-}
-
-fn velocity_of(p: &grainscope::scene::SceneParams) -> f64 {
-    let mut p = p.clone();
-    p.controls()
-        .into_iter()
-        .find_map(|c| match (c.key, c.kind) {
-            ("velocity", grainscope::scene::ControlKind::Number { value, .. }) => Some(*value),
-            _ => None,
-        })
-        .unwrap_or(f64::NAN)
+    assert_eq!(number(&deck.params[0], "velocity"), 8.0);
 }

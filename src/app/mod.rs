@@ -807,14 +807,8 @@ impl GrainscopeApp {
 
     /// Undoes the last parameter change (opening the scene it was made in).
     pub fn undo(&mut self) {
-        let params = self.session.params.clone();
-        let defaults = self.defaults.clone();
-        let current = |id: &str| {
-            params.get(id).cloned().unwrap_or_else(|| {
-                defaults.iter().find(|d| d.info().id == id).cloned().unwrap_or_else(|| defaults[0].clone())
-            })
-        };
-        match self.history.undo(current) {
+        let now = self.all_params();
+        match self.history.undo(|id| now(id)) {
             Some(step) => self.restore(step, "undone"),
             None => self.status = "nothing to undo".into(),
         }
@@ -822,16 +816,21 @@ impl GrainscopeApp {
 
     /// Redoes the last undone change.
     pub fn redo(&mut self) {
-        let params = self.session.params.clone();
-        let defaults = self.defaults.clone();
-        let current = |id: &str| {
-            params.get(id).cloned().unwrap_or_else(|| {
-                defaults.iter().find(|d| d.info().id == id).cloned().unwrap_or_else(|| defaults[0].clone())
-            })
-        };
-        match self.history.redo(current) {
+        let now = self.all_params();
+        match self.history.redo(|id| now(id)) {
             Some(step) => self.restore(step, "redone"),
             None => self.status = "nothing to redo".into(),
+        }
+    }
+
+    /// Every scene's parameters now, by scene id (a snapshot, so that the
+    /// history can be edited while it is read).
+    fn all_params(&self) -> impl Fn(&str) -> SceneParams + use<> {
+        let params = self.session.params.clone();
+        let defaults = self.defaults.clone();
+        move |id: &str| match params.get(id) {
+            Some(p) => p.clone(),
+            None => defaults.iter().find(|d| d.info().id == id).unwrap_or(&defaults[0]).clone(),
         }
     }
 

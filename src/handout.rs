@@ -74,7 +74,7 @@ pub fn frames(params: &SceneParams, out: &SceneOutput, frames: usize) -> Result<
     let mut probe = params.clone();
     if probe.cursor_mut().is_none() {
         return Err(SceneError::Param(scene::ParamError::Inconsistent(format!(
-            "scene '{}' has no time to play (scenes with a time cursor: hysteresis, rocking, disk-map, surface-density, mass-distribution)",
+            "scene '{}' has no time to play (scenes with a time cursor: hysteresis, rocking, growth-tracks, mass-distribution, surface-density, disk-map)",
             params.info().id
         ))));
     }

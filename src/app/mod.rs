@@ -1609,7 +1609,7 @@ impl GrainscopeApp {
         let full_cursor = self.params().cursor(&out);
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
-            Extra::None => None,
+            Extra::Paths(_) | Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
         // A slide may enlarge one figure: it leads across the full width,

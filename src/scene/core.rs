@@ -116,6 +116,20 @@ pub enum Extra {
     None,
     /// A recorded collision, for the sketch of the two spheres.
     Collision(Arc<Trajectory>),
+    /// Histories drawn on figures whose axes are not time (growth tracks):
+    /// the time of every point, so that a time cursor can follow them.
+    Paths(Arc<Vec<TimedPath>>),
+}
+
+/// A curve of a figure with the time of each of its points.
+#[derive(Debug, Clone, PartialEq)]
+pub struct TimedPath {
+    /// Figure id.
+    pub figure: String,
+    /// Time of each point (ascending), in the unit the scene's cursor shows.
+    pub times: Vec<f64>,
+    /// The points, in the figure's axis units.
+    pub points: Vec<[f64; 2]>,
 }
 
 /// What a scene computes.

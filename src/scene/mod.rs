@@ -20,7 +20,8 @@ pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Context, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory, logspace,
+    Caches, Context, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, Trajectory,
+    logspace,
 };
 pub use timeline::{Cursor, Mark};
 

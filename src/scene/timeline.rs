@@ -106,6 +106,38 @@ pub fn along_x(out: &SceneOutput, id: &str, x: f64) -> Vec<(String, Mark)> {
     marks
 }
 
+/// The time span of timed paths: (earliest positive time, latest time).
+pub fn span(paths: &[super::core::TimedPath]) -> Option<(f64, f64)> {
+    let times = paths.iter().flat_map(|p| p.times.iter().copied()).filter(|t| *t > 0.0 && t.is_finite());
+    let (lo, hi) = times.fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), t| (a.min(t), b.max(t)));
+    (lo < hi).then_some((lo, hi))
+}
+
+/// Where each timed path stands at time `t`: interpolated (in log) between
+/// its samples; a path that ended before `t` stays at its last point, one
+/// that starts after it is not marked.
+pub fn along_paths(paths: &[super::core::TimedPath], t: f64) -> Vec<(String, Mark)> {
+    let mut marks = Vec::new();
+    for p in paths {
+        let (Some(&first), Some(&last)) = (p.times.first(), p.times.last()) else { continue };
+        if t < first || p.points.len() != p.times.len() {
+            continue;
+        }
+        let at = if t >= last {
+            p.points[p.points.len() - 1]
+        } else {
+            let k = p.times.partition_point(|&x| x <= t).clamp(1, p.times.len() - 1);
+            let (t0, t1) = (p.times[k - 1], p.times[k]);
+            let f = if t0 > 0.0 && t1 > t0 { (t / t0).ln() / (t1 / t0).ln() } else { 0.0 };
+            let (a, b) = (p.points[k - 1], p.points[k]);
+            let mix = |u: f64, v: f64| if u > 0.0 && v > 0.0 { u * (v / u).powf(f) } else { u + f * (v - u) };
+            [mix(a[0], b[0]), mix(a[1], b[1])]
+        };
+        marks.push((p.figure.clone(), Mark::Point(at)));
+    }
+    marks
+}
+
 /// The y of a polyline at `x` (the first segment that spans it), or none
 /// when it does not reach `x`.
 fn interpolate(points: &[[f64; 2]], x: f64, xs: Scale, ys: Scale) -> Option<f64> {
@@ -178,6 +210,24 @@ mod tests {
         assert!((p[1] - 100.0).abs() < 1e-9, "{p:?}");
         assert_eq!(marks.len(), 3, "the later line starts at 10 and is marked there");
         assert_eq!(along_x(&out, "f", 2.0).len(), 2, "before the later line starts");
+    }
+
+    /// A timed path is followed in log time and stays at its end.
+    #[test]
+    fn timed_paths_are_followed() {
+        let path = crate::scene::core::TimedPath {
+            figure: "f".into(),
+            times: vec![1.0, 100.0],
+            points: vec![[1.0, 10.0], [100.0, 1000.0]],
+        };
+        let late = crate::scene::core::TimedPath { times: vec![50.0, 100.0], ..path.clone() };
+        let paths = [path, late];
+        assert_eq!(span(&paths), Some((1.0, 100.0)));
+        let marks = along_paths(&paths, 10.0);
+        assert_eq!(marks.len(), 1, "the late path has not started");
+        let Mark::Point(p) = marks[0].1 else { panic!("a point") };
+        assert!((p[0] - 10.0).abs() < 1e-9 && (p[1] - 100.0).abs() < 1e-9, "{p:?}");
+        assert_eq!(along_paths(&paths, 1e4)[0].1, Mark::Point([100.0, 1000.0]));
     }
 
     /// Applying a cursor adds its marks as series, a time line spanning the data.

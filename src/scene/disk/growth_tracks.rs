@@ -4,7 +4,8 @@
 use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange};
 use super::common::GrowthParams;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace};
+use crate::scene::timeline;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
@@ -36,6 +37,13 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
     }
+
+    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+        let Extra::Paths(paths) = &out.extra else { return None };
+        let t = timeline::time_at(timeline::span(paths)?, p.cursor, crate::figure::Scale::Log);
+        let marks = timeline::along_paths(paths, t);
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
+    }
 }
 
 /// Parameters of the growth-track scene.
@@ -56,6 +64,8 @@ pub struct Params {
     pub duration_yr: f64,
     /// Include the compact tracks.
     pub compact: bool,
+    /// Time cursor, as a fraction of the run in log time (styling only).
+    pub cursor: f64,
 }
 
 impl Default for Params {
@@ -68,6 +78,7 @@ impl Default for Params {
             tracks: 30,
             duration_yr: 1e6,
             compact: true,
+            cursor: 0.0,
         }
     }
 }
@@ -83,6 +94,7 @@ impl Params {
         c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1.0, 200.0).doc("starting radii, log-spaced"));
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
+        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time at which every track is marked, as a fraction of the run in log time").style_only());
         c
     }
 
@@ -179,5 +191,12 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             unit: "",
         },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    // Every track with the time of each point, for the time cursor.
+    let mut paths = Vec::new();
+    for t in compact.iter().chain(&porous) {
+        let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
+        paths.push(TimedPath { figure: "growth-tracks-mass".into(), times: times.clone(), points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect() });
+        paths.push(TimedPath { figure: "growth-tracks-size".into(), times, points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect() });
+    }
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: Extra::Paths(std::sync::Arc::new(paths)) })
 }

@@ -876,29 +876,31 @@ impl GrainscopeApp {
     /// The list of keyboard shortcuts, over everything.
     fn help_overlay(&mut self, ctx: &egui::Context) {
         let mut open = true;
+        let height = ctx.content_rect().height() * 0.86;
         egui::Window::new("Keyboard shortcuts")
             .open(&mut open)
             .collapsible(false)
+            .default_height(height)
             .anchor(egui::Align2::CENTER_CENTER, [0.0, 0.0])
             .show(ctx, |ui| {
-                egui::ScrollArea::vertical().max_height(ctx.content_rect().height() * 0.8).show(ui, |ui| {
-                    for mode in [Mode::Anywhere, Mode::Explorer, Mode::Presenter] {
-                        ui.label(egui::RichText::new(mode.heading()).strong());
-                        egui::Grid::new(("shortcuts", mode.heading())).num_columns(2).striped(true).show(ui, |ui| {
+                egui::ScrollArea::vertical().max_height(height - 40.0).show(ui, |ui| {
+                    // One grid, so that the keys line up across the three lists.
+                    egui::Grid::new("shortcuts").num_columns(2).striped(true).show(ui, |ui| {
+                        for mode in [Mode::Anywhere, Mode::Explorer, Mode::Presenter] {
+                            ui.label(egui::RichText::new(mode.heading()).strong());
+                            ui.end_row();
                             for s in shortcuts::SHORTCUTS.iter().filter(|s| s.mode == mode) {
-                                let keys: Vec<String> = s.keys.iter().map(|k| k.text()).collect();
                                 let keys = if matches!(s.action, Action::Slide(_)) {
                                     "1 … 9".to_string()
                                 } else {
-                                    keys.join(", ")
+                                    s.keys.iter().map(|k| k.text()).collect::<Vec<_>>().join(", ")
                                 };
                                 ui.label(egui::RichText::new(keys).monospace());
                                 ui.label(s.text);
                                 ui.end_row();
                             }
-                        });
-                        ui.add_space(6.0);
-                    }
+                        }
+                    });
                 });
             });
         self.help = self.help && open;
@@ -1530,7 +1532,8 @@ impl GrainscopeApp {
                 t = playback::step(t, -1.0);
             }
             let play = if self.playback.playing { "❚❚ Pause" } else { "▶ Play" };
-            if ui.button(play).on_hover_text("play or pause (Space, P)").clicked() {
+            let keys = if self.presenter.is_some() { "play or pause (P)" } else { "play or pause (Space, P)" };
+            if ui.button(play).on_hover_text(keys).clicked() {
                 self.toggle_play();
                 t = self.time().unwrap_or(t);
             }

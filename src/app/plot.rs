@@ -678,15 +678,28 @@ fn draw_items(
     let c = if look.dark { Color32::WHITE } else { Color32::BLACK };
     for mark in &overlay.cursor {
         match mark {
-            Mark::Point(p) => {
+            Mark::Point(p, color) => {
                 if let (Some(x), Some(y)) = (transform(p[0], fig.x.scale), transform(p[1], fig.y.scale)) {
+                    // A dot in the text colour; one on a curve of several
+                    // has its curve's colour inside the ring.
                     plot_ui.points(
                         Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
                             .color(c)
                             .radius(look.line * 2.8)
                             .shape(MarkerShape::Circle)
-                            .filled(true),
+                            .filled(true)
+                            .allow_hover(false),
                     );
+                    if let Some(k) = color {
+                        plot_ui.points(
+                            Points::new("time cursor", PlotPoints::from(vec![[x, y]]))
+                                .color(rgb(crate::figure::PALETTE[k % crate::figure::PALETTE.len()], false))
+                                .radius(look.line * 1.9)
+                                .shape(MarkerShape::Circle)
+                                .filled(true)
+                                .allow_hover(false),
+                        );
+                    }
                 }
             }
             Mark::Time(x) => {

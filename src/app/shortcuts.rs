@@ -116,6 +116,8 @@ impl Chord {
         let name = match self.key {
             Key::ArrowRight => "→".to_string(),
             Key::ArrowLeft => "←".to_string(),
+            Key::ArrowUp => "↑".to_string(),
+            Key::ArrowDown => "↓".to_string(),
             Key::Questionmark => "?".to_string(),
             Key::Comma => ",".to_string(),
             Key::Period => ".".to_string(),

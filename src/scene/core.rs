@@ -126,6 +126,8 @@ pub enum Extra {
 pub struct TimedPath {
     /// Figure id.
     pub figure: String,
+    /// Palette colour of the curve, for its cursor mark.
+    pub color: Option<usize>,
     /// Time of each point (ascending), in the unit the scene's cursor shows.
     pub times: Vec<f64>,
     /// The points, in the figure's axis units.

@@ -9,8 +9,10 @@ use crate::figure::{Figure, Fill, Scale, Series, Shape, Style};
 /// What a time cursor marks on one figure, in the figure's axis units.
 #[derive(Debug, Clone, PartialEq)]
 pub enum Mark {
-    /// A point: where a history stands at the cursor's time.
-    Point([f64; 2]),
+    /// A point: where a history stands at the cursor's time, with the
+    /// palette colour of the curve it sits on when several share a time
+    /// (so that each dot tells its curve).
+    Point([f64; 2], Option<usize>),
     /// A vertical line at this x (the cursor's time on a time axis).
     Time(f64),
     /// A whole curve: the snapshot the cursor selects.
@@ -54,10 +56,13 @@ impl Cursor {
             for mark in marks {
                 // The points share one legend entry; the time line is named by the time.
                 let series = match mark {
-                    Mark::Point(p) => {
-                        Series::new("time cursor", vec![p], Style::Symbol(Shape::Circle, Fill::Filled), CURSOR_COLOR)
-                            .keyed("time cursor")
-                    }
+                    Mark::Point(p, color) => Series::new(
+                        "time cursor",
+                        vec![p],
+                        Style::Symbol(Shape::Circle, Fill::Filled),
+                        color.unwrap_or(CURSOR_COLOR),
+                    )
+                    .keyed("time cursor"),
                     Mark::Time(x) => match y_range {
                         Some([lo, hi]) => {
                             Series::new(self.label.clone(), vec![[x, lo], [x, hi]], Style::Dotted, CURSOR_COLOR)
@@ -100,7 +105,7 @@ pub fn along_x(out: &SceneOutput, id: &str, x: f64) -> Vec<(String, Mark)> {
     let mut marks = vec![(id.to_string(), Mark::Time(x))];
     for s in fig.series.iter().filter(|s| s.style == Style::Line) {
         if let Some(y) = interpolate(&s.points, x, fig.x.scale, fig.y.scale) {
-            marks.push((id.to_string(), Mark::Point([x, y])));
+            marks.push((id.to_string(), Mark::Point([x, y], Some(s.color))));
         }
     }
     marks
@@ -133,7 +138,7 @@ pub fn along_paths(paths: &[super::core::TimedPath], t: f64) -> Vec<(String, Mar
             let mix = |u: f64, v: f64| if u > 0.0 && v > 0.0 { u * (v / u).powf(f) } else { u + f * (v - u) };
             [mix(a[0], b[0]), mix(a[1], b[1])]
         };
-        marks.push((p.figure.clone(), Mark::Point(at)));
+        marks.push((p.figure.clone(), Mark::Point(at, p.color)));
     }
     marks
 }
@@ -206,7 +211,7 @@ mod tests {
         assert!((t - 10.0).abs() < 1e-12);
         let marks = along_x(&out, "f", t);
         assert_eq!(marks[0].1, Mark::Time(t));
-        let Mark::Point(p) = marks[1].1 else { panic!("a point") };
+        let Mark::Point(p, _) = marks[1].1 else { panic!("a point") };
         assert!((p[1] - 100.0).abs() < 1e-9, "{p:?}");
         assert_eq!(marks.len(), 3, "the later line starts at 10 and is marked there");
         assert_eq!(along_x(&out, "f", 2.0).len(), 2, "before the later line starts");
@@ -217,6 +222,7 @@ mod tests {
     fn timed_paths_are_followed() {
         let path = crate::scene::core::TimedPath {
             figure: "f".into(),
+            color: None,
             times: vec![1.0, 100.0],
             points: vec![[1.0, 10.0], [100.0, 1000.0]],
         };
@@ -225,9 +231,9 @@ mod tests {
         assert_eq!(span(&paths), Some((1.0, 100.0)));
         let marks = along_paths(&paths, 10.0);
         assert_eq!(marks.len(), 1, "the late path has not started");
-        let Mark::Point(p) = marks[0].1 else { panic!("a point") };
+        let Mark::Point(p, _) = marks[0].1 else { panic!("a point") };
         assert!((p[0] - 10.0).abs() < 1e-9 && (p[1] - 100.0).abs() < 1e-9, "{p:?}");
-        assert_eq!(along_paths(&paths, 1e4)[0].1, Mark::Point([100.0, 1000.0]));
+        assert_eq!(along_paths(&paths, 1e4)[0].1, Mark::Point([100.0, 1000.0], None));
     }
 
     /// Applying a cursor adds its marks as series, a time line spanning the data.
@@ -237,7 +243,8 @@ mod tests {
         let cursor = Cursor { fraction: 0.5, label: String::new(), marks: along_x(&out, "f", 10.0), optional: false };
         let mut figs = out.figures.clone();
         cursor.apply(&mut figs);
-        let added: Vec<&Series> = figs[0].series.iter().filter(|s| s.color == CURSOR_COLOR).collect();
+        let before = out.figures[0].series.len();
+        let added: Vec<&Series> = figs[0].series[before..].iter().collect();
         assert_eq!(added.len(), 3);
         assert_eq!(added[0].points, vec![[10.0, 1.0], [10.0, 1e4]]);
         let legend = figs[0].legend();

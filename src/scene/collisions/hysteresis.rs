@@ -50,8 +50,8 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
         let Extra::Collision(t) = &out.extra else { return None };
         let s = t.sample_at(p.cursor)?;
         let mut marks = vec![
-            ("contact-radius".to_string(), Mark::Point([s[1] * 1e9, s[2] * 1e9])),
-            ("elastic-force".to_string(), Mark::Point([s[1] * 1e9, s[3] * 1e6])),
+            ("contact-radius".to_string(), Mark::Point([s[1] * 1e9, s[2] * 1e9], None)),
+            ("elastic-force".to_string(), Mark::Point([s[1] * 1e9, s[3] * 1e6], None)),
         ];
         marks.extend(timeline::along_x(out, "energy-budget", s[0] * 1e9));
         Some(Cursor { fraction: p.cursor, label: format!("t = {} ns", crate::figure::human(s[0] * 1e9)), marks, optional: false })

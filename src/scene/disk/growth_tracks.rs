@@ -193,10 +193,11 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     ];
     // Every track with the time of each point, for the time cursor.
     let mut paths = Vec::new();
-    for t in compact.iter().chain(&porous) {
+    for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
+        let color = Some(color);
         let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
-        paths.push(TimedPath { figure: "growth-tracks-mass".into(), times: times.clone(), points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect() });
-        paths.push(TimedPath { figure: "growth-tracks-size".into(), times, points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect() });
+        paths.push(TimedPath { figure: "growth-tracks-mass".into(), color, times: times.clone(), points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect() });
+        paths.push(TimedPath { figure: "growth-tracks-size".into(), color, times, points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect() });
     }
     Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: Extra::Paths(std::sync::Arc::new(paths)) })
 }

@@ -194,7 +194,8 @@ mod tests {
         assert!(first[0].abs() < 1e-6, "contact starts at δ = 0: {first:?}");
         assert!(mid[1] > 0.0 && mid != last, "{mid:?} {last:?}");
         let budget = played[2].iter().find(|f| f.id == "energy-budget").expect("budget");
-        let marks = budget.series.len() - out.figures.iter().find(|f| f.id == "energy-budget").map_or(0, |f| f.series.len());
+        let marks =
+            budget.series.len() - out.figures.iter().find(|f| f.id == "energy-budget").map_or(0, |f| f.series.len());
         assert!(marks >= 6, "a time line and five energies: {marks}");
     }
 

@@ -371,6 +371,13 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     h.key_press(egui::Key::N);
     settle(&mut h);
     h.get_by_label_contains("Notes of the third slide");
+    // The notes also open in a window of their own, with what comes next.
+    h.key_press(egui::Key::W);
+    settle(&mut h);
+    h.get_by_label("last slide");
+    h.key_press(egui::Key::W);
+    settle(&mut h);
+    assert!(h.query_by_label("last slide").is_none());
     h.key_press(egui::Key::Escape);
     settle(&mut h);
     assert!(h.state().presenting().is_none());

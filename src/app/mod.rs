@@ -692,6 +692,7 @@ impl GrainscopeApp {
             self.lecture_params = open;
         }
         self.deck_editor(&ctx);
+        self.notes_window(&ctx);
         if self.help {
             self.help_overlay(&ctx);
         }
@@ -748,6 +749,11 @@ impl GrainscopeApp {
                 }
             }
             Action::ToggleNotes => self.toggle_notes(),
+            Action::NotesWindow => {
+                if let Some(p) = &mut self.presenter {
+                    p.notes_window = !p.notes_window;
+                }
+            }
             Action::ResetSlide => self.reset_slide(),
         }
     }

@@ -12,8 +12,11 @@ pub struct Presenter {
     pub deck: LoadedDeck,
     /// The slide shown (0-based).
     pub index: usize,
-    /// Whether the speaker notes are shown.
+    /// Whether the speaker notes are shown under the plots.
     pub notes: bool,
+    /// Whether the speaker notes are shown in a window of their own, which
+    /// the lecturer keeps on a second screen.
+    pub notes_window: bool,
     /// Whether lecture mode was on before presenting (restored on leaving).
     lecture_before: bool,
 }
@@ -54,7 +57,7 @@ impl GrainscopeApp {
             None => self.session.lecture,
         };
         let n = deck.deck.slides.len();
-        self.presenter = Some(Presenter { deck, index: 0, notes: false, lecture_before });
+        self.presenter = Some(Presenter { deck, index: 0, notes: false, notes_window: false, lecture_before });
         self.session.lecture = true;
         self.go_to_slide(at.min(n.saturating_sub(1)));
     }
@@ -103,6 +106,8 @@ impl GrainscopeApp {
         let (i, n) = (p.index, p.deck.deck.slides.len());
         let title = p.slide().title.clone();
         let notes = p.notes;
+        let notes_window = p.notes_window;
+        let mut toggle_window = false;
         let mut go: Option<isize> = None;
         let mut toggle_notes = false;
         let mut reset = false;
@@ -122,7 +127,12 @@ impl GrainscopeApp {
                 reset = ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked();
                 ui.toggle_value(&mut self.lecture_params, "Parameters")
                     .on_hover_text("every parameter of the scene, over the plots");
-                toggle_notes = ui.selectable_label(notes, "Notes").on_hover_text("speaker notes (N)").clicked();
+                toggle_notes =
+                    ui.selectable_label(notes, "Notes").on_hover_text("speaker notes under the plots (N)").clicked();
+                toggle_window = ui
+                    .selectable_label(notes_window, "Notes window")
+                    .on_hover_text("speaker notes in a window of their own, for a second screen (W)")
+                    .clicked();
                 ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
                     ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).truncate());
                 });
@@ -137,6 +147,9 @@ impl GrainscopeApp {
         }
         if toggle_notes {
             self.toggle_notes();
+        }
+        if toggle_window {
+            self.act(super::shortcuts::Action::NotesWindow);
         }
         if reset {
             self.reset_slide();
@@ -167,6 +180,68 @@ impl GrainscopeApp {
         egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
             ui.add(egui::Label::new(egui::RichText::new(&p.slide().notes).size(17.0)).wrap());
         });
+    }
+
+    /// The speaker notes in a window of their own (a separate window where
+    /// the platform has them): this slide's title and notes, the next
+    /// slide's title, and the slide keys, which work there too.
+    pub(super) fn notes_window(&mut self, ctx: &egui::Context) {
+        let Some(p) = &self.presenter else { return };
+        if !p.notes_window {
+            return;
+        }
+        let (i, n) = (p.index, p.deck.deck.slides.len());
+        let slide = p.slide().clone();
+        let next = p.deck.deck.slides.get(i + 1).map(|s| s.title.clone());
+        let mut actions = Vec::new();
+        let mut close = false;
+        ctx.show_viewport_immediate(
+            egui::ViewportId::from_hash_of("grainscope-notes"),
+            egui::ViewportBuilder::default().with_title("grainscope — speaker notes").with_inner_size([640.0, 480.0]),
+            |ui, class| {
+                let ctx = ui.ctx().clone();
+                if ctx.input(|i| i.viewport().close_requested()) {
+                    close = true;
+                }
+                // Keys pressed in a window of its own are its own; an
+                // embedded window shares the main window's keys.
+                if class != egui::ViewportClass::EmbeddedWindow {
+                    actions = super::shortcuts::pressed(&ctx, super::shortcuts::Mode::Presenter);
+                }
+                let mut body = |ui: &mut egui::Ui| {
+                    ui.horizontal(|ui| {
+                        if ui.button("◀").clicked() {
+                            actions.push(super::shortcuts::Action::PreviousSlide);
+                        }
+                        ui.label(egui::RichText::new(format!("{} / {n}", i + 1)).strong());
+                        if ui.button("▶").clicked() {
+                            actions.push(super::shortcuts::Action::NextSlide);
+                        }
+                        ui.add(egui::Label::new(egui::RichText::new(&slide.title).heading().strong()).truncate());
+                    });
+                    ui.separator();
+                    egui::ScrollArea::vertical().max_height((ui.available_height() - 30.0).max(80.0)).show(ui, |ui| {
+                        ui.add(egui::Label::new(egui::RichText::new(&slide.notes).size(18.0)).wrap());
+                    });
+                    ui.separator();
+                    ui.label(match &next {
+                        Some(t) => format!("next: {t}"),
+                        None => "last slide".to_string(),
+                    });
+                };
+                if class == egui::ViewportClass::EmbeddedWindow {
+                    body(ui);
+                } else {
+                    egui::CentralPanel::default().show(ui, |ui| body(ui));
+                }
+            },
+        );
+        for a in actions {
+            self.act(a);
+        }
+        if close && let Some(p) = &mut self.presenter {
+            p.notes_window = false;
+        }
     }
 
     /// The slide's highlighted controls in one row, after the headline.

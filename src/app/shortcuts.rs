@@ -71,6 +71,8 @@ pub enum Action {
     Slide(usize),
     /// Speaker notes on or off.
     ToggleNotes,
+    /// Speaker notes in a window of their own on or off.
+    NotesWindow,
     /// Restore the slide as the deck defines it.
     ResetSlide,
 }
@@ -251,6 +253,12 @@ pub const SHORTCUTS: &[Shortcut] = &[
         action: Action::ToggleNotes,
         mode: Mode::Presenter,
         text: "speaker notes on or off",
+    },
+    Shortcut {
+        keys: &[key(Key::W)],
+        action: Action::NotesWindow,
+        mode: Mode::Presenter,
+        text: "speaker notes in a window of their own (for a second screen)",
     },
     Shortcut {
         keys: &[key(Key::R)],

@@ -2,7 +2,7 @@
 
 use crate::files::{FileSet, write_atomically};
 use crate::preset::{Preset, SHIPPED, resolve};
-use crate::provenance::{Stamp, figure_bytes};
+use crate::provenance::{Stamp, stage_figures};
 use crate::scene::{self, Progress, SceneOutput};
 use anyhow::{Context, Result, bail};
 use clap::{Parser, Subcommand};
@@ -157,13 +157,7 @@ pub fn write_outputs(out: &SceneOutput, preset: Option<&Preset>, dir: &Path) -> 
     let figures = preset.map_or_else(|| out.figures.clone(), |p| p.scene.exported_figures(out));
     let mut set = FileSet::new();
     let staged = (|| -> Result<()> {
-        for fig in &figures {
-            for ext in ["csv", "svg", "png"] {
-                let bytes = figure_bytes(fig, ext, crate::figure::EXPORT_SIZE, stamp.as_ref())
-                    .with_context(|| format!("cannot write figure '{}' as {ext}", fig.id))?;
-                set.stage(&dir.join(format!("{}.{ext}", fig.id)), &bytes)?;
-            }
-        }
+        stage_figures(&mut set, &figures, dir, "", stamp.as_ref())?;
         let text = serde_json::to_string_pretty(&out.scalars_json())?;
         set.stage(&dir.join("scalars.json"), text.as_bytes())?;
         Ok(())

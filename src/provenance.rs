@@ -115,6 +115,27 @@ pub fn figure_bytes(fig: &Figure, ext: &str, size: (u32, u32), stamp: Option<&St
     }
 }
 
+/// Stages every figure as CSV, SVG and PNG (at [`crate::figure::EXPORT_SIZE`],
+/// each carrying `stamp`) into `set`, as `dir/PREFIX ID.EXT`; nothing is
+/// written until the set is committed.
+pub fn stage_figures(
+    set: &mut crate::files::FileSet,
+    figures: &[Figure],
+    dir: &Path,
+    prefix: &str,
+    stamp: Option<&Stamp>,
+) -> anyhow::Result<()> {
+    use anyhow::Context as _;
+    for fig in figures {
+        for ext in ["csv", "svg", "png"] {
+            let bytes = figure_bytes(fig, ext, crate::figure::EXPORT_SIZE, stamp)
+                .with_context(|| format!("cannot write figure '{}' as {ext}", fig.id))?;
+            set.stage(&dir.join(format!("{prefix}{}.{ext}", fig.id)), &bytes)?;
+        }
+    }
+    Ok(())
+}
+
 /// "grainscope VERSION".
 pub fn program() -> String {
     format!("grainscope {}", env!("CARGO_PKG_VERSION"))

@@ -453,7 +453,15 @@ fn an_exported_figure_reopens_its_state() {
     h.state_mut().session.export_dir = dir.path().display().to_string();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::E);
     h.run();
+    // The files are written on a thread of their own.
     let png = dir.path().join("hysteresis-energy-budget.png");
+    for _ in 0..400 {
+        if h.state().status().starts_with("wrote the export") {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(25));
+        h.step();
+    }
     assert!(png.exists(), "{}", h.state().status());
     h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(5.0);
     h.run();

@@ -36,7 +36,8 @@ impl History {
     /// seen becomes one undo step (and clears the redo stack).
     pub fn observe(&mut self, id: &str, now: &SceneParams) {
         match self.baseline.get(id) {
-            Some(before) if differ(before, now) => {
+            // Most frames change nothing: equal sets need no closer look.
+            Some(before) if before != now && differ(before, now) => {
                 let step = vec![(id.to_string(), before.clone())];
                 self.push(step);
                 self.redo.clear();

@@ -113,7 +113,8 @@ enum Job {
 /// What a file dialog returned.
 enum Dialog {
     Open(Option<PathBuf>),
-    Movie(Result<Vec<PathBuf>, String>),
+    /// Files written on a thread of their own: what they were, and the result.
+    Written(&'static str, Result<Vec<PathBuf>, String>),
     Save(Option<PathBuf>),
     Export(Option<PathBuf>, Box<Figure>),
     ImportData(Option<PathBuf>),
@@ -368,25 +369,16 @@ impl GrainscopeApp {
     /// file without embedded state). A file that cannot be used changes
     /// nothing and says why.
     pub fn open_file(&mut self, path: &Path) {
-        let shown = path.display().to_string();
         let is_csv = path.extension().is_some_and(|e| e.eq_ignore_ascii_case("csv"));
-        if crate::provenance::may_carry_state(path) {
-            match crate::provenance::read(path) {
-                Ok(p) => self.apply_preset(p, &shown),
-                Err(crate::provenance::ProvenanceError::Missing(_)) if is_csv => self.import_data(path),
-                Err(e) => self.error = Some(format!("nothing changed: {e}")),
-            }
+        if is_csv && matches!(crate::provenance::read(path), Err(crate::provenance::ProvenanceError::Missing(_))) {
+            self.import_data(path);
             return;
         }
-        match Preset::load(path) {
-            Ok(p) => self.apply_preset(p, &shown),
-            Err(preset_error) => match crate::deck::Deck::load(path) {
-                Ok(d) => self.present(d, 0),
-                Err(crate::deck::DeckError::Syntax { .. }) | Err(crate::deck::DeckError::Read { .. }) => {
-                    self.error = Some(format!("preset not loaded, nothing changed: {preset_error}"))
-                }
-                Err(e) => self.error = Some(format!("deck not loaded, nothing changed: {e}")),
-            },
+        let shown = path.display().to_string();
+        match open_named(&path.to_string_lossy()) {
+            Ok(Opened::Preset(p)) => self.apply_preset(*p, &shown),
+            Ok(Opened::Deck(d)) => self.present(d, 0),
+            Err(message) => self.error = Some(format!("{message}; nothing changed")),
         }
     }
 
@@ -457,17 +449,19 @@ impl GrainscopeApp {
         while let Ok(d) = self.dialogs.1.try_recv() {
             match d {
                 Dialog::Open(Some(p)) => self.open_file(&p),
-                Dialog::Movie(result) => {
-                    self.movie_running = false;
+                Dialog::Written(what, result) => {
+                    if what == "movie" {
+                        self.movie_running = false;
+                    }
                     match result {
                         Ok(files) => {
                             self.status = format!(
-                                "wrote the movie: {} files, {}",
+                                "wrote the {what}: {} files, {}",
                                 files.len(),
                                 files.last().map_or(String::new(), |f| f.display().to_string())
                             )
                         }
-                        Err(e) => self.error = Some(format!("movie not written: {e}")),
+                        Err(e) => self.error = Some(format!("{what} not written, earlier files untouched: {e}")),
                     }
                 }
                 Dialog::Save(Some(p)) => self.save_preset_file(&p),
@@ -539,10 +533,18 @@ impl GrainscopeApp {
 
     /// The open scene's time cursor over `out` when its marks are shown.
     fn shown_cursor(&self, out: &SceneOutput) -> Option<scene::Cursor> {
-        self.params().cursor(out).filter(|c| !c.optional || self.timeline_shown.contains(&self.session.index()))
+        self.params().cursor(out).filter(|c| self.marks_shown(c))
     }
 
-    /// Exports every figure of the open scene (PNG, SVG, CSV) to the export folder.
+    /// Whether a cursor's marks are drawn: always, or once the open scene's
+    /// history was played or scrubbed.
+    fn marks_shown(&self, cursor: &scene::Cursor) -> bool {
+        !cursor.optional || self.timeline_shown.contains(&self.session.index())
+    }
+
+    /// Exports every figure of the open scene (PNG, SVG, CSV, as drawn and
+    /// carrying its state) to the export folder, all or nothing, rendered on
+    /// a thread of its own.
     fn export_all(&mut self) {
         let Some(out) = self.outputs[self.session.index()].clone() else { return };
         let dir = PathBuf::from(&self.session.export_dir);
@@ -550,15 +552,24 @@ impl GrainscopeApp {
             self.error = Some(format!("cannot create export folder {}: {e}", dir.display()));
             return;
         }
-        let id = self.params().info().id;
-        for fig in self.drawn_figures(&out) {
-            for ext in ["png", "svg", "csv"] {
-                self.export(&fig, &dir.join(format!("{id}-{}.{ext}", fig.id)));
+        let stamp = match crate::provenance::Stamp::of(&self.current_preset()) {
+            Ok(s) => s,
+            Err(e) => {
+                self.error = Some(format!("export failed: {e}"));
+                return;
             }
-        }
-        if self.error.is_none() {
-            self.status = format!("exported {} figures to {}", out.figures.len(), dir.display());
-        }
+        };
+        let figures = self.drawn_figures(&out);
+        let prefix = format!("{}-", self.params().info().id);
+        let tx = self.dialogs.0.clone();
+        self.status = format!("exporting {} figures to {}…", figures.len(), dir.display());
+        std::thread::spawn(move || {
+            let mut set = crate::files::FileSet::new();
+            let result = crate::provenance::stage_figures(&mut set, &figures, &dir, &prefix, Some(&stamp))
+                .and_then(|()| Ok(set.commit()?))
+                .map_err(|e| format!("{e:#}"));
+            let _ = tx.send(Dialog::Written("export", result));
+        });
     }
 
     /// Writes the open scene's played history as frames (and an animated
@@ -575,7 +586,7 @@ impl GrainscopeApp {
         std::thread::spawn(move || {
             let result =
                 crate::handout::movie(&preset, 48, None, true, 12, &dir, &|| false).map_err(|e| format!("{e:#}"));
-            let _ = tx.send(Dialog::Movie(result));
+            let _ = tx.send(Dialog::Written("movie", result));
         });
     }
 
@@ -1515,7 +1526,7 @@ impl GrainscopeApp {
 
     /// The transport, when the open scene's result is a history.
     fn transport_row(&mut self, ui: &mut egui::Ui) {
-        let Some(out) = self.output().cloned() else { return };
+        let Some(out) = self.outputs[self.session.index()].clone() else { return };
         if let Some(c) = self.params().cursor(&out) {
             self.transport(ui, &c.label);
         }
@@ -1646,8 +1657,8 @@ impl GrainscopeApp {
             (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(min_h),
         );
         let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
-        let cursor = self.shown_cursor(&out);
         let cursor_fraction = full_cursor.as_ref().map_or(0.0, |c| c.fraction);
+        let cursor = full_cursor.filter(|c| self.marks_shown(c));
         let mut export: Option<(Figure, &'static str)> = None;
         self.plot_rects.clear();
         let look = self.plot_look(ui);

@@ -44,7 +44,7 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         let (lo, hi) = fig.family_range()?;
         let t = timeline::time_at((lo, hi), p.cursor, Scale::Log);
         let (mark, shown) = timeline::snapshot(out, "surface-density", t)?;
-        let label = format!("t = {} yr (dust at the nearest snapshot)", crate::figure::human(shown));
+        let label = format!("t = {} yr (nearest snapshot)", crate::figure::human(shown));
         Some(Cursor { fraction: p.cursor, label, marks: vec![mark], optional: true })
     }
 }

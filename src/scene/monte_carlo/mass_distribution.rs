@@ -49,7 +49,7 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
         let mut label = format!("t = {} yr", crate::figure::human(t));
         if let Some((mark, shown)) = timeline::snapshot(out, "mass-distribution", t) {
             marks.push(mark);
-            label.push_str(&format!("; distribution at {} yr", crate::figure::human(shown)));
+            label.push_str(&format!(" (snapshot {} yr)", crate::figure::human(shown)));
         }
         Some(Cursor { fraction: p.cursor, label, marks, optional: true })
     }

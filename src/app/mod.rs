@@ -3,6 +3,8 @@
 //! worker thread for heavy ones.
 
 mod history;
+mod inspector;
+mod monomer_card;
 mod playback;
 mod plot;
 mod presenter;
@@ -128,6 +130,27 @@ struct Sweep {
     steps: usize,
 }
 
+/// Which of the open scene's controls to draw.
+#[derive(Clone, Copy)]
+enum Select<'a> {
+    /// All but those on the monomer card.
+    Parameters,
+    /// The monomer card's.
+    Card,
+    /// A slide's highlighted parameters, side by side.
+    Slide(&'a [String]),
+}
+
+impl Select<'_> {
+    fn id(&self) -> u8 {
+        match self {
+            Select::Parameters => 0,
+            Select::Card => 1,
+            Select::Slide(_) => 2,
+        }
+    }
+}
+
 /// The explorer application.
 pub struct GrainscopeApp {
     /// Persisted state.
@@ -182,6 +205,10 @@ pub struct GrainscopeApp {
     deck_editor: presenter::DeckEditor,
     /// Whether a movie is being written.
     movie_running: bool,
+    /// The monomer shared between scenes.
+    monomer_link: monomer_card::MonomerLink,
+    /// The point of a figure last clicked, and what the model says there.
+    inspected: Option<inspector::Inspected>,
 }
 
 impl GrainscopeApp {
@@ -222,6 +249,8 @@ impl GrainscopeApp {
             presenter: None,
             deck_editor: presenter::DeckEditor::default(),
             movie_running: false,
+            monomer_link: Default::default(),
+            inspected: None,
         }
     }
 
@@ -331,7 +360,12 @@ impl GrainscopeApp {
     pub fn apply_preset(&mut self, preset: Preset, origin: &str) {
         let id = preset.scene.info().id;
         self.session.scene = id.to_string();
+        let shared = preset.scene.monomer_card().filter(|_| !preset.scene.own_monomer());
         self.session.params.insert(id.to_string(), preset.scene);
+        // The preset's monomer becomes the monomer of every linked scene.
+        if let Some(card) = shared {
+            self.share_monomer(self.session.index(), &card);
+        }
         self.status = format!("loaded preset '{}' from {origin}", preset.title);
         self.error = None;
         self.control_notice = None;
@@ -704,9 +738,11 @@ impl GrainscopeApp {
         }
         self.deck_editor(&ctx);
         self.notes_window(&ctx);
+        self.inspection_window(&ctx);
         if self.help {
             self.help_overlay(&ctx);
         }
+        self.link_monomer();
         // A whole slider drag is one step of the history.
         if !ctx.input(|i| i.pointer.any_down()) {
             let now = self.params().clone();
@@ -1194,17 +1230,34 @@ impl GrainscopeApp {
     }
 
     fn controls(&mut self, ui: &mut egui::Ui) {
-        self.controls_of(ui, None);
+        if self.params().monomer_card().is_some() {
+            self.monomer_card(ui);
+        }
+        self.controls_of(ui, Select::Parameters);
     }
 
-    /// The open scene's controls, or only those named in `only` (a slide's
-    /// highlighted parameters).
-    fn controls_of(&mut self, ui: &mut egui::Ui, only: Option<&[String]>) {
+    /// The open scene's controls: all but the monomer card's, the card's, or
+    /// only those of a slide (its highlighted parameters, side by side).
+    fn controls_of(&mut self, ui: &mut egui::Ui, select: Select<'_>) {
+        let only = match select {
+            Select::Slide(keys) => Some(keys),
+            _ => None,
+        };
+        let card_keys = self.params().monomer_card().map(|_| monomer_card::shown_keys(self.params()));
+        let shown = |key: &str| match select {
+            Select::Slide(keys) => keys.iter().any(|k| k == key),
+            Select::Card => card_keys.as_ref().is_some_and(|k| k.contains(&key)),
+            Select::Parameters => !monomer_card::is_card_key(key) || card_keys.is_none(),
+        };
         let mut material_changed = false;
         let data_path = &mut self.session.data_path;
         let mut load_typed = false;
-        if let Some(data) =
-            self.session.params.get_mut(&self.session.scene).and_then(|p| p.measurements()).filter(|_| only.is_none())
+        if let Some(data) = self
+            .session
+            .params
+            .get_mut(&self.session.scene)
+            .and_then(|p| p.measurements())
+            .filter(|_| matches!(select, Select::Parameters))
         {
             let n = data.len();
             ui.horizontal(|ui| {
@@ -1247,10 +1300,10 @@ impl GrainscopeApp {
         {
             let params = self.params_mut();
             let mut controls = params.controls();
-            egui::Grid::new(("controls", only.is_some())).num_columns(1).striped(false).show(ui, |ui| {
+            egui::Grid::new(("controls", select.id())).num_columns(1).striped(false).show(ui, |ui| {
                 // A slide's few highlighted controls sit side by side in one row.
                 let in_row = only.is_some();
-                for c in controls.iter_mut().filter(|c| only.is_none_or(|keys| keys.iter().any(|k| k == c.key))) {
+                for c in controls.iter_mut().filter(|c| shown(c.key)) {
                     let (key, label, unit, doc) = (c.key, c.label, c.unit, c.doc);
                     match &mut c.kind {
                         ControlKind::Number { value, min, max, log, display_scale } => {
@@ -1354,7 +1407,8 @@ impl GrainscopeApp {
         if material_changed {
             self.params_mut().material_changed();
         }
-        if only.is_none() && ui.button("Reset to defaults").on_hover_text("this scene's parameters (Ctrl+R)").clicked()
+        if matches!(select, Select::Parameters)
+            && ui.button("Reset to defaults").on_hover_text("this scene's parameters (Ctrl+R)").clicked()
         {
             self.reset_scene();
         }
@@ -1629,7 +1683,7 @@ impl GrainscopeApp {
         let full_cursor = self.params().cursor(&out);
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
-            Extra::Paths(_) | Extra::None => None,
+            Extra::Paths(_) | Extra::Model(_) | Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
         // A slide may enlarge one figure: it leads across the full width,
@@ -1672,14 +1726,17 @@ impl GrainscopeApp {
         // Edited beside the contact sketch while the panels borrow `self`.
         let mut export_dir = std::mem::take(&mut self.session.export_dir);
         let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
+        // A click on a plot, to inspect: (figure id, point in axis units).
+        let mut clicked: Option<(String, [f64; 2])> = None;
         let scroll = egui::ScrollArea::new([multiples, multiples])
             .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
             .max_height(if multiples { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
         scroll.show(ui, |ui| {
             // One panel: the plot with its legend, and its export buttons.
             let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {
-                let marks: Vec<scene::Mark> =
+                let mut marks: Vec<scene::Mark> =
                     cursor.as_ref().map(|c| c.marks_on(&fig.id).cloned().collect()).unwrap_or_default();
+                marks.extend(self.inspected_mark(&fig.id));
                 let overlay = self.overlay_for(fig, marks);
                 let locked = self.locked.as_ref().and_then(|l| l.get(&fig.id).copied());
                 let mut look = look;
@@ -1697,7 +1754,10 @@ impl GrainscopeApp {
                 }
                 ui.vertical(|ui| {
                     let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);
-                    self.plot_rects.push(shown.rect);
+                    self.plot_rects.push(shown.response.rect);
+                    if let Some(at) = shown.clicked {
+                        clicked = Some((fig.id.clone(), at));
+                    }
                     if lecture {
                         return;
                     }
@@ -1781,6 +1841,9 @@ impl GrainscopeApp {
             }
         });
         self.session.export_dir = export_dir;
+        if let Some((figure, at)) = clicked {
+            self.inspect_at(&out, &figure, at);
+        }
         if trajectory.is_none() && !lecture {
             ui.horizontal(|ui| {
                 let label = ui.label("export folder");

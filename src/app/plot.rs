@@ -207,7 +207,7 @@ pub fn show(
     stale: bool,
     look: Look,
     locked: Option<View>,
-) -> egui::Response {
+) -> Shown {
     let (xs, ys) = (fig.x.scale, fig.y.scale);
     let view = locked.unwrap_or_else(|| View::of(fig));
     let title = if stale { format!("{} (updating…)", fig.title) } else { fig.title.clone() };
@@ -318,6 +318,14 @@ pub fn show(
                 let px = [plot_size.x as f64 / (bx.1 - bx.0), plot_size.y as f64 / (by.1 - by.0)];
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look, px));
                 let frame = *shown.transform.frame();
+                // A click (not a drag) at a point of the plot, in axis units.
+                let clicked = shown
+                    .response
+                    .clicked()
+                    .then(|| shown.response.interact_pointer_pos())
+                    .flatten()
+                    .map(|pos| shown.transform.value_from_position(pos))
+                    .map(|v| [untransform(v.x, xs), untransform(v.y, ys)]);
                 // The colour bar first: a legend inside the plot places its
                 // labels with the layout, which would move what follows.
                 if let Some(b) = &bar {
@@ -355,7 +363,7 @@ pub fn show(
                     let (rect, _) = ui.allocate_exact_size(legend_size, egui::Sense::hover());
                     paint_legend(ui, &legend, rect, look);
                 }
-                shown.response
+                (shown.response, clicked)
             })
             .inner;
         if below {
@@ -369,7 +377,16 @@ pub fn show(
         response
     });
     // The whole panel: title, plot with its axes, legend and colour bar.
-    shown.response.union(shown.inner)
+    let (plot_response, clicked) = shown.inner;
+    Shown { response: shown.response.union(plot_response), clicked }
+}
+
+/// A drawn panel: its response, and where its plot was clicked (axis units).
+pub struct Shown {
+    /// The whole panel's response.
+    pub response: egui::Response,
+    /// The point clicked in this frame, if any.
+    pub clicked: Option<[f64; 2]>,
 }
 
 /// An axis title that fits `room` points: as it is, else in a smaller size,

@@ -249,7 +249,7 @@ impl GrainscopeApp {
         let Some(keys) = self.presenter.as_ref().map(|p| p.slide().highlight.clone()) else { return };
         self.headline(ui);
         ui.separator();
-        self.controls_of(ui, Some(&keys));
+        self.controls_of(ui, super::Select::Slide(&keys));
     }
 
     /// The deck editor: slides from the window's state, reordered, titled,

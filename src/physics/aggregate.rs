@@ -7,41 +7,7 @@ use super::disk::Local;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
-/// The monomers aggregates are built of.
-#[derive(Debug, Clone, Copy, PartialEq, Serialize, Deserialize)]
-pub struct Monomer {
-    /// Radius a₀, m.
-    pub radius: f64,
-    /// Material density ρ₀, kg m⁻³ (1400 for ice, 2600 for silicate).
-    pub density: f64,
-    /// Icy (true) or silicate monomers, for E_roll (5.26) and v_frag (4.12).
-    pub icy: bool,
-}
-
-impl Monomer {
-    /// 0.1 µm water-ice monomers of ch. 4.
-    pub fn ice() -> Monomer {
-        Monomer { radius: 1e-7, density: 1400.0, icy: true }
-    }
-
-    /// Monomer mass m₀, kg.
-    pub fn mass(&self) -> f64 {
-        4.0 / 3.0 * PI * self.density * self.radius.powi(3)
-    }
-
-    /// Rolling energy E_roll = (a₀/1 µm)^{5/3} × 1.8 × 10⁻⁷ erg (ice) or
-    /// 8.5 × 10⁻⁹ erg (silicate) (5.26), J.
-    pub fn rolling_energy(&self) -> f64 {
-        let e1 = if self.icy { 1.8e-14 } else { 8.5e-16 };
-        e1 * (self.radius / 1e-6).powf(5.0 / 3.0)
-    }
-
-    /// Catastrophic fragmentation velocity of icy aggregates,
-    /// v_frag = 80 (a₀/0.1 µm)^{-5/6} m s⁻¹ (4.12).
-    pub fn fragmentation_velocity(&self) -> f64 {
-        80.0 * (self.radius / 1e-7).powf(-5.0 / 6.0)
-    }
-}
+pub use super::monomer::Monomer;
 
 /// An aggregate: mass and filling factor.
 #[derive(Debug, Clone, Copy, PartialEq)]

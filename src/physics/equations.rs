@@ -95,7 +95,7 @@
 //! | (4.9) | stopping time with a drag coefficient (= (5.19)) | `physics::aggregate::stopping_time` |
 //! | (4.10) | drag coefficient C_D(Re_p) (= (5.20)) | `physics::aggregate::drag_coefficient` |
 //! | (4.11) | turbulent relative velocity, three regimes (= (5.22)) | `physics::aggregate::relative_velocity` |
-//! | (4.12) | fragmentation velocity of icy aggregates | `physics::aggregate::Monomer::fragmentation_velocity` |
+//! | (4.12) | fragmentation velocity of icy aggregates | `physics::monomer::Monomer::fragmentation_velocity` |
 //! | (4.13), text | erosion only below mass ratio R_crit = 10⁻² | `physics::aggregate::R_CRIT` |
 //! | (4.13) | erosion efficiency ε_eros, γ = 1 | `physics::aggregate::erosion_efficiency` |
 //! | (4.14) | fractal dimension D_f of an aggregate | `physics::aggregate::Aggregate::fractal_dimension` |
@@ -141,7 +141,7 @@
 //! | (5.23) | azimuthal drift velocity | `physics::aggregate::relative_velocity` |
 //! | (5.24) | quadratic sum of the sources (plus settling, ch. 4) | `physics::aggregate::RelativeVelocity::total` |
 //! | (5.25) | hit-and-stick filling factor φ ≃ (m/m₀)^{−1/2} | `physics::growth::GrowthModel::step` |
-//! | (5.26) | rolling energy E_roll(a₀) of ice and silicate | `physics::aggregate::Monomer::rolling_energy` |
+//! | (5.26) | rolling energy E_roll(a₀) of ice and silicate | `physics::monomer::Monomer::rolling_energy` |
 //! | (5.27) | compressive strength P_c (= (4.15)) | `physics::aggregate::gas_compaction_filling` |
 //! | (5.28) | P_gas (= (4.16)) | `physics::aggregate::gas_compaction_filling` |
 //! | (5.28) | P_grav (= (4.16)) | `physics::aggregate::gravity_compaction_filling` |

@@ -15,6 +15,7 @@ pub mod experiments;
 pub mod fit;
 pub mod growth;
 pub mod material;
+pub mod monomer;
 pub mod monte_carlo;
 pub mod plasticity;
 pub mod rolling;

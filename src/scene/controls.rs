@@ -396,6 +396,35 @@ impl<'a> Control<'a> {
         Ok(())
     }
 
+    /// The current value.
+    pub fn value(&self) -> DefaultValue {
+        match &self.kind {
+            ControlKind::Number { value, .. } => DefaultValue::Number(**value),
+            ControlKind::Count { value, .. } => DefaultValue::Count(**value),
+            ControlKind::Toggle(v) => DefaultValue::Toggle(**v),
+            ControlKind::Material(m) => DefaultValue::Text(m.name.clone()),
+            ControlKind::Choice { value, .. } => DefaultValue::Text(value.to_string()),
+        }
+    }
+
+    /// Sets the value from `v` when it is of the control's kind (a material
+    /// is looked up by name); returns whether it was taken. Unchecked: the
+    /// caller validates.
+    pub fn assign(&mut self, v: &DefaultValue) -> bool {
+        match (&mut self.kind, v) {
+            (ControlKind::Number { value, .. }, DefaultValue::Number(x)) => **value = *x,
+            (ControlKind::Count { value, .. }, DefaultValue::Count(x)) => **value = *x,
+            (ControlKind::Toggle(b), DefaultValue::Toggle(x)) => **b = *x,
+            (ControlKind::Choice { value, .. }, DefaultValue::Text(x)) => **value = x.clone(),
+            (ControlKind::Material(m), DefaultValue::Text(x)) => match Material::named(x) {
+                Some(found) => **m = found.clone(),
+                None => return false,
+            },
+            _ => return false,
+        }
+        true
+    }
+
     /// The value as short text in display units, for labels.
     pub fn display_value(&self) -> String {
         match &self.kind {

@@ -60,6 +60,18 @@ pub trait Scene {
         None
     }
 
+    /// What a click at `at` (axis units) on figure `figure` of `out` shows:
+    /// the model's numbers at that point and where to go from there. None
+    /// by default (the point is not inspectable).
+    fn inspect(
+        _p: &Self::Params,
+        _out: &SceneOutput,
+        _figure: &str,
+        _at: [f64; 2],
+    ) -> Option<super::inspect::Inspection> {
+        None
+    }
+
     /// Imported measurements the scene works on, if it takes any.
     fn measurements(_p: &mut Self::Params) -> Option<&mut Vec<Measurement>> {
         None
@@ -119,6 +131,35 @@ pub enum Extra {
     /// Histories drawn on figures whose axes are not time (growth tracks):
     /// the time of every point, so that a time cursor can follow them.
     Paths(Arc<Vec<TimedPath>>),
+    /// The model's own result (a batch run, Monte Carlo runs), kept so that
+    /// a clicked point of a figure can be inspected without recomputing.
+    Model(ModelData),
+}
+
+/// A model result shared with the window for inspection; compared by identity.
+#[derive(Clone)]
+pub struct ModelData(pub Arc<dyn Any + Send + Sync>);
+
+impl PartialEq for ModelData {
+    fn eq(&self, other: &Self) -> bool {
+        Arc::ptr_eq(&self.0, &other.0)
+    }
+}
+
+impl std::fmt::Debug for ModelData {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("ModelData")
+    }
+}
+
+impl Extra {
+    /// The model result of type `T`, if the output keeps one.
+    pub fn model<T: Any + Send + Sync>(&self) -> Option<&T> {
+        match self {
+            Extra::Model(ModelData(data)) => data.downcast_ref::<T>(),
+            _ => None,
+        }
+    }
 }
 
 /// A curve of a figure with the time of each of its points.

@@ -15,6 +15,8 @@
 
 pub mod controls;
 pub mod core;
+pub mod inspect;
+pub mod monomer;
 pub mod quantities;
 pub mod timeline;
 
@@ -98,6 +100,13 @@ macro_rules! scenes {
             pub fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
                 match self {
                     $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::cursor(p, out), )*)*
+                }
+            }
+
+            /// What a click at `at` (axis units) on figure `figure` of `out` shows, if anything.
+            pub fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<inspect::Inspection> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::inspect(p, out, figure, at), )*)*
                 }
             }
 
@@ -215,6 +224,44 @@ impl SceneParams {
         figures
     }
 
+    /// The scene's monomer card (see [`monomer`]), if it builds aggregates.
+    pub fn monomer_card(&self) -> Option<monomer::Card> {
+        let mut copy = self.clone();
+        let controls = copy.controls();
+        monomer::MONOMER_KEYS.iter().map(|k| controls.iter().find(|c| c.key == *k).map(|c| c.value())).collect()
+    }
+
+    /// Gives the scene the monomer `card`. False, and nothing changes, if the
+    /// scene has no card or a value is refused.
+    pub fn set_monomer_card(&mut self, card: &monomer::Card) -> bool {
+        let mut trial = self.clone();
+        {
+            let mut controls = trial.controls();
+            for (key, value) in monomer::MONOMER_KEYS.iter().zip(card) {
+                let taken = controls.iter_mut().find(|c| c.key == *key).is_some_and(|c| c.assign(value));
+                if !taken {
+                    return false;
+                }
+            }
+        }
+        if trial.validate().is_err() {
+            return false;
+        }
+        *self = trial;
+        true
+    }
+
+    /// Whether the scene keeps its own monomer instead of the shared one.
+    pub fn own_monomer(&self) -> bool {
+        let mut copy = self.clone();
+        copy.controls().iter().any(|c| c.key == "own_monomer" && c.value() == DefaultValue::Toggle(true))
+    }
+
+    /// The monomer of the scene's card, if it has one.
+    pub fn monomer(&self) -> Option<crate::physics::monomer::Monomer> {
+        self.monomer_card().map(|card| monomer::monomer_of(&card))
+    }
+
     /// The parameters with every styling-only value reset: two parameter sets
     /// with equal keys give the same computed output.
     pub fn compute_key(&self) -> SceneParams {
@@ -259,7 +306,12 @@ pub fn compute_cached(
     caches: &mut Caches,
 ) -> Result<SceneOutput, SceneError> {
     params.validate()?;
-    params.dispatch(&mut Context { progress, caches })
+    let mut out = params.dispatch(&mut Context { progress, caches })?;
+    // What the monomer sets, for every scene that builds aggregates of it.
+    if let Some(m) = params.monomer() {
+        out.scalars.extend(monomer::scalars(&m, false));
+    }
+    Ok(out)
 }
 
 /// The first of two names (lets the registry repeat a chapter per scene).

@@ -92,3 +92,9 @@ pub fn efficiency(value: &mut f64) -> Control<'_> {
 pub fn duration(value: &mut f64) -> Control<'_> {
     Control::number("duration_yr", "duration", value).unit("yr").range(1e2, 1e8).log().doc("time followed")
 }
+
+/// Adhesion hysteresis Δγ/γ: sets the critical rolling displacement
+/// ξ_crit = (a_eq/12)(Δγ/γ) (3.16).
+pub fn hysteresis(value: &mut f64) -> Control<'_> {
+    Control::number("hysteresis", "hysteresis Δγ/γ", value).range(1e-3, 100.0).log().doc("sets ξ_crit (3.16)")
+}

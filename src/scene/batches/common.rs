@@ -23,6 +23,8 @@ pub struct BatchParams {
     pub coagulation: bool,
     /// Fragmentation/bouncing threshold, m s⁻¹ (default 10⁴: none; 5 for compact silicates).
     pub v_frag: f64,
+    /// Use the monomer's v_frag (4.12) instead of `v_frag`.
+    pub v_frag_from_monomer: bool,
     /// Erosion threshold, m s⁻¹ (default 10⁴: none).
     pub v_eros: f64,
     /// Innermost initial radius, AU (default 3).
@@ -42,6 +44,7 @@ impl Default for BatchParams {
             growth: "porous".into(),
             coagulation: true,
             v_frag: 1e4,
+            v_frag_from_monomer: false,
             v_eros: 1e4,
             r_in_au: 3.0,
             r_out_au: 200.0,
@@ -58,6 +61,7 @@ impl BatchParams {
         c.push(Control::choice("growth", "growth", &mut self.growth, vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")]).default(d.growth.clone()).doc("porosity treatment"));
         c.push(Control::toggle("coagulation", "coagulation", &mut self.coagulation).default(d.coagulation).doc("off: drift only (Fig. 5.1)"));
         c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).labelled("fragmentation/bouncing threshold").doc("same-size collisions above it stop growth (1e4: none)"));
+        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
         c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it stop growth (1e4: none)"));
         c.push(Control::number("r_in_au", "innermost batch", &mut self.r_in_au).default(d.r_in_au).unit("AU").range(1.1, 100.0).log().doc("initial radius of the first batch"));
         c.push(Control::number("r_out_au", "outermost batch", &mut self.r_out_au).default(d.r_out_au).unit("AU").range(2.0, 1000.0).log().doc("initial radius of the last batch"));
@@ -72,8 +76,9 @@ impl BatchParams {
         let mut model = GrowthModel::chapter4(porosity);
         model.disk = self.disk.disk();
         model.monomer = self.disk.monomer();
-        model.thresholds.v_frag = self.v_frag;
-        model.thresholds.v_bounce = self.v_frag;
+        let v_frag = self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer);
+        model.thresholds.v_frag = v_frag;
+        model.thresholds.v_bounce = v_frag;
         model.thresholds.v_eros = self.v_eros;
         model.dlnm = 0.2;
         BatchConfig {

@@ -6,7 +6,11 @@ use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Heatmap, Scale, Series, Style};
-use crate::physics::aggregate::{Aggregate, Particle, TurbulenceModel, relative_velocity, stopping_time};
+use crate::physics::aggregate::{Aggregate, Particle, R_CRIT, SOURCES, TurbulenceModel, relative_velocity, stopping_time};
+use crate::physics::material::Material;
+use crate::scene::SceneParams;
+use crate::scene::collisions::common::CollisionParams;
+use crate::scene::inspect::{self, Action, Inspection};
 use crate::physics::constants::AU;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -37,6 +41,135 @@ transitions by orders of magnitude in mass.",
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
     }
+
+    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let fig = inspect::figure(&out.figures, figure)?;
+        let grid = &fig.heatmap.as_ref()?.x;
+        // The grid cell under the click.
+        let snap = |v: f64| grid.iter().copied().min_by(|a, b| (a / v).ln().abs().total_cmp(&(b / v).ln().abs()));
+        Some(cell(p, snap(at[0])?, snap(at[1])?))
+    }
+}
+
+/// What the collision of two particles of m_i and m_j monomer masses at the
+/// scene's radius and filling factor comes to: sizes, Stokes numbers, each
+/// source of Δv, and the outcome with the thresholds it was compared to.
+pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
+    let disk = p.disk.disk();
+    let mono = p.disk.monomer();
+    let env = disk.local(p.radius_au * AU);
+    let m0 = mono.mass();
+    let model = if p.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis };
+    let body = |n: f64| {
+        let agg = Aggregate { mass: n * m0, filling: if n <= 1.0 { 1.0 } else { p.filling } };
+        let stop = stopping_time(&env, &mono, &agg, true);
+        (agg, stop, Particle { mass: agg.mass, stokes: stop.time * env.omega })
+    };
+    let (ai, si, pi) = body(n_i);
+    let (aj, sj, pj) = body(n_j);
+    let v = relative_velocity(&env, &pi, &pj, model, p.epsilon);
+    let dv = v.total();
+    let mut rows = vec![
+        inspect::row("masses m_i, m_j", format!("{} g, {} g", crate::figure::human(ai.mass * 1e3), crate::figure::human(aj.mass * 1e3))),
+        inspect::row("in monomers", format!("{}, {}", crate::figure::human(n_i), crate::figure::human(n_j))),
+        inspect::row("radii a_i, a_j", format!("{}, {}", length(ai.radius(&mono)), length(aj.radius(&mono)))),
+        inspect::row("filling factors φ", format!("{}, {}", crate::figure::human(ai.filling), crate::figure::human(aj.filling))),
+        inspect::row("Stokes numbers Ωt_s", format!("{}, {}", crate::figure::human(pi.stokes), crate::figure::human(pj.stokes))),
+        inspect::row("drag regimes", format!("{:?}, {:?}", si.regime, sj.regime)),
+        inspect::row("relative velocity Δv", inspect::value(dv, "m/s")),
+        inspect::row("dominant source", SOURCES[v.dominant()]),
+    ];
+    let bars = [v.brownian, v.turbulence, v.settling, v.radial, v.azimuthal]
+        .iter()
+        .zip(SOURCES)
+        .map(|(x, name)| (name.to_string(), x.abs()))
+        .collect();
+    // The outcome, as the Monte Carlo column decides it (Sects. 4.2.3, 4.3),
+    // and for two monomers or two compact spheres as the contact model does.
+    let mu = ai.mass * aj.mass / (ai.mass + aj.mass);
+    let e_imp = 0.5 * mu * dv * dv;
+    let e_roll = mono.rolling_energy();
+    let v_frag = mono.fragmentation_velocity();
+    let ratio = ai.mass.min(aj.mass) / ai.mass.max(aj.mass);
+    rows.push(inspect::row("impact energy ½μΔv²", inspect::value(e_imp, "J")));
+    rows.push(inspect::row("3bE_roll (compaction onset)", inspect::value(3.0 * 0.15 * e_roll, "J")));
+    let spheres = ai.filling >= 1.0 && aj.filling >= 1.0;
+    let pair = crate::physics::contact::Pair {
+        radius: {
+            let (ri, rj) = (ai.radius(&mono), aj.radius(&mono));
+            ri * rj / (ri + rj)
+        },
+        mass: mu,
+        ..mono.pair()
+    };
+    let outcome = if spheres {
+        let v_stick = pair.jkr_sticking_velocity();
+        rows.push(inspect::row("v_stick of the two spheres (2.25)", inspect::value(v_stick, "m/s")));
+        if dv > v_stick {
+            format!("bounce: Δv = {} m/s exceeds v_stick = {} m/s of the two spheres (JKR, 2.25)", crate::figure::human(dv), crate::figure::human(v_stick))
+        } else {
+            format!("stick: Δv = {} m/s is below v_stick = {} m/s (JKR, 2.25)", crate::figure::human(dv), crate::figure::human(v_stick))
+        }
+    } else if ratio < R_CRIT && dv > p.v_eros {
+        format!("erosion: mass ratio {} < R_crit = 10⁻² and Δv above v_eros = {} m/s", crate::figure::human(ratio), crate::figure::human(p.v_eros))
+    } else if dv > v_frag {
+        format!("fragmentation: Δv above v_frag = {} m/s (4.12)", crate::figure::human(v_frag))
+    } else if e_imp > 3.0 * 0.15 * e_roll {
+        format!(
+            "stick with compaction: ½μΔv² exceeds 3bE_roll = {} J (b = 0.15); below v_frag = {} m/s{}",
+            crate::figure::human(3.0 * 0.15 * e_roll),
+            crate::figure::human(v_frag),
+            if p.v_eros < 1e4 { format!(" and v_eros = {} m/s", crate::figure::human(p.v_eros)) } else { String::new() }
+        )
+    } else {
+        format!("hit-and-stick without compaction: ½μΔv² below 3bE_roll = {} J", crate::figure::human(3.0 * 0.15 * e_roll))
+    };
+    let mut actions = Vec::new();
+    let (ri, rj) = (ai.radius(&mono), aj.radius(&mono));
+    if spheres && (2e-8..=2e-2).contains(&ri) && (2e-8..=2e-2).contains(&rj) {
+        let material = if mono.icy { Material::water_ice() } else { Material::named("silicate").cloned().unwrap_or_else(Material::water_ice) };
+        let collision = CollisionParams {
+            projectile: material.clone(),
+            target: material,
+            radius_1: ri,
+            radius_2: rj,
+            surface_energy: mono.surface_energy,
+            velocity: dv.clamp(1e-3, 1e3),
+            ..CollisionParams::default()
+        };
+        let what = if n_i <= 1.0 && n_j <= 1.0 { "two monomers" } else { "two compact spheres" };
+        actions.push(Action {
+            label: "Open as a collision".into(),
+            hint: format!(
+                "{what} of radii {} and {} meeting head-on at {} m/s in the ch. 2 contact model (Table 2.2 material)",
+                length(ri),
+                length(rj),
+                crate::figure::human(dv.clamp(1e-3, 1e3))
+            ),
+            open: SceneParams::Hysteresis(crate::scene::collisions::hysteresis::Params { collision, ..Default::default() }),
+        });
+    }
+    Inspection {
+        title: format!("m_i = {} m₀, m_j = {} m₀ at {} AU", crate::figure::human(n_i), crate::figure::human(n_j), crate::figure::human(p.radius_au)),
+        rows,
+        bars: Some(("Δv by source [m/s]".into(), bars)),
+        outcome: Some(outcome),
+        actions,
+        point: [n_i, n_j],
+    }
+}
+
+/// A length with a fitting unit.
+fn length(a: f64) -> String {
+    if a < 1e-6 {
+        inspect::value(a * 1e9, "nm")
+    } else if a < 1e-3 {
+        inspect::value(a * 1e6, "µm")
+    } else if a < 1.0 {
+        inspect::value(a * 1e2, "cm")
+    } else {
+        inspect::value(a, "m")
+    }
 }
 
 /// Parameters of the collision-speed scene.
@@ -57,6 +190,9 @@ pub struct Params {
     pub ormel_cuzzi: bool,
     /// Dispersion ε of the mass-to-area ratio (default 0.1).
     pub epsilon: f64,
+    /// Erosion threshold the inspected collisions are compared with, m s⁻¹
+    /// (default 10⁴: none; it does not change the maps).
+    pub v_eros: f64,
 }
 
 impl Default for Params {
@@ -69,6 +205,7 @@ impl Default for Params {
             cells: 100,
             ormel_cuzzi: false,
             epsilon: 0.1,
+            v_eros: 1e4,
         }
     }
 }
@@ -84,6 +221,7 @@ impl Params {
         c.push(Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10.0, 400.0).doc("per axis"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full closed form instead of (4.11)"));
         c.push(Control::number("epsilon", "dispersion ε", &mut self.epsilon).default(d.epsilon).range(0.0, 1.0).doc("of the mass-to-area ratio"));
+        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).style_only().doc("erosion threshold a clicked cell's collision is compared with (1e4: none; the maps do not depend on it)"));
         c
     }
 }

@@ -3,7 +3,7 @@
 
 use crate::scene::quantities;
 use crate::scene::controls::Control;
-use crate::physics::aggregate::Monomer;
+use crate::physics::monomer::{ICE_SURFACE_ENERGY, Monomer, RollingLaw, SILICATE_SURFACE_ENERGY};
 use crate::physics::disk::{GasDisk, Profile};
 use crate::physics::aggregate::{R_CRIT, Thresholds, TurbulenceModel};
 use crate::physics::constants::{AU, YEAR};
@@ -32,6 +32,19 @@ pub struct DiskParams {
     pub monomer_radius: f64,
     /// Icy monomers (ρ₀ = 1.4 g cm⁻³) or silicate (2.6 g cm⁻³).
     pub icy: bool,
+    /// Combined surface energy γ of two icy monomers, J m⁻² (default 0.74 = 2 × 0.37, Table 2.2).
+    pub surface_energy_ice: f64,
+    /// Combined surface energy γ of two silicate monomers, J m⁻² (default 0.05 = 2 × 0.025, Table 3.1).
+    pub surface_energy_silicate: f64,
+    /// Rolling-energy law: "calibrated" (5.26, default), "contact" (ch. 3, (3.16))
+    /// or "dominik-tielens" (fixed ξ_crit).
+    pub rolling_law: String,
+    /// Adhesion hysteresis Δγ/γ of the ch. 3 law (default 0.5).
+    pub hysteresis: f64,
+    /// Critical rolling displacement of the Dominik & Tielens law, m (default 0.3 nm).
+    pub xi_crit: f64,
+    /// Keep this scene's monomer instead of sharing the explorer's (window only).
+    pub own_monomer: bool,
 }
 
 impl Default for DiskParams {
@@ -46,6 +59,12 @@ impl Default for DiskParams {
             metallicity: 0.01,
             monomer_radius: 1e-7,
             icy: true,
+            surface_energy_ice: ICE_SURFACE_ENERGY,
+            surface_energy_silicate: SILICATE_SURFACE_ENERGY,
+            rolling_law: "calibrated".into(),
+            hysteresis: 0.5,
+            xi_crit: 3e-10,
+            own_monomer: false,
         }
     }
 }
@@ -62,8 +81,24 @@ impl DiskParams {
             Control::number("alpha", "turbulence α", &mut self.alpha).default(d.alpha).range(1e-6, 1e-1).log().doc("Shakura–Sunyaev α"),
             Control::number("metallicity", "dust-to-gas Z₀", &mut self.metallicity).default(d.metallicity).range(1e-4, 0.1).log().doc("Σ_d/Σ_g"),
             Control::number("monomer_radius", "monomer radius a₀", &mut self.monomer_radius).default(d.monomer_radius).unit("m").shown("µm", 1e6).range(1e-8, 1e-5).log().doc("radius of the monomers"),
-            Control::toggle("icy", "icy monomers", &mut self.icy).default(d.icy).doc("ice (1.4 g/cm³) or silicate (2.6 g/cm³)"),
+            Control::toggle("icy", "icy monomers", &mut self.icy).default(d.icy).doc("ice (1.4 g/cm³, E = 7 GPa) or silicate (2.6 g/cm³, E = 54 GPa)"),
+            Control::number("surface_energy_ice", "surface energy γ (ice)", &mut self.surface_energy_ice).default(d.surface_energy_ice).unit("J m^-2").shown("J/m²", 1.0).range(0.01, 5.0).log().doc("combined surface energy of two icy monomers (2γ_L; Table 2.2: 0.74)"),
+            Control::number("surface_energy_silicate", "surface energy γ (silicate)", &mut self.surface_energy_silicate).default(d.surface_energy_silicate).unit("J m^-2").shown("J/m²", 1.0).range(0.005, 5.0).log().doc("combined surface energy of two silicate monomers (2γ_L; Table 3.1: 0.05)"),
+            Control::choice("rolling_law", "E_roll law", &mut self.rolling_law, ROLLING_LAWS.to_vec()).default(d.rolling_law.clone()).doc("calibrated (5.26) ∝ a₀^{5/3}γ^{4/3}; ch. 3 contact 6πγRξ_crit with ξ_crit = (a_eq/12)Δγ/γ; Dominik & Tielens with a fixed ξ_crit, ∝ a₀"),
+            quantities::hysteresis(&mut self.hysteresis).labelled("Δγ/γ (ch. 3 law)").default(d.hysteresis).doc("adhesion hysteresis of the ch. 3 rolling law (0.35 reproduces (5.26) for ice)"),
+            Control::number("xi_crit", "ξ_crit (D&T law)", &mut self.xi_crit).default(d.xi_crit).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("critical rolling displacement of the Dominik & Tielens law (0.3 nm)"),
+            Control::toggle("own_monomer", "own monomer", &mut self.own_monomer).default(d.own_monomer).style_only().doc("keep this scene's monomer when another scene's changes (window only)"),
         ]
+    }
+
+    /// The fragmentation velocity: `given`, or the monomer's (4.12) when `from_monomer`, m s⁻¹.
+    pub fn fragmentation_velocity(&self, given: f64, from_monomer: bool) -> f64 {
+        if from_monomer { self.monomer().fragmentation_velocity() } else { given }
+    }
+
+    /// The combined surface energy of the chosen monomers, J m⁻².
+    pub fn surface_energy(&self) -> f64 {
+        if self.icy { self.surface_energy_ice } else { self.surface_energy_silicate }
     }
 
     /// The gas disk.
@@ -78,9 +113,31 @@ impl DiskParams {
 
     /// The monomers.
     pub fn monomer(&self) -> Monomer {
-        Monomer { radius: self.monomer_radius, density: if self.icy { 1400.0 } else { 2600.0 }, icy: self.icy }
+        let rolling = match self.rolling_law.as_str() {
+            "contact" => RollingLaw::Contact { hysteresis: self.hysteresis },
+            "dominik-tielens" => RollingLaw::DominikTielens { xi: self.xi_crit },
+            _ => RollingLaw::Calibrated,
+        };
+        Monomer {
+            radius: self.monomer_radius,
+            density: if self.icy { 1400.0 } else { 2600.0 },
+            icy: self.icy,
+            surface_energy: self.surface_energy(),
+            rolling,
+        }
     }
 }
+
+/// The rolling-energy laws (key, label).
+pub const ROLLING_LAWS: [(&str, &str); 3] = [
+    ("calibrated", "calibrated (5.26)"),
+    ("contact", "ch. 3 contact (3.16)"),
+    ("dominik-tielens", "Dominik & Tielens"),
+];
+
+/// The keys of the monomer card: the parameters every aggregate scene shares.
+pub const MONOMER_KEYS: [&str; 7] =
+    ["monomer_radius", "icy", "surface_energy_ice", "surface_energy_silicate", "rolling_law", "hysteresis", "xi_crit"];
 
 /// The control of a local scene's disk radius, AU (0.5–300 AU); `meaning`
 /// says what sits there.
@@ -97,6 +154,8 @@ pub struct GrowthParams {
     pub disk: DiskParams,
     /// Fragmentation velocity, m s⁻¹ (default: (4.12) for ice, 10 for compact tracks).
     pub v_frag: f64,
+    /// Use the monomer's v_frag (4.12) instead of `v_frag`.
+    pub v_frag_from_monomer: bool,
     /// Erosion threshold, m s⁻¹ (default 10⁴: no erosion).
     pub v_eros: f64,
     /// Bouncing threshold of compact grains, m s⁻¹ (default 10⁴: none).
@@ -114,6 +173,7 @@ impl Default for GrowthParams {
         GrowthParams {
             disk: DiskParams::default(),
             v_frag: 80.0,
+            v_frag_from_monomer: false,
             v_eros: 1e4,
             v_bounce: 1e4,
             ormel_cuzzi: false,
@@ -129,6 +189,7 @@ impl GrowthParams {
         let mut c = self.disk.controls(&d.disk);
         let v = ("m/s", 1.0);
         c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"));
+        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
         c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it erode (1e4: none)"));
         c.push(Control::number("v_bounce", "bouncing threshold", &mut self.v_bounce).default(d.v_bounce).unit("m s^-1").shown(v.0, v.1).range(0.01, 1e4).log().doc("compact grains bounce above it (1e4: none)"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
@@ -142,7 +203,7 @@ impl GrowthParams {
         let mut m = GrowthModel::chapter4(porosity);
         m.disk = self.disk.disk();
         m.monomer = self.disk.monomer();
-        m.thresholds = Thresholds { v_frag: self.v_frag, v_eros: self.v_eros, v_bounce: self.v_bounce, r_crit: R_CRIT };
+        m.thresholds = Thresholds { v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer), v_eros: self.v_eros, v_bounce: self.v_bounce, r_crit: R_CRIT };
         m.turbulence = if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis };
         m.newton = self.newton;
         m.dlnm = self.dlnm;

@@ -28,6 +28,8 @@ pub struct ColumnParams {
     pub v_eros: f64,
     /// Catastrophic fragmentation velocity, m s⁻¹ (default 80, (4.12) for 0.1 µm ice).
     pub v_frag: f64,
+    /// Use the monomer's v_frag (4.12) instead of `v_frag`.
+    pub v_frag_from_monomer: bool,
     /// Erosion efficiency prefactor c₁ of (4.13) (default 1).
     pub c1: f64,
     /// Include Newton drag (default: with full compaction).
@@ -64,6 +66,7 @@ impl Default for ColumnParams {
             compaction: "full".into(),
             v_eros: 1e4,
             v_frag: 80.0,
+            v_frag_from_monomer: false,
             c1: 1.0,
             newton: true,
             ormel_cuzzi: false,
@@ -90,6 +93,7 @@ impl ColumnParams {
         c.push(Control::choice("compaction", "compaction", &mut self.compaction, vec![("collisional", "collisional only (Fig. 4.4)"), ("full", "with gas and self-gravity (Fig. 4.6)")]).default(d.compaction.clone()).doc("how aggregates are compressed"));
         c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).labelled("erosion threshold v_eros").doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"));
         c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"));
+        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
         c.push(Control::number("c1", "erosion prefactor c₁", &mut self.c1).default(d.c1).range(0.1, 10.0).log().doc("ε_eros = c₁ v/v_eros (4.13)"));
         c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));
         c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
@@ -118,7 +122,7 @@ impl ColumnParams {
         let column = Column {
             env: disk.local(self.radius_au * AU),
             monomer: self.disk.monomer(),
-            thresholds: Thresholds { v_frag: self.v_frag, v_eros: self.v_eros, v_bounce: f64::INFINITY, r_crit: R_CRIT },
+            thresholds: Thresholds { v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer), v_eros: self.v_eros, v_bounce: f64::INFINITY, r_crit: R_CRIT },
             c1: self.c1,
             compaction: if full { Compaction::Full } else { Compaction::Collisional },
             turbulence: if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis },

@@ -93,7 +93,7 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.contact.controls(&d.contact, true);
-        c.push(Control::number("hysteresis", "hysteresis Δγ/γ", &mut self.hysteresis).default(d.hysteresis).range(1e-3, 100.0).log().doc("sets ξ_crit (3.16)"));
+        c.push(crate::scene::quantities::hysteresis(&mut self.hysteresis).default(d.hysteresis));
         c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss; 1e12 ≈ none"));
         c.push(Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude).default(d.kick_amplitude).range(1e-4, 1.0).log().doc("amplitude the kick gives an undamped pinned contact"));
         c.push(Control::number("periods", "duration", &mut self.periods).default(d.periods).unit("periods").range(1.0, 200.0).log().doc("length of the run"));

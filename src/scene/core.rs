@@ -136,13 +136,15 @@ pub enum Extra {
     Model(ModelData),
 }
 
-/// A model result shared with the window for inspection; compared by identity.
+/// A model result shared with the window for inspection. It follows from the
+/// same parameters as the figures beside it, so two outputs compare by what
+/// they show: any two are equal.
 #[derive(Clone)]
 pub struct ModelData(pub Arc<dyn Any + Send + Sync>);
 
 impl PartialEq for ModelData {
-    fn eq(&self, other: &Self) -> bool {
-        Arc::ptr_eq(&self.0, &other.0)
+    fn eq(&self, _other: &Self) -> bool {
+        true
     }
 }
 

@@ -27,6 +27,12 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         p.controls()
     }
 
+    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
+        let run = out.extra.model::<crate::physics::batches::BatchRun>()?;
+        let fig = crate::scene::inspect::figure(&out.figures, figure)?;
+        super::common::inspect_batch(&p.run, run, fig, at, &|_, s| [s.r / AU, s.mass * 1e3])
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }
@@ -106,6 +112,6 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         }],
         figures: vec![fig],
         notes: Vec::new(),
-        extra: crate::scene::core::Extra::None,
+        extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())),
     })
 }

@@ -168,3 +168,45 @@ impl RunCache {
         Ok(run)
     }
 }
+
+/// What a click near a batch sample shows: the batch nearest `at` on figure
+/// `fig`, where `place` gives a sample's point on that figure (axis units).
+pub fn inspect_batch(
+    p: &BatchParams,
+    run: &BatchRun,
+    fig: &crate::figure::Figure,
+    at: [f64; 2],
+    place: &dyn Fn(f64, &crate::physics::batches::BatchSample) -> [f64; 2],
+) -> Option<crate::scene::inspect::Inspection> {
+    use crate::physics::batches::Fate;
+    use crate::scene::inspect::{self, Inspection};
+    let samples = run.frames.iter().flat_map(|f| f.batches.iter().enumerate().map(move |(b, s)| (f.t, b, s)));
+    let candidates: Vec<(f64, usize, &crate::physics::batches::BatchSample)> =
+        samples.filter(|(_, _, s)| s.dust && s.mass > 0.0).collect();
+    let (k, _) = inspect::nearest(fig, candidates.iter().map(|(t, _, s)| place(*t, s)), at, 0.05)?;
+    let (t, b, s) = candidates[k];
+    let mut rows = vec![
+        inspect::row("batch", format!("{} of {}, from {} AU", b + 1, run.masses.len(), crate::figure::human(run.initial_radii[b] / AU))),
+        inspect::row("time t", inspect::value(t / YEAR, "yr")),
+    ];
+    rows.extend(crate::scene::disk::common::aggregate_rows(&p.disk, s.r, s.mass, s.filling, s.t_grow));
+    rows.push(inspect::row("midplane ρ*_d/ρ_g (5.13)", inspect::value(s.loading, "")));
+    rows.push(inspect::row("streaming-instability conditions", if s.si { "met" } else { "not met" }.to_string()));
+    let fate = match run.fates.get(b) {
+        Some(Fate::Planetesimals { t, r }) => format!(
+            "this batch forms planetesimals at {} AU after {} yr",
+            crate::figure::human(r / AU),
+            crate::figure::human(t / YEAR)
+        ),
+        Some(other) => format!("this batch ends as {other:?}"),
+        None => String::new(),
+    };
+    Some(Inspection {
+        title: format!("Batch {} at t = {} yr", b + 1, crate::figure::human(t / YEAR)),
+        rows,
+        bars: None,
+        outcome: Some(fate),
+        actions: vec![crate::scene::disk::common::column_action(&p.disk, s.r / AU)],
+        point: place(t, s),
+    })
+}

@@ -34,6 +34,12 @@ the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         p.controls()
     }
 
+    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
+        let run = out.extra.model::<crate::physics::batches::BatchRun>()?;
+        let fig = crate::scene::inspect::figure(&out.figures, figure)?;
+        super::common::inspect_batch(&p.run, run, fig, at, &|t, s| [t / YEAR, s.r / AU])
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }
@@ -141,5 +147,5 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         },
         Scalar { key: "converted", label: "converted into planetesimals", value: run.converted_fraction(), unit: "" },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())) })
 }

@@ -244,3 +244,50 @@ impl TrackParams {
         model.run(self.radius_au * AU, 1e8 * YEAR)
     }
 }
+
+/// What the model says of an aggregate of `mass` (kg) and filling factor
+/// `filling` at radius `r` (m) of the disk, growing on the time scale
+/// `t_grow` (s, infinite when halted): its size, Stokes number, drag regime,
+/// drift time and what limits its growth there.
+pub fn aggregate_rows(disk: &DiskParams, r: f64, mass: f64, filling: f64, t_grow: f64) -> Vec<(String, String)> {
+    use crate::physics::aggregate::{Aggregate, radial_drift, stopping_time};
+    use crate::scene::inspect::{row, value};
+    let env = disk.disk().local(r);
+    let mono = disk.monomer();
+    let agg = Aggregate { mass, filling: filling.clamp(1e-12, 1.0) };
+    let stop = stopping_time(&env, &mono, &agg, true);
+    let st = stop.time * env.omega;
+    let t_drift = r / radial_drift(env.eta_vk, st).max(1e-300);
+    let a = agg.radius(&mono);
+    let limit = if !t_grow.is_finite() {
+        "growth halted: collisions fragment, bounce or erode".to_string()
+    } else if t_drift < t_grow {
+        format!("drift-limited: it drifts in {} times faster than it grows", crate::figure::human(t_grow / t_drift))
+    } else {
+        format!("growth-limited: it grows {} times faster than it drifts", crate::figure::human(t_drift / t_grow))
+    };
+    vec![
+        row("radius in the disk R", value(r / AU, "AU")),
+        row("mass m", value(mass * 1e3, "g")),
+        row("filling factor φ", value(agg.filling, "")),
+        row("size a", value(a * 1e2, "cm")),
+        row("Stokes number Ωt_s", value(st, "")),
+        row("drag regime", format!("{:?} (a/λ_mfp = {})", stop.regime, crate::figure::human(a / env.mean_free_path))),
+        row("growth time t_grow", if t_grow.is_finite() { value(t_grow / YEAR, "yr") } else { "∞ (halted)".into() }),
+        row("drift time t_drift", value(t_drift / YEAR, "yr")),
+        row("what limits growth", limit),
+    ]
+}
+
+/// "Open the local column": the Monte Carlo column at radius `r_au` of the
+/// same disk, with the same monomer.
+pub fn column_action(disk: &DiskParams, r_au: f64) -> crate::scene::inspect::Action {
+    use crate::scene::monte_carlo::{common::ColumnParams, mass_distribution};
+    let r = r_au.clamp(0.5, 300.0);
+    let run = ColumnParams { disk: disk.clone(), radius_au: r, ..ColumnParams::default() };
+    crate::scene::inspect::Action {
+        label: "Open the local column".into(),
+        hint: format!("the Monte Carlo column at {} AU of this disk, with the same monomer", crate::figure::human(r)),
+        open: crate::scene::SceneParams::MassDistribution(mass_distribution::Params { run, ..Default::default() }),
+    }
+}

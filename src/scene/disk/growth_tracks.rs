@@ -5,6 +5,7 @@ use crate::scene::quantities;
 use crate::scene::controls::{Control, LogRange};
 use super::common::GrowthParams;
 use crate::scene::core::{Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace};
+use crate::scene::inspect::{self, Inspection};
 use crate::scene::timeline;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::{AU, YEAR};
@@ -36,6 +37,49 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
 
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
+    }
+
+    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let Extra::Paths(paths) = &out.extra else { return None };
+        let fig = inspect::figure(&out.figures, figure)?;
+        // The nearest point of any track on the clicked figure.
+        let (k, i, _) = paths
+            .iter()
+            .enumerate()
+            .filter(|(_, path)| path.figure == figure)
+            .filter_map(|(k, path)| inspect::nearest(fig, path.points.iter().copied(), at, 0.06).map(|(i, d)| (k, i, d)))
+            .min_by(|a, b| a.2.total_cmp(&b.2))?;
+        let path = &paths[k];
+        let compact = path.color == Some(1);
+        // The track again (one track takes milliseconds), for its full state.
+        let mut model = p.growth.model(if compact { Porosity::Compact } else { Porosity::Full });
+        if compact {
+            model.thresholds.v_frag = p.v_frag_compact;
+        }
+        let r0 = path.points.first()?[0] * AU;
+        let track = model.run(r0, p.duration_yr * YEAR);
+        let q = track.points.get(i).or(track.points.last())?;
+        let mut rows = vec![
+            inspect::row("track", format!("{} growth from {} AU", if compact { "compact" } else { "porous" }, crate::figure::human(r0 / AU))),
+            inspect::row("time t", inspect::value(q.t / YEAR, "yr")),
+        ];
+        rows.extend(super::common::aggregate_rows(&p.growth.disk, q.r, q.mass, q.filling, q.t_grow));
+        rows.push(inspect::row("same-size Δv", inspect::value(q.v_rel, "m/s")));
+        let end = match track.stop {
+            Stop::Planetesimal => format!(
+                "this track forms a planetesimal (10¹⁶ g) at {} AU",
+                crate::figure::human(track.points.last().map_or(0.0, |l| l.r / AU))
+            ),
+            _ => format!("this track ends without a planetesimal ({:?})", track.stop),
+        };
+        Some(Inspection {
+            title: format!("Growth track at t = {} yr", crate::figure::human(q.t / YEAR)),
+            rows,
+            bars: None,
+            outcome: Some(end),
+            actions: vec![super::common::column_action(&p.growth.disk, q.r / AU)],
+            point: path.points[i],
+        })
     }
 
     fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {

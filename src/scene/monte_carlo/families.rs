@@ -6,7 +6,9 @@ use super::common::{ColumnParams, RunCache};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
-use crate::physics::coagulation::Run;
+use crate::physics::aggregate::Aggregate;
+use crate::physics::coagulation::{FamilyPoint, Run};
+use crate::scene::inspect::{self, Inspection};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use serde::{Deserialize, Serialize};
@@ -36,6 +38,58 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
 
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
+    }
+
+    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let runs = out.extra.model::<Vec<Run>>()?;
+        let first = runs.first()?;
+        let fig = inspect::figure(&out.figures, figure)?;
+        let dots: Vec<(f64, &FamilyPoint)> =
+            first.snapshots.iter().flat_map(|s| s.families.iter().map(move |f| (s.t, f))).collect();
+        let (k, _) = inspect::nearest(fig, dots.iter().map(|(_, f)| [f.mass * 1e3, f.filling]), at, 0.05)?;
+        let (t, f) = dots[k];
+        let total: f64 = first
+            .snapshots
+            .iter()
+            .find(|s| s.t == t)
+            .map_or(0.0, |s| s.families.iter().map(|g| g.mass * g.particles).sum());
+        let mono = p.run.disk.monomer();
+        let agg = Aggregate { mass: f.mass, filling: f.filling };
+        let mut rows = vec![
+            inspect::row("snapshot", inspect::value(t / YEAR, "yr")),
+            inspect::row("mass m", inspect::value(f.mass * 1e3, "g")),
+            inspect::row("in monomers", inspect::value(f.mass / mono.mass(), "")),
+            inspect::row("filling factor φ", inspect::value(f.filling, "")),
+            inspect::row("size a", inspect::value(agg.radius(&mono) * 1e2, "cm")),
+            inspect::row("Stokes number Ωt_s", inspect::value(f.stokes, "")),
+            inspect::row("particles (weight)", inspect::value(f.particles, "")),
+            inspect::row("share of the column's mass", inspect::value(f.mass * f.particles / total.max(1e-300), "")),
+        ];
+        // Where the dot sits against the semi-analytical track at its mass.
+        let track = semi_analytical(&p.run);
+        let on_track = track.windows(2).find(|w| (w[0][0]..=w[1][0]).contains(&f.mass)).map(|w| {
+            let x = (f.mass / w[0][0]).ln() / (w[1][0] / w[0][0]).ln().max(1e-300);
+            (w[0][1].ln() + x * (w[1][1] / w[0][1]).ln()).exp()
+        });
+        let outcome = on_track.map(|phi| {
+            rows.push(inspect::row("φ of the semi-analytical track", inspect::value(phi, "")));
+            let ratio = f.filling / phi;
+            if (0.5..=2.0).contains(&ratio) {
+                format!("on the semi-analytical track (φ/φ_track = {})", crate::figure::human(ratio))
+            } else if ratio > 1.0 {
+                format!("{}× more compact than the semi-analytical track at this mass", crate::figure::human(ratio))
+            } else {
+                format!("{}× fluffier than the semi-analytical track at this mass", crate::figure::human(1.0 / ratio))
+            }
+        });
+        Some(Inspection {
+            title: format!("Family at {} yr", crate::figure::human(t / YEAR)),
+            rows,
+            bars: None,
+            outcome,
+            actions: Vec::new(),
+            point: [f.mass * 1e3, f.filling],
+        })
     }
 }
 
@@ -82,7 +136,9 @@ pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
 pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
     let live = super::common::live_view(progress, |runs| output(p, runs));
     let runs = cache.get_observed(&p.run, progress, &live)?;
-    Ok(output(p, &runs))
+    let mut out = output(p, &runs);
+    out.extra = crate::scene::core::Extra::Model(crate::scene::core::ModelData(runs));
+    Ok(out)
 }
 
 /// The scene's figures from a set of runs.

@@ -128,6 +128,10 @@ macro_rules! scenes {
 }
 
 scenes! {
+    /// The argument across scales, on one screen.
+    overview {
+        scale_ladder::ScaleLadder,
+    }
     /// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).
     collisions {
         hysteresis::Hysteresis,
@@ -331,6 +335,7 @@ pub struct Chapter {
 /// The chapter of scene `i` of [`SCENES`].
 pub fn chapter(i: usize) -> Chapter {
     let (order, heading) = match CHAPTER_OF.get(i).copied().unwrap_or("") {
+        "overview" => (1, "Overview · From grains to planetesimals"),
         "collisions" => (2, "Ch. 2 · Collisions of adhesive spheres"),
         "rolling" => (3, "Ch. 3 · Rolling friction"),
         "disk" => (4, "Ch. 4 · Porous aggregates in a disk"),

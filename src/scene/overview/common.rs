@@ -1,0 +1,1 @@
+//! What the overview scenes share: nothing beyond the other chapters' parameters.

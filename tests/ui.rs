@@ -505,3 +505,60 @@ fn a_deck_built_from_the_window_saves_each_state() {
     assert_eq!(deck.params[1], slow);
     assert_eq!(number(&deck.params[0], "velocity"), 8.0);
 }
+
+/// A click on a cell of the collision-speed map opens its card; for two
+/// monomers the card opens the contact scene at the cell's velocity.
+#[test]
+fn clicking_a_map_cell_inspects_it_and_opens_the_collision() {
+    let mut h = harness();
+    h.run_steps(2);
+    open_scene(&mut h, "Collision speeds");
+    settle(&mut h);
+    let frame = h.state().plot_frame("collision-speed").expect("the map is drawn");
+    // The lower-left cell: two monomers.
+    let at = frame.left_bottom() + egui::vec2(3.0, -3.0);
+    h.drag_at(at);
+    h.run_steps(2);
+    h.drop_at(at);
+    h.run_steps(3);
+    let card = h.state().inspection().cloned().expect("the click opens a card");
+    assert_eq!(card.point, [1.0, 1.0], "{}", card.title);
+    let dv: f64 = card
+        .rows
+        .iter()
+        .find(|(k, _)| k == "relative velocity Δv")
+        .and_then(|(_, v)| v.trim_end_matches(" m/s").parse().ok())
+        .expect("Δv row");
+    assert!(card.bars.as_ref().is_some_and(|(_, b)| b.len() == 5), "Δv by source");
+    assert!(card.outcome.is_some());
+    h.get_by_label("Open as a collision").click();
+    h.run_steps(3);
+    assert_eq!(scene_id(&h), "hysteresis");
+    let v = velocity(&h);
+    assert!((v / dv - 1.0).abs() < 0.01, "velocity {v} vs Δv {dv}");
+    let r = number(h.state().params(), "radius_1");
+    assert!((r - 1e-7).abs() < 1e-12, "monomer radius {r}");
+}
+
+/// Moving the monomer radius in one aggregate scene moves it in every scene
+/// that shares the monomer, and not in one that keeps its own.
+#[test]
+fn the_monomer_card_is_shared_between_scenes() {
+    let mut h = harness();
+    h.run_steps(2);
+    open_scene(&mut h, "Mass–porosity track");
+    h.run_steps(2);
+    type_into_slider(&mut h, "monomer radius a₀", "0.5");
+    h.run_steps(2);
+    let here = number(h.state().params(), "monomer_radius");
+    assert!((here - 5e-7).abs() < 1e-15, "{here}");
+    open_scene(&mut h, "Stokes number");
+    assert!((number(h.state().params(), "monomer_radius") - 5e-7).abs() < 1e-15, "linked");
+    // A scene that keeps its own monomer is left alone.
+    h.get_by_label("own monomer").click();
+    h.run_steps(2);
+    type_into_slider(&mut h, "monomer radius a₀", "0.2");
+    h.run_steps(2);
+    open_scene(&mut h, "Mass–porosity track");
+    assert!((number(h.state().params(), "monomer_radius") - 5e-7).abs() < 1e-15, "not linked");
+}

@@ -170,6 +170,8 @@ pub struct GrainscopeApp {
     fonts_installed: bool,
     /// Where the plots were drawn in the last frame (screen points).
     plot_rects: Vec<egui::Rect>,
+    /// The frame of every plot drawn in the last frame, by figure id.
+    plot_frames: Vec<(String, egui::Rect)>,
     /// Axes kept fixed while parameters change, by figure id (when locked).
     locked: Option<std::collections::HashMap<String, View>>,
     /// Whether the parameter panel is open over the plots in lecture mode.
@@ -233,6 +235,7 @@ impl GrainscopeApp {
             look_applied: None,
             fonts_installed: false,
             plot_rects: Vec::new(),
+            plot_frames: Vec::new(),
             locked: None,
             lecture_params: false,
             shipped_menu: None,
@@ -343,6 +346,12 @@ impl GrainscopeApp {
     /// open scene's result is older than its parameters).
     pub fn busy(&self) -> bool {
         self.worker.busy() || self.stale
+    }
+
+    /// The frame (inside the axes) of figure `figure` as drawn in the last
+    /// frame, in screen points.
+    pub fn plot_frame(&self, figure: &str) -> Option<egui::Rect> {
+        self.plot_frames.iter().find(|(id, _)| id == figure).map(|(_, r)| *r)
     }
 
     /// The smallest rectangle holding every plot drawn in the last frame
@@ -1715,6 +1724,7 @@ impl GrainscopeApp {
         let cursor = full_cursor.filter(|c| self.marks_shown(c));
         let mut export: Option<(Figure, &'static str)> = None;
         self.plot_rects.clear();
+        self.plot_frames.clear();
         let look = self.plot_look(ui);
         if let Some(locked) = &mut self.locked {
             // Figures first seen while locked are locked at their first view.
@@ -1755,6 +1765,7 @@ impl GrainscopeApp {
                 ui.vertical(|ui| {
                     let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);
                     self.plot_rects.push(shown.response.rect);
+                    self.plot_frames.push((fig.id.clone(), shown.frame));
                     if let Some(at) = shown.clicked {
                         clicked = Some((fig.id.clone(), at));
                     }

@@ -363,7 +363,7 @@ pub fn show(
                     let (rect, _) = ui.allocate_exact_size(legend_size, egui::Sense::hover());
                     paint_legend(ui, &legend, rect, look);
                 }
-                (shown.response, clicked)
+                (shown.response, clicked, frame)
             })
             .inner;
         if below {
@@ -377,8 +377,8 @@ pub fn show(
         response
     });
     // The whole panel: title, plot with its axes, legend and colour bar.
-    let (plot_response, clicked) = shown.inner;
-    Shown { response: shown.response.union(plot_response), clicked }
+    let (plot_response, clicked, frame) = shown.inner;
+    Shown { response: shown.response.union(plot_response), clicked, frame }
 }
 
 /// A drawn panel: its response, and where its plot was clicked (axis units).
@@ -387,6 +387,8 @@ pub struct Shown {
     pub response: egui::Response,
     /// The point clicked in this frame, if any.
     pub clicked: Option<[f64; 2]>,
+    /// The plot's frame (inside its axes).
+    pub frame: egui::Rect,
 }
 
 /// An axis title that fits `room` points: as it is, else in a smaller size,

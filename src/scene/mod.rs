@@ -128,10 +128,6 @@ macro_rules! scenes {
 }
 
 scenes! {
-    /// The argument across scales, on one screen.
-    overview {
-        scale_ladder::ScaleLadder,
-    }
     /// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).
     collisions {
         hysteresis::Hysteresis,
@@ -178,6 +174,10 @@ scenes! {
         planetesimal_yield::PlanetesimalYield,
         formation_zone::FormationZone,
         midplane_loading::MidplaneLoading,
+    }
+    /// The argument across scales, on one screen.
+    overview {
+        scale_ladder::ScaleLadder,
     }
 }
 

@@ -1672,7 +1672,29 @@ impl GrainscopeApp {
         }
     }
 
+    /// The figures, with a scene's ladder of linked numbers beside them.
     fn figures(&mut self, ui: &mut egui::Ui) {
+        let ladder = match self.outputs[self.session.index()].as_deref().map(|o| &o.extra) {
+            Some(Extra::Ladder(rungs)) => Some(Arc::clone(rungs)),
+            _ => None,
+        };
+        let Some(rungs) = ladder else {
+            self.figure_panels(ui);
+            return;
+        };
+        let avail = ui.available_size();
+        let width = (0.3 * avail.x).clamp(250.0, 440.0);
+        let text = if self.session.lecture { 16.0 } else { 13.0 };
+        ui.horizontal_top(|ui| {
+            ui.allocate_ui_with_layout(egui::vec2(width, avail.y), egui::Layout::top_down(egui::Align::Min), |ui| {
+                ui.set_width(width);
+                egui::ScrollArea::vertical().id_salt("ladder").show(ui, |ui| ladder_panel(ui, &rungs, text));
+            });
+            ui.vertical(|ui| self.figure_panels(ui));
+        });
+    }
+
+    fn figure_panels(&mut self, ui: &mut egui::Ui) {
         let Some(out) = self.outputs[self.session.index()].clone() else {
             ui.centered_and_justified(|ui| ui.spinner());
             return;
@@ -1692,7 +1714,7 @@ impl GrainscopeApp {
         let full_cursor = self.params().cursor(&out);
         let trajectory = match &out.extra {
             Extra::Collision(t) => Some(Arc::clone(t)),
-            Extra::Paths(_) | Extra::Model(_) | Extra::None => None,
+            Extra::Paths(_) | Extra::Model(_) | Extra::Ladder(_) | Extra::None => None,
         };
         let n_panels = out.figures.len() + usize::from(trajectory.is_some());
         // A slide may enlarge one figure: it leads across the full width,
@@ -1714,6 +1736,8 @@ impl GrainscopeApp {
             2..=4 => 2,
             _ => 3,
         };
+        // A narrow area (beside a ladder, a small window) takes fewer columns.
+        let cols = cols.min(((avail.x + 12.0) / (min_w + 12.0)).max(1.0) as usize);
         let rows = n_panels.div_ceil(cols);
         let size = egui::vec2(
             (avail.x / cols as f32 - 12.0).max(min_w),
@@ -1894,6 +1918,26 @@ impl eframe::App for GrainscopeApp {
 
     fn save(&mut self, _storage: &mut dyn eframe::Storage) {
         self.save_session();
+    }
+}
+
+/// The rungs of a ladder, smallest scale on top, an arrow between them.
+fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32) {
+    for (k, rung) in rungs.iter().enumerate() {
+        if k > 0 {
+            ui.vertical_centered(|ui| ui.label(egui::RichText::new("↓").size(text * 1.3)));
+        }
+        egui::Frame::group(ui.style()).show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.label(egui::RichText::new(&rung.scale).strong().size(text + 1.0));
+            egui::Grid::new(("rung", k)).num_columns(2).spacing([8.0, 1.0]).show(ui, |ui| {
+                for (quantity, value, source) in &rung.items {
+                    ui.label(egui::RichText::new(quantity).size(text)).on_hover_text(source);
+                    ui.label(egui::RichText::new(value).size(text).strong()).on_hover_text(source);
+                    ui.end_row();
+                }
+            });
+        });
     }
 }
 

@@ -131,9 +131,21 @@ pub enum Extra {
     /// Histories drawn on figures whose axes are not time (growth tracks):
     /// the time of every point, so that a time cursor can follow them.
     Paths(Arc<Vec<TimedPath>>),
+    /// Linked numbers from the smallest scale to the largest, shown as a
+    /// ladder beside the figures.
+    Ladder(Arc<Vec<Rung>>),
     /// The model's own result (a batch run, Monte Carlo runs), kept so that
     /// a clicked point of a figure can be inspected without recomputing.
     Model(ModelData),
+}
+
+/// One scale of a ladder: its name and its numbers.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Rung {
+    /// The scale, e.g. "Contact of two monomers (ch. 2–3)".
+    pub scale: String,
+    /// (quantity, value with unit, equation or section).
+    pub items: Vec<(String, String, String)>,
 }
 
 /// A model result shared with the window for inspection. It follows from the

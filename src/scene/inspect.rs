@@ -46,6 +46,21 @@ pub fn value(v: f64, unit: &str) -> String {
     if unit.is_empty() { n } else { format!("{n} {unit}") }
 }
 
+/// A length (m) as text with a fitting unit (nm, µm, cm or m).
+pub fn length(a: f64) -> String {
+    if a < 1e-6 {
+        value(a * 1e9, "nm")
+    } else if a < 1e-3 {
+        value(a * 1e6, "µm")
+    } else if a < 1.0 {
+        value(a * 1e2, "cm")
+    } else if a < 1e3 {
+        value(a, "m")
+    } else {
+        value(a * 1e-3, "km")
+    }
+}
+
 /// Distance between two points of `fig` in fractions of its default view's
 /// width and height, so that both axes count alike; infinite when a point
 /// cannot be shown.

@@ -22,7 +22,7 @@ pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Context, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, Trajectory,
+    Caches, Context, Extra, Progress, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, Trajectory,
     logspace,
 };
 pub use timeline::{Cursor, Mark};

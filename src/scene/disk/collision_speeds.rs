@@ -72,7 +72,7 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
     let mut rows = vec![
         inspect::row("masses m_i, m_j", format!("{} g, {} g", crate::figure::human(ai.mass * 1e3), crate::figure::human(aj.mass * 1e3))),
         inspect::row("in monomers", format!("{}, {}", crate::figure::human(n_i), crate::figure::human(n_j))),
-        inspect::row("radii a_i, a_j", format!("{}, {}", length(ai.radius(&mono)), length(aj.radius(&mono)))),
+        inspect::row("radii a_i, a_j", format!("{}, {}", inspect::length(ai.radius(&mono)), inspect::length(aj.radius(&mono)))),
         inspect::row("filling factors φ", format!("{}, {}", crate::figure::human(ai.filling), crate::figure::human(aj.filling))),
         inspect::row("Stokes numbers Ωt_s", format!("{}, {}", crate::figure::human(pi.stokes), crate::figure::human(pj.stokes))),
         inspect::row("drag regimes", format!("{:?}, {:?}", si.regime, sj.regime)),
@@ -126,7 +126,11 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
     };
     let mut actions = Vec::new();
     let (ri, rj) = (ai.radius(&mono), aj.radius(&mono));
-    if spheres && (2e-8..=2e-2).contains(&ri) && (2e-8..=2e-2).contains(&rj) {
+    let in_range = (2e-8..=2e-2).contains(&ri) && (2e-8..=2e-2).contains(&rj);
+    if spheres && !in_range {
+        rows.push(inspect::row("as a collision", "radii outside the contact scene's 20 nm – 2 cm"));
+    }
+    if spheres && in_range {
         let material = if mono.icy { Material::water_ice() } else { Material::named("silicate").cloned().unwrap_or_else(Material::water_ice) };
         let collision = CollisionParams {
             projectile: material.clone(),
@@ -142,8 +146,8 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
             label: "Open as a collision".into(),
             hint: format!(
                 "{what} of radii {} and {} meeting head-on at {} m/s in the ch. 2 contact model (Table 2.2 material)",
-                length(ri),
-                length(rj),
+                inspect::length(ri),
+                inspect::length(rj),
                 crate::figure::human(dv.clamp(1e-3, 1e3))
             ),
             open: SceneParams::Hysteresis(crate::scene::collisions::hysteresis::Params { collision, ..Default::default() }),
@@ -159,18 +163,6 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
     }
 }
 
-/// A length with a fitting unit.
-fn length(a: f64) -> String {
-    if a < 1e-6 {
-        inspect::value(a * 1e9, "nm")
-    } else if a < 1e-3 {
-        inspect::value(a * 1e6, "µm")
-    } else if a < 1.0 {
-        inspect::value(a * 1e2, "cm")
-    } else {
-        inspect::value(a, "m")
-    }
-}
 
 /// Parameters of the collision-speed scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]

@@ -270,7 +270,7 @@ pub fn aggregate_rows(disk: &DiskParams, r: f64, mass: f64, filling: f64, t_grow
         row("radius in the disk R", value(r / AU, "AU")),
         row("mass m", value(mass * 1e3, "g")),
         row("filling factor φ", value(agg.filling, "")),
-        row("size a", value(a * 1e2, "cm")),
+        row("size a", crate::scene::inspect::length(a)),
         row("Stokes number Ωt_s", value(st, "")),
         row("drag regime", format!("{:?} (a/λ_mfp = {})", stop.regime, crate::figure::human(a / env.mean_free_path))),
         row("growth time t_grow", if t_grow.is_finite() { value(t_grow / YEAR, "yr") } else { "∞ (halted)".into() }),
@@ -283,11 +283,18 @@ pub fn aggregate_rows(disk: &DiskParams, r: f64, mass: f64, filling: f64, t_grow
 /// same disk, with the same monomer.
 pub fn column_action(disk: &DiskParams, r_au: f64) -> crate::scene::inspect::Action {
     use crate::scene::monte_carlo::{common::ColumnParams, mass_distribution};
-    let r = r_au.clamp(0.5, 300.0);
+    // Three significant digits, as a user would type it.
+    let step = 10f64.powi(r_au.log10().floor() as i32 - 2);
+    let r = ((r_au / step).round() * step).clamp(0.5, 300.0);
     let run = ColumnParams { disk: disk.clone(), radius_au: r, ..ColumnParams::default() };
+    let hint_run = run.clone();
     crate::scene::inspect::Action {
         label: "Open the local column".into(),
-        hint: format!("the Monte Carlo column at {} AU of this disk, with the same monomer", crate::figure::human(r)),
+        hint: format!(
+            "the Monte Carlo column at {} AU of this disk, with the same monomer, from monomers to {} yr",
+            crate::figure::human(r),
+            crate::figure::human(hint_run.t_end_yr)
+        ),
         open: crate::scene::SceneParams::MassDistribution(mass_distribution::Params { run, ..Default::default() }),
     }
 }

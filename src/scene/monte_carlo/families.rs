@@ -60,7 +60,7 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
             inspect::row("mass m", inspect::value(f.mass * 1e3, "g")),
             inspect::row("in monomers", inspect::value(f.mass / mono.mass(), "")),
             inspect::row("filling factor φ", inspect::value(f.filling, "")),
-            inspect::row("size a", inspect::value(agg.radius(&mono) * 1e2, "cm")),
+            inspect::row("size a", inspect::length(agg.radius(&mono))),
             inspect::row("Stokes number Ωt_s", inspect::value(f.stokes, "")),
             inspect::row("particles (weight)", inspect::value(f.particles, "")),
             inspect::row("share of the column's mass", inspect::value(f.mass * f.particles / total.max(1e-300), "")),

@@ -9,7 +9,8 @@ use crate::physics::growth::{Porosity, Stop, Track};
 use crate::physics::monomer::{GUNDLACH_RADIUS, GUNDLACH_ROLLING_ENERGY, Monomer, RollingLaw};
 use crate::scene::batches::common::BatchParams;
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{Context, Extra, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use std::sync::Arc;
 use crate::scene::disk::common::{GrowthParams, ROLLING_LAWS};
 use serde::{Deserialize, Serialize};
 
@@ -20,7 +21,7 @@ impl Scene for ScaleLadder {
     type Params = Params;
     const INFO: SceneInfo = SceneInfo {
         id: "scale-ladder",
-        title: "Scale ladder: from a contact to planetesimals",
+        title: "Scale ladder",
         source: "Sects. 1.2, 3.2, 4.2.3–4.2.4, 4.5, 5.3, App. 5.C; Eqs. 1.24, 1.25, 2.25, 3.16, 4.12, 4.15, 5.26; Figs. 4.8, 5.9",
         explanation: "One monomer, four scales. The contact of two monomers (ch. 2) sets the energy to break it, \
 E_break ∝ (γ⁵R⁴/E*²)^{1/3} (1.24), and their sticking velocity (2.25); its rolling energy E_roll = 6πγRξ_crit \
@@ -205,11 +206,63 @@ pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneEr
         crate::figure::human(edge)
     )];
     ctx.progress.set(1.0);
+    let rungs = ladder(&scalars, &mono, p);
     Ok(SceneOutput {
         warnings: Vec::new(),
         scalars,
         figures: vec![fig_roll, fig_phi, fig_disk],
         notes,
-        extra: crate::scene::core::Extra::None,
+        extra: Extra::Ladder(Arc::new(rungs)),
     })
+}
+
+/// The scalars as four rungs, smallest scale first.
+fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
+    let get = |key: &str| scalars.iter().find(|s| s.key == key).map(|s| s.value);
+    let h = crate::figure::human;
+    let text = |key: &str, f: &dyn Fn(f64) -> String| get(key).map_or_else(|| "–".to_string(), f);
+    let item = |q: &str, v: String, src: &str| (q.to_string(), v, src.to_string());
+    let law = match mono.rolling {
+        RollingLaw::Calibrated => "calibrated (5.26)",
+        RollingLaw::Contact { .. } => "ch. 3 contact (3.16)",
+        RollingLaw::DominikTielens { .. } => "Dominik & Tielens",
+    };
+    vec![
+        Rung {
+            scale: format!("1 · Two monomers, a₀ = {} µm (ch. 2–3)", h(mono.radius * 1e6)),
+            items: vec![
+                item("contact radius a_eq", text("a_eq", &|v| format!("{} nm", h(v * 1e9))), "JKR equilibrium, Eq. 2.10"),
+                item("pull-off force F_c", text("F_c", &|v| format!("{} N", h(v))), "(3/2)πγR, Sect. 1.2"),
+                item("E_break", text("E_break", &|v| format!("{} erg", h(v * 1e7))), "Eq. 1.24 (with E*²)"),
+                item("ξ_crit", text("xi_crit", &|v| format!("{} nm", h(v * 1e9))), "Eq. 3.16 or the law chosen"),
+                item("E_roll", text("E_roll", &|v| format!("{} erg", h(v * 1e7))), law),
+                item("v_stick (JKR)", text("v_stick_jkr", &|v| format!("{} m/s", h(v))), "Eq. 2.25"),
+            ],
+        },
+        Rung {
+            scale: "2 · Aggregate thresholds (Sects. 4.2.3–4.2.4)".into(),
+            items: vec![
+                item("compaction above 3bE_roll", text("E_compaction", &|v| format!("{} erg", h(v * 1e7))), "b = 0.15, App. 5.C"),
+                item("v_frag of the monomer", text("v_frag_monomer", &|v| format!("{} m/s", h(v))), "Eq. 4.12"),
+                item("v_frag used", text("v_frag_used", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }), "the run's threshold"),
+                item("v_eros", text("v_eros", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }), "as set, Sect. 4.2.3"),
+            ],
+        },
+        Rung {
+            scale: format!("3 · Growth in the column at {} AU (ch. 4)", h(p.radius_au)),
+            items: vec![
+                item("Ωt_s = 1 after", text("time_st1", &|v| format!("{} yr", h(v))), "local growth, no drift, Sect. 4.5"),
+                item("mass at Ωt_s = 1", text("mass_st1", &|v| format!("{} g", h(v * 1e3))), "the drift barrier"),
+                item("φ at Ωt_s = 1", text("phi_st1", &|v| h(v)), "Eqs. 4.15–4.16"),
+                item("φ at 10¹⁶ g", text("phi_planetesimal", &|v| h(v)), "self-gravity compaction, Fig. 4.8"),
+            ],
+        },
+        Rung {
+            scale: format!("4 · The disk: {} M☉, Z₀ = {} (ch. 5)", h(p.run.disk.disk_mass), h(p.run.disk.metallicity)),
+            items: vec![
+                item("planetesimals form out to", text("formation_edge", &|v| format!("{} AU", h(v))), "Fig. 5.9"),
+                item("dust converted", text("converted", &|v| format!("{} %", h(100.0 * v))), "Sect. 5.3"),
+            ],
+        },
+    ]
 }

@@ -1925,7 +1925,7 @@ impl eframe::App for GrainscopeApp {
 fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32) {
     for (k, rung) in rungs.iter().enumerate() {
         if k > 0 {
-            ui.vertical_centered(|ui| ui.label(egui::RichText::new("↓").size(text * 1.3)));
+            ui.vertical_centered(|ui| ui.label(egui::RichText::new("↓").size(text)));
         }
         egui::Frame::group(ui.style()).show(ui, |ui| {
             ui.set_width(ui.available_width());

@@ -49,7 +49,7 @@ at the resolution set below.",
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The disk, its monomer and the batch model (default: Fig. 5.9's
-    /// 0.2 M☉, Z₀ = 0.05, R_c = 30 AU disk with 120 batches).
+    /// 0.2 M☉, Z₀ = 0.05, R_c = 30 AU disk with 250 batches out to 300 AU).
     pub run: BatchParams,
     /// Radius of the local column, AU (default 5).
     pub radius_au: f64,
@@ -57,7 +57,7 @@ pub struct Params {
 
 impl Default for Params {
     fn default() -> Self {
-        let mut run = BatchParams { batches: 120, r_out_au: 300.0, ..BatchParams::default() };
+        let mut run = BatchParams { r_out_au: 300.0, ..BatchParams::default() };
         run.disk.disk_mass = 0.2;
         run.disk.metallicity = 0.05;
         Params { run, radius_au: 5.0 }

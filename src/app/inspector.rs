@@ -14,17 +14,20 @@ pub(super) struct Inspected {
     figure: String,
     /// What the scene said.
     pub(super) inspection: Inspection,
+    /// Where the click was on the screen: the card keeps clear of it.
+    at: egui::Pos2,
 }
 
 impl GrainscopeApp {
     /// Asks the open scene about the point `at` of figure `figure`; a point
     /// the scene cannot inspect closes the card.
-    pub(super) fn inspect_at(&mut self, out: &SceneOutput, figure: &str, at: [f64; 2]) {
+    pub(super) fn inspect_at(&mut self, out: &SceneOutput, figure: &str, at: [f64; 2], screen: egui::Pos2) {
         let scene = self.session.index();
         self.inspected = self.params().inspect(out, figure, at).map(|inspection| Inspected {
             scene,
             figure: figure.to_string(),
             inspection,
+            at: screen,
         });
     }
 
@@ -53,13 +56,24 @@ impl GrainscopeApp {
     /// The card, beside the plots, while its scene is open.
     pub(super) fn inspection_window(&mut self, ctx: &egui::Context) {
         let Some(insp) = self.inspection().cloned() else { return };
+        // In the corner of the screen farthest from the clicked point.
+        let at = self.inspected.as_ref().map_or(egui::Pos2::ZERO, |i| i.at);
+        let screen = ctx.content_rect();
+        let right = at.x < screen.center().x;
+        let bottom = at.y < screen.center().y;
+        let align = egui::Align2([
+            if right { egui::Align::Max } else { egui::Align::Min },
+            if bottom { egui::Align::Max } else { egui::Align::Min },
+        ]);
+        let offset = egui::vec2(if right { -12.0 } else { 12.0 }, if bottom { -36.0 } else { 60.0 });
         let mut open = true;
         let mut chosen: Option<(SceneParams, String)> = None;
         let text = if self.session.lecture { 17.0 } else { 13.0 };
         egui::Window::new("Inspect")
             .open(&mut open)
-            .anchor(egui::Align2::RIGHT_BOTTOM, [-12.0, -40.0])
+            .anchor(align, offset)
             .default_width(360.0)
+            .max_width(if self.session.lecture { 470.0 } else { 400.0 })
             .collapsible(true)
             .resizable(false)
             .show(ctx, |ui| {
@@ -67,7 +81,7 @@ impl GrainscopeApp {
                 egui::Grid::new("inspection-rows").num_columns(2).spacing([12.0, 2.0]).striped(true).show(ui, |ui| {
                     for (k, v) in &insp.rows {
                         ui.label(egui::RichText::new(k).size(text));
-                        ui.label(egui::RichText::new(v).size(text));
+                        ui.add(egui::Label::new(egui::RichText::new(v).size(text)).wrap());
                         ui.end_row();
                     }
                 });

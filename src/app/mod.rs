@@ -1761,7 +1761,7 @@ impl GrainscopeApp {
         let mut export_dir = std::mem::take(&mut self.session.export_dir);
         let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
         // A click on a plot, to inspect: (figure id, point in axis units).
-        let mut clicked: Option<(String, [f64; 2])> = None;
+        let mut clicked: Option<(String, [f64; 2], egui::Pos2)> = None;
         let scroll = egui::ScrollArea::new([multiples, multiples])
             .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
             .max_height(if multiples { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
@@ -1790,8 +1790,8 @@ impl GrainscopeApp {
                     let shown = plot::show(ui, fig, &overlay, size, self.stale, look, locked);
                     self.plot_rects.push(shown.response.rect);
                     self.plot_frames.push((fig.id.clone(), shown.frame));
-                    if let Some(at) = shown.clicked {
-                        clicked = Some((fig.id.clone(), at));
+                    if let Some((at, pos)) = shown.clicked {
+                        clicked = Some((fig.id.clone(), at, pos));
                     }
                     if lecture {
                         return;
@@ -1876,8 +1876,8 @@ impl GrainscopeApp {
             }
         });
         self.session.export_dir = export_dir;
-        if let Some((figure, at)) = clicked {
-            self.inspect_at(&out, &figure, at);
+        if let Some((figure, at, pos)) = clicked {
+            self.inspect_at(&out, &figure, at, pos);
         }
         if trajectory.is_none() && !lecture {
             ui.horizontal(|ui| {

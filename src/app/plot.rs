@@ -319,13 +319,11 @@ pub fn show(
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look, px));
                 let frame = *shown.transform.frame();
                 // A click (not a drag) at a point of the plot, in axis units.
-                let clicked = shown
-                    .response
-                    .clicked()
-                    .then(|| shown.response.interact_pointer_pos())
-                    .flatten()
-                    .map(|pos| shown.transform.value_from_position(pos))
-                    .map(|v| [untransform(v.x, xs), untransform(v.y, ys)]);
+                let clicked =
+                    shown.response.clicked().then(|| shown.response.interact_pointer_pos()).flatten().map(|pos| {
+                        let v = shown.transform.value_from_position(pos);
+                        ([untransform(v.x, xs), untransform(v.y, ys)], pos)
+                    });
                 // The colour bar first: a legend inside the plot places its
                 // labels with the layout, which would move what follows.
                 if let Some(b) = &bar {
@@ -385,8 +383,8 @@ pub fn show(
 pub struct Shown {
     /// The whole panel's response.
     pub response: egui::Response,
-    /// The point clicked in this frame, if any.
-    pub clicked: Option<[f64; 2]>,
+    /// The point clicked in this frame, if any: in axis units and on the screen.
+    pub clicked: Option<([f64; 2], egui::Pos2)>,
     /// The plot's frame (inside its axes).
     pub frame: egui::Rect,
 }

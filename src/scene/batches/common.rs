@@ -198,8 +198,12 @@ pub fn inspect_batch(
             crate::figure::human(r / AU),
             crate::figure::human(t / YEAR)
         ),
-        Some(other) => format!("this batch ends as {other:?}"),
-        None => String::new(),
+        Some(Fate::Lost { t }) => format!(
+            "this batch drifts inside the inner edge ({} AU) after {} yr",
+            crate::figure::human(p.config().model.inner_edge / AU),
+            crate::figure::human(t / YEAR)
+        ),
+        Some(Fate::Dust) | None => format!("this batch is still dust at {} yr", crate::figure::human(p.duration_yr)),
     };
     Some(Inspection {
         title: format!("Batch {} at t = {} yr", b + 1, crate::figure::human(t / YEAR)),

@@ -70,7 +70,12 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
                 "this track forms a planetesimal (10¹⁶ g) at {} AU",
                 crate::figure::human(track.points.last().map_or(0.0, |l| l.r / AU))
             ),
-            _ => format!("this track ends without a planetesimal ({:?})", track.stop),
+            Stop::InnerEdge => "this track drifts inside the inner edge (1 AU) without forming a planetesimal".into(),
+            Stop::TimeLimit | Stop::Steps => format!(
+                "no planetesimal within {} yr{}",
+                crate::figure::human(p.duration_yr),
+                track.halted_by.map_or(String::new(), |h| format!("; growth halted by {h}"))
+            ),
         };
         Some(Inspection {
             title: format!("Growth track at t = {} yr", crate::figure::human(q.t / YEAR)),

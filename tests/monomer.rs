@@ -45,7 +45,8 @@ fn every_aggregate_scene_takes_the_card_by_key() {
 #[test]
 fn the_surface_energy_reaches_the_porosity_track_the_column_and_the_batch_model() {
     let doubled = [("surface_energy_ice", "1.48")];
-    let cases: [(&str, &[(&str, &str)], &str); 3] = [
+    type Case<'a> = (&'a str, &'a [(&'a str, &'a str)], &'a str);
+    let cases: [Case; 3] = [
         ("porosity-track", &[], "phi_planetesimal"),
         (
             "mass-distribution",

@@ -110,7 +110,7 @@ impl GrainscopeApp {
     /// returns how many changed.
     pub(super) fn share_monomer(&mut self, from: usize, card: &Card) -> usize {
         let mut changed = 0;
-        for k in 0..SCENES.len() {
+        for (k, info) in SCENES.iter().enumerate() {
             if k == from {
                 continue;
             }
@@ -119,7 +119,7 @@ impl GrainscopeApp {
                 continue;
             }
             if q.set_monomer_card(card) {
-                self.session.params.insert(SCENES[k].id.to_string(), q);
+                self.session.params.insert(info.id.to_string(), q);
                 changed += 1;
             }
         }

@@ -130,7 +130,7 @@ impl GrainscopeApp {
 /// A derived value as text: SI with its unit, and erg for the energies.
 fn value_text(s: &Scalar) -> String {
     if s.value.is_infinite() {
-        return "sticks at every speed ≤ 10 km/s".into();
+        return "no bounce found up to 10 km/s (bulk loss dominates; far beyond the model's range)".into();
     }
     let unit = match s.unit {
         "m s^-1" => "m/s",

@@ -102,7 +102,9 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
         mass: mu,
         ..mono.pair()
     };
-    let outcome = if spheres {
+    // The contact model decides for two single monomers; larger pairs
+    // follow the aggregate thresholds of ch. 4.
+    let outcome = if n_i <= 1.0 && n_j <= 1.0 {
         let v_stick = pair.jkr_sticking_velocity();
         rows.push(inspect::row("v_stick of the two spheres (2.25)", inspect::value(v_stick, "m/s")));
         if dv > v_stick {

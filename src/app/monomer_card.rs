@@ -14,25 +14,18 @@ pub(super) fn is_card_key(key: &str) -> bool {
 /// The card's controls that apply to the scene's current monomer: the
 /// surface energy of its material and the parameter of its rolling law.
 pub(super) fn shown_keys(params: &SceneParams) -> Vec<&'static str> {
+    use crate::physics::monomer::RollingLaw;
     let m = params.monomer();
     let icy = m.is_none_or(|m| m.icy);
-    let law = params
-        .monomer_card()
-        .and_then(|c| c.get(4).cloned())
-        .map(|v| match v {
-            crate::scene::DefaultValue::Text(t) => t,
-            _ => String::new(),
-        })
-        .unwrap_or_default();
     let mut keys = vec![
         "monomer_radius",
         "icy",
         if icy { "surface_energy_ice" } else { "surface_energy_silicate" },
         "rolling_law",
     ];
-    match law.as_str() {
-        "contact" => keys.push("hysteresis"),
-        "dominik-tielens" => keys.push("xi_crit"),
+    match m.map(|m| m.rolling) {
+        Some(RollingLaw::Contact { .. }) => keys.push("hysteresis"),
+        Some(RollingLaw::DominikTielens { .. }) => keys.push("xi_crit"),
         _ => {}
     }
     keys.push("own_monomer");

@@ -78,7 +78,7 @@ pub struct Props {
 }
 
 /// Collisional-compaction parameter b (Okuzumi et al. 2012).
-const B_COMPACT: f64 = 0.15;
+use super::monomer::COMPACTION_B as B_COMPACT;
 
 impl Column {
     fn particle(&self, f: &Family<Props>) -> Particle {

@@ -275,7 +275,7 @@ impl GrowthModel {
             Porosity::Collisional | Porosity::Full => {
                 let e_per_n = m * v * v / 4.0 / (m / m0);
                 let collisional = match s.onset {
-                    None if m * v * v / 4.0 > 3.0 * 0.15 * e_roll => {
+                    None if m * v * v / 4.0 > 3.0 * super::monomer::COMPACTION_B * e_roll => {
                         s.onset = Some((m, phi, e_per_n));
                         s.markers.collisional = Some([m, phi]);
                         phi

@@ -46,6 +46,9 @@ pub enum RollingLaw {
     },
 }
 
+/// Prefactor b of the collisional-compaction threshold 3bE_roll (App. 5.C).
+pub const COMPACTION_B: f64 = 0.15;
+
 /// Gundlach et al. (2011): rolling energy 1.8 × 10⁻⁷ erg of ice grains of
 /// radius ~1.5 µm, J (Sect. 4.2.4).
 pub const GUNDLACH_ROLLING_ENERGY: f64 = 1.8e-14;
@@ -152,6 +155,11 @@ impl Monomer {
         }
     }
 
+    /// Impact energy above which a collision compacts, 3bE_roll (b = 0.15), J.
+    pub fn compaction_energy(&self) -> f64 {
+        3.0 * COMPACTION_B * self.rolling_energy()
+    }
+
     /// Rolling force F_roll = E_roll/R = 6πγξ_crit (3.14 with F = M/R), N.
     pub fn rolling_force(&self) -> f64 {
         self.rolling_energy() / self.pair().radius
@@ -174,13 +182,12 @@ impl Monomer {
     /// γ = 0.74 J m⁻²: 80 (a₀/0.1 µm)^{-5/6} for ice at its own γ.
     pub fn fragmentation_velocity(&self) -> f64 {
         let reference = Monomer::ice();
-        let own = self.break_energy() / self.mass();
-        let at_reference = reference.break_energy() / reference.mass();
         if self.icy && self.surface_energy == ICE_SURFACE_ENERGY && self.density == reference.density {
             // The printed power law itself, exact for the published numbers.
             80.0 * (self.radius / 1e-7).powf(-5.0 / 6.0)
         } else {
-            80.0 * (own / at_reference).sqrt()
+            let per_mass = |m: &Monomer| m.break_energy() / m.mass();
+            80.0 * (per_mass(self) / per_mass(&reference)).sqrt()
         }
     }
 

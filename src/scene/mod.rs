@@ -271,10 +271,13 @@ impl SceneParams {
     pub fn compute_key(&self) -> SceneParams {
         let mut key = self.clone();
         for c in key.controls() {
-            if c.style_only
-                && let ControlKind::Number { value, .. } = c.kind
-            {
-                *value = 0.0;
+            if !c.style_only {
+                continue;
+            }
+            match c.kind {
+                ControlKind::Number { value, .. } => *value = 0.0,
+                ControlKind::Toggle(value) => *value = false,
+                _ => {}
             }
         }
         key

@@ -88,11 +88,11 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
     // and for two monomers or two compact spheres as the contact model does.
     let mu = ai.mass * aj.mass / (ai.mass + aj.mass);
     let e_imp = 0.5 * mu * dv * dv;
-    let e_roll = mono.rolling_energy();
+    let e_compact = mono.compaction_energy();
     let v_frag = mono.fragmentation_velocity();
     let ratio = ai.mass.min(aj.mass) / ai.mass.max(aj.mass);
     rows.push(inspect::row("impact energy ½μΔv²", inspect::value(e_imp, "J")));
-    rows.push(inspect::row("3bE_roll (compaction onset)", inspect::value(3.0 * 0.15 * e_roll, "J")));
+    rows.push(inspect::row("3bE_roll (compaction onset)", inspect::value(e_compact, "J")));
     let spheres = ai.filling >= 1.0 && aj.filling >= 1.0;
     let pair = crate::physics::contact::Pair {
         radius: {
@@ -116,15 +116,15 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
         format!("erosion: mass ratio {} < R_crit = 10⁻² and Δv above v_eros = {} m/s", crate::figure::human(ratio), crate::figure::human(p.v_eros))
     } else if dv > v_frag {
         format!("fragmentation: Δv above v_frag = {} m/s (4.12)", crate::figure::human(v_frag))
-    } else if e_imp > 3.0 * 0.15 * e_roll {
+    } else if e_imp > e_compact {
         format!(
             "stick with compaction: ½μΔv² exceeds 3bE_roll = {} J (b = 0.15); below v_frag = {} m/s{}",
-            crate::figure::human(3.0 * 0.15 * e_roll),
+            crate::figure::human(e_compact),
             crate::figure::human(v_frag),
             if p.v_eros < 1e4 { format!(" and v_eros = {} m/s", crate::figure::human(p.v_eros)) } else { String::new() }
         )
     } else {
-        format!("hit-and-stick without compaction: ½μΔv² below 3bE_roll = {} J", crate::figure::human(3.0 * 0.15 * e_roll))
+        format!("hit-and-stick without compaction: ½μΔv² below 3bE_roll = {} J", crate::figure::human(e_compact))
     };
     let mut actions = Vec::new();
     let (ri, rj) = (ai.radius(&mono), aj.radius(&mono));

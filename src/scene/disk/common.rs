@@ -287,14 +287,14 @@ pub fn column_action(disk: &DiskParams, r_au: f64) -> crate::scene::inspect::Act
     let step = 10f64.powi(r_au.log10().floor() as i32 - 2);
     let r = ((r_au / step).round() * step).clamp(0.5, 300.0);
     let run = ColumnParams { disk: disk.clone(), radius_au: r, ..ColumnParams::default() };
-    let hint_run = run.clone();
+    let hint = format!(
+        "the Monte Carlo column at {} AU of this disk, with the same monomer, from monomers to {} yr",
+        crate::figure::human(r),
+        crate::figure::human(run.t_end_yr)
+    );
     crate::scene::inspect::Action {
         label: "Open the local column".into(),
-        hint: format!(
-            "the Monte Carlo column at {} AU of this disk, with the same monomer, from monomers to {} yr",
-            crate::figure::human(r),
-            crate::figure::human(hint_run.t_end_yr)
-        ),
+        hint,
         open: crate::scene::SceneParams::MassDistribution(mass_distribution::Params { run, ..Default::default() }),
     }
 }

@@ -11,7 +11,7 @@ use crate::scene::batches::common::BatchParams;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Extra, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use std::sync::Arc;
-use crate::scene::disk::common::{GrowthParams, ROLLING_LAWS};
+use crate::scene::disk::common::{DiskParams, GrowthParams, ROLLING_LAWS, TrackParams};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -76,13 +76,15 @@ impl Params {
         c
     }
 
-    /// The local growth model (no drift, no fragmentation) with `mono`.
-    fn local(&self, mono: &Monomer) -> Track {
-        let growth = GrowthParams { disk: self.run.disk.clone(), v_frag: 1e4, ..GrowthParams::default() };
-        let mut model = growth.model(Porosity::Full);
-        model.monomer = *mono;
-        model.drift = false;
-        model.run(self.radius_au * AU, 1e8 * YEAR)
+    /// The disk and monomer with the rolling-energy law `law` (a key of [`ROLLING_LAWS`]).
+    fn with_law(&self, law: &str) -> DiskParams {
+        DiskParams { rolling_law: law.to_string(), ..self.run.disk.clone() }
+    }
+
+    /// Local growth at the column's radius (no drift, no fragmentation).
+    fn local(&self, disk: DiskParams) -> Track {
+        let growth = GrowthParams { disk, v_frag: 1e4, ..GrowthParams::default() };
+        TrackParams { growth, radius_au: self.radius_au }.track(Porosity::Full)
     }
 }
 
@@ -95,11 +97,6 @@ fn stokes_unity(t: &Track) -> Option<(f64, f64)> {
 pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
     let mono = p.run.disk.monomer();
     let pair = mono.pair();
-    let law_of = |key: &str| match key {
-        "contact" => RollingLaw::Contact { hysteresis: p.run.disk.hysteresis },
-        "dominik-tielens" => RollingLaw::DominikTielens { xi: p.run.disk.xi_crit },
-        _ => RollingLaw::Calibrated,
-    };
     // 1. The contact of two monomers.
     let mut scalars = vec![
         Scalar { key: "a_eq", label: "contact: JKR equilibrium radius a_eq (2.10)", value: pair.jkr_equilibrium_radius(), unit: "m" },
@@ -114,7 +111,7 @@ pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneEr
     // 2. Aggregate thresholds.
     let v_frag = p.run.disk.fragmentation_velocity(p.run.v_frag, p.run.v_frag_from_monomer);
     scalars.extend([
-        Scalar { key: "E_compaction", label: "aggregates: compaction onset 3bE_roll (b = 0.15)", value: 0.45 * mono.rolling_energy(), unit: "J" },
+        Scalar { key: "E_compaction", label: "aggregates: compaction onset 3bE_roll (b = 0.15)", value: mono.compaction_energy(), unit: "J" },
         Scalar { key: "v_frag_monomer", label: "aggregates: v_frag of the monomer (4.12)", value: mono.fragmentation_velocity(), unit: "m s^-1" },
         Scalar { key: "v_frag_used", label: "aggregates: fragmentation threshold used", value: v_frag, unit: "m s^-1" },
         Scalar { key: "v_eros", label: "aggregates: erosion threshold v_eros (as set)", value: p.run.v_eros, unit: "m s^-1" },
@@ -128,9 +125,8 @@ pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneEr
     );
     let mut own: Option<Track> = None;
     for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-        let m = Monomer { rolling: law_of(key), ..mono };
-        let track = p.local(&m);
-        let chosen = m.rolling == mono.rolling;
+        let track = p.local(p.with_law(key));
+        let chosen = *key == p.run.disk.rolling_law;
         let pts = track.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect();
         let style = if chosen { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
         fig_phi = fig_phi.with(Series::new(format!("{label}{}", if chosen { " (chosen)" } else { "" }), pts, style, k));
@@ -138,7 +134,7 @@ pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneEr
             own = Some(track);
         }
     }
-    let own = own.unwrap_or_else(|| p.local(&mono));
+    let own = own.unwrap_or_else(|| p.local(p.run.disk.clone()));
     if let Some((m, t)) = stokes_unity(&own) {
         scalars.push(Scalar { key: "mass_st1", label: "column: mass at Ωt_s = 1 (drift barrier)", value: m, unit: "kg" });
         scalars.push(Scalar { key: "time_st1", label: "column: time to reach Ωt_s = 1", value: t / YEAR, unit: "yr" });
@@ -186,8 +182,9 @@ pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneEr
         Axis::log("E_roll", "erg"),
     );
     for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-        let pts = radii.iter().map(|&a| [a * 1e6, Monomer { radius: a, rolling: law_of(key), ..mono }.rolling_energy() * 1e7]).collect();
-        let style = if law_of(key) == mono.rolling { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
+        let law = p.with_law(key).monomer();
+        let pts = radii.iter().map(|&a| [a * 1e6, Monomer { radius: a, ..law }.rolling_energy() * 1e7]).collect();
+        let style = if *key == p.run.disk.rolling_law { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
         fig_roll = fig_roll.with(Series::new(*label, pts, style, k));
     }
     let measured = GUNDLACH_ROLLING_ENERGY * 1e7;
@@ -222,11 +219,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
     let h = crate::figure::human;
     let text = |key: &str, f: &dyn Fn(f64) -> String| get(key).map_or_else(|| "–".to_string(), f);
     let item = |q: &str, v: String, src: &str| (q.to_string(), v, src.to_string());
-    let law = match mono.rolling {
-        RollingLaw::Calibrated => "calibrated (5.26)",
-        RollingLaw::Contact { .. } => "ch. 3 contact (3.16)",
-        RollingLaw::DominikTielens { .. } => "Dominik & Tielens",
-    };
+    let law = ROLLING_LAWS.iter().find(|(k, _)| *k == p.run.disk.rolling_law).map_or(ROLLING_LAWS[0].1, |l| l.1);
     vec![
         Rung {
             scale: format!("1 · Two monomers, a₀ = {} µm (ch. 2–3)", h(mono.radius * 1e6)),

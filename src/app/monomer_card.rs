@@ -70,7 +70,12 @@ impl GrainscopeApp {
                 for s in &derived {
                     let label = s.label.trim_start_matches("monomer: ");
                     ui.small(label);
-                    ui.small(value_text(s));
+                    let shown = ui.add(egui::Label::new(egui::RichText::new(value_text(s)).small()).wrap());
+                    if s.value.is_infinite() {
+                        shown.on_hover_text(
+                            "the ch. 2 model finds no bounce up to 10 km/s: the bulk viscous loss exceeds the rebound, far outside the model's range",
+                        );
+                    }
                     ui.end_row();
                 }
             });
@@ -123,7 +128,7 @@ impl GrainscopeApp {
 /// A derived value as text: SI with its unit, and erg for the energies.
 fn value_text(s: &Scalar) -> String {
     if s.value.is_infinite() {
-        return "no bounce found up to 10 km/s (bulk loss dominates; far beyond the model's range)".into();
+        return "none up to 10 km/s".into();
     }
     let unit = match s.unit {
         "m s^-1" => "m/s",

@@ -112,46 +112,26 @@ pub fn stopping_time(env: &Local, mono: &Monomer, agg: &Aggregate, newton: bool)
         let v = gas_relative_velocity(eta_vk, omega * t).max(1e-300);
         2.0 * agg.mass / (drag_coefficient(reynolds(t)) * rho * v * area)
     };
-    // Regula falsi (Illinois) on g(ln t) = ln implied(t) − ln t, bracketed by
-    // g(ln t_st·1e-30) > 0 ≥ g(ln t_st).
+    // Illinois regula falsi on g(ln t) = ln implied(t) − ln t, bracketed by
+    // g(ln t_st) ≤ 0 and the first of ln t_st − 2, −6, −14, … where g > 0
+    // (down to t_st·1e-30).
     let g = |x: f64| implied(x.exp()).ln() - x;
-    let (mut lo, mut hi) = ((t_st * 1e-30).ln(), t_st.ln());
-    let (mut g_lo, mut g_hi) = (g(lo), g(hi));
-    let mut iterations = 0;
-    let mut side = 0;
-    while hi - lo > 1e-10 && iterations < 200 {
+    let (floor, mut hi) = ((t_st * 1e-30).ln(), t_st.ln());
+    let mut g_hi = g(hi);
+    let mut reach = 2.0;
+    let mut lo = (hi - reach).max(floor);
+    let mut g_lo = g(lo);
+    let mut iterations = 2;
+    while g_lo <= 0.0 && lo > floor {
+        (hi, g_hi) = (lo, g_lo);
+        reach *= 2.0;
+        lo = (hi - reach).max(floor);
+        g_lo = g(lo);
         iterations += 1;
-        let x = if g_lo.is_finite() && g_hi.is_finite() && g_lo != g_hi {
-            (lo * g_hi - hi * g_lo) / (g_hi - g_lo)
-        } else {
-            0.5 * (lo + hi)
-        };
-        let x = if x > lo && x < hi { x } else { 0.5 * (lo + hi) };
-        let gx = g(x);
-        if gx == 0.0 {
-            lo = x;
-            hi = x;
-            break;
-        }
-        if gx > 0.0 {
-            lo = x;
-            g_lo = gx;
-            if side == -1 {
-                g_hi *= 0.5;
-            }
-            side = -1;
-        } else {
-            hi = x;
-            g_hi = gx;
-            if side == 1 {
-                g_lo *= 0.5;
-            }
-            side = 1;
-        }
-        if (g_lo - g_hi).abs() < 1e-13 {
-            break;
-        }
     }
+    let root = crate::solver::illinois(g, [lo, hi], [g_lo, g_hi], 1e-10, 200);
+    iterations += root.evaluations;
+    let [lo, hi] = root.bracket;
     let t = (0.5 * (lo + hi)).exp();
     let re = reynolds(t);
     let regime = if re < 800.0 { DragRegime::Intermediate } else { DragRegime::Newton };
@@ -359,25 +339,24 @@ pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bo
         let agg = Aggregate { mass, filling: phi };
         let ts = stopping_time(env, mono, &agg, newton).time;
         let p_gas = gas_relative_velocity(eta_vk, omega * ts) * mass / (PI * agg.radius(mono).powi(2) * ts);
-        mono.rolling_energy() / mono.radius.powi(3) * phi.powi(3) - p_gas
+        // In logarithms the two pressures differ almost linearly in ln φ.
+        (mono.rolling_energy() / mono.radius.powi(3)).ln() + 3.0 * ln_phi - p_gas.ln()
     };
     let (full_lo, full_hi) = (1e-12f64.ln(), 0.0f64);
     let (mut lo, mut hi) =
         if hint > 0.0 { ((hint * 0.7).ln().max(full_lo), (hint * 1.5).ln().min(full_hi)) } else { (full_lo, full_hi) };
-    if !(excess(lo) < 0.0 && excess(hi) >= 0.0) {
+    let (mut e_lo, mut e_hi) = (excess(lo), excess(hi));
+    if !(e_lo < 0.0 && e_hi >= 0.0) {
         (lo, hi) = (full_lo, full_hi);
-        if excess(lo) >= 0.0 {
+        (e_lo, e_hi) = (excess(lo), excess(hi));
+        if e_lo >= 0.0 {
             return 1e-12;
         }
-        if excess(hi) < 0.0 {
+        if e_hi < 0.0 {
             return 1.0;
         }
     }
-    while hi - lo > 1e-6 {
-        let mid = 0.5 * (lo + hi);
-        if excess(mid) < 0.0 { lo = mid } else { hi = mid }
-    }
-    (0.5 * (lo + hi)).exp()
+    crate::solver::illinois(excess, [lo, hi], [e_lo, e_hi], 1e-8, 100).x().exp()
 }
 
 /// Filling factor set by self-gravity, φ = (Gm₀²/(πa₀E_roll))^{3/5}(m/m₀)^{2/5} (4.15 = 4.16).

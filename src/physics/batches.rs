@@ -5,11 +5,12 @@
 //! are lost. Streaming-instability conditions of Sect. 5.4.1 are evaluated
 //! along the way.
 //!
-//! Time stepping: batches exchange information only through Σ_d. Σ_d is
-//! recomputed at synchronisation times spaced logarithmically in time; between
-//! them each batch advances with its own steps (Δln m growth or 5 % of its
-//! drift time, the rule of Sect. 5.2.5 applied per batch) in the Σ_d of the
-//! last synchronisation.
+//! Time stepping: batches exchange information only through Σ_d. Each batch
+//! advances with its own steps (Δln m growth or 5 % of its drift time, the
+//! rule of Sect. 5.2.5 applied per batch); the batch furthest behind in time
+//! steps next and reads Σ_d from where its neighbours are now, so Σ_d is never
+//! older than one of the neighbours' own steps. Frames are interpolated to
+//! fixed, logarithmically spaced times.
 //!
 //! Surface density: the batches, sorted by radius, own the annuli between the
 //! geometric midpoints of their neighbours; Σ_d at a batch is the mass of it
@@ -58,12 +59,17 @@ pub struct BatchConfig {
     pub t_end: f64,
     /// Let particles grow (false: the drift-only test of Fig. 5.1).
     pub coagulation: bool,
-    /// Synchronisations per decade of time.
-    pub syncs_per_decade: usize,
     /// Neighbours on each side in the surface-density smoothing.
     pub smoothing: usize,
-    /// Record a frame every this many synchronisations (0: only the last).
-    pub frame_every: usize,
+    /// Smallest half-width of the smoothing annulus in ln R ([`MIN_HALF_WIDTH`]).
+    pub smoothing_width: f64,
+    /// Recorded frames per decade of time, from one year (the last frame is at `t_end`).
+    pub frames_per_decade: usize,
+    /// Shift of the initial grid, in batch spacings, 0 ≤ offset < 1: batch i
+    /// starts at r_in (r_out/r_in)^{(i + offset)/(N − 1 + offset)} (0: the
+    /// first batch at r_in). Runs that differ only in it sample how the result
+    /// depends on where the batches happen to sit.
+    pub offset: f64,
 }
 
 impl BatchConfig {
@@ -78,6 +84,7 @@ impl BatchConfig {
             metallicity: 0.02,
         };
         model.dlnm = 0.2;
+        model.midpoint = true;
         BatchConfig {
             model,
             r_in: 3.0 * AU,
@@ -85,9 +92,10 @@ impl BatchConfig {
             batches,
             t_end: 1e6 * YEAR,
             coagulation: true,
-            syncs_per_decade: 160,
             smoothing: 2,
-            frame_every: 4,
+            smoothing_width: MIN_HALF_WIDTH,
+            frames_per_decade: 40,
+            offset: 0.0,
         }
     }
 
@@ -99,6 +107,9 @@ impl BatchConfig {
         }
         if self.r_in <= self.model.inner_edge {
             return bad("r_in", self.r_in, "must lie outside the inner edge");
+        }
+        if !(0.0..1.0).contains(&self.offset) {
+            return bad("offset", self.offset, "need 0 <= offset < 1");
         }
         if self.batches < 2 {
             return bad("batches", self.batches as f64, "need at least 2 batches");
@@ -195,44 +206,31 @@ impl BatchRun {
             .fold(0.0, f64::max)
     }
 
+    /// Radius inside which the fraction `q` of the planetesimal mass formed, m
+    /// (0 if none): a robust measure of the zone's extent, where the outermost
+    /// radius follows a single batch.
+    pub fn formation_radius_quantile(&self, q: f64) -> f64 {
+        let mut formed: Vec<(f64, f64)> = self
+            .fates
+            .iter()
+            .zip(&self.masses)
+            .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
+            .collect();
+        formed.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let total: f64 = formed.iter().map(|x| x.1).sum();
+        let mut sum = 0.0;
+        for (r, m) in &formed {
+            sum += m;
+            if sum >= q * total {
+                return *r;
+            }
+        }
+        formed.last().map_or(0.0, |x| x.0)
+    }
+
     /// Fraction of the initial dust turned into planetesimals by the end.
     pub fn converted_fraction(&self) -> f64 {
         self.frames.last().map_or(0.0, |f| f.budget[1] / self.total_mass)
-    }
-}
-
-/// A surface-density profile known at sorted radii, interpolated linearly in
-/// (ln R, ln Σ) and held constant beyond its ends.
-struct Profile1d {
-    ln_r: Vec<f64>,
-    ln_sigma: Vec<f64>,
-}
-
-impl Profile1d {
-    fn new(points: &[(f64, f64)], sigma: &[f64]) -> Profile1d {
-        let mut pairs: Vec<(f64, f64)> =
-            points.iter().zip(sigma).filter(|(_, s)| **s > 0.0).map(|((r, _), s)| (r.ln(), s.ln())).collect();
-        pairs.sort_by(|a, b| a.0.total_cmp(&b.0));
-        let (ln_r, ln_sigma) = pairs.into_iter().unzip();
-        Profile1d { ln_r, ln_sigma }
-    }
-
-    fn at(&self, r: f64) -> f64 {
-        let x = r.ln();
-        let n = self.ln_r.len();
-        if n == 0 {
-            return 0.0;
-        }
-        let j = self.ln_r.partition_point(|&v| v < x);
-        if j == 0 {
-            return self.ln_sigma[0].exp();
-        }
-        if j == n {
-            return self.ln_sigma[n - 1].exp();
-        }
-        let (x0, x1) = (self.ln_r[j - 1], self.ln_r[j]);
-        let w = if x1 > x0 { (x - x0) / (x1 - x0) } else { 0.0 };
-        (self.ln_sigma[j - 1] + w * (self.ln_sigma[j] - self.ln_sigma[j - 1])).exp()
     }
 }
 
@@ -269,24 +267,12 @@ pub fn surface_density(points: &[(f64, f64)], k: usize, half_width: f64) -> Vec<
     }
     let mut order: Vec<usize> = (0..n).collect();
     order.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
-    let radii: Vec<f64> = order.iter().map(|&i| points[i].0).collect();
-    let e = edges(&radii);
-    let mut cumulative = Vec::with_capacity(n + 1);
-    cumulative.push(0.0);
-    for &i in &order {
-        cumulative.push(cumulative[cumulative.len() - 1] + points[i].1);
-    }
+    let r: Vec<f64> = order.iter().map(|&i| points[i].0).collect();
+    let m: Vec<f64> = order.iter().map(|&i| points[i].1).collect();
     let min_ratio = (2.0 * half_width.max(0.0)).exp();
     let mut out = vec![0.0; n];
-    for (pos, &i) in order.iter().enumerate() {
-        let mut lo = pos.saturating_sub(k);
-        let mut hi = (pos + k).min(n - 1);
-        while e[hi + 1] < min_ratio * e[lo] && (lo > 0 || hi < n - 1) {
-            lo = lo.saturating_sub(1);
-            hi = (hi + 1).min(n - 1);
-        }
-        let mass = cumulative[hi + 1] - cumulative[lo];
-        out[i] = mass / (PI * (e[hi + 1].powi(2) - e[lo].powi(2)));
+    for (p, &i) in order.iter().enumerate() {
+        out[i] = density_at(&r, &m, p, k, min_ratio);
     }
     out
 }
@@ -303,15 +289,210 @@ pub fn max_loading(eta: f64, z: f64) -> f64 {
     z * (1.0 / alpha_midplane(eta, z, 1.0)).sqrt()
 }
 
+/// Lower edge of the annulus of the batch at rank `j` among sorted radii `r`:
+/// the geometric midpoint to the next batch inside, extended at the ends.
+fn lower_edge(r: &[f64], j: usize) -> f64 {
+    match (j, r.len()) {
+        (_, 1) => r[0] / 1.05,
+        (0, _) => r[0] / (r[1] / r[0]).sqrt(),
+        (j, n) if j >= n => r[n - 1] * (r[n - 1] / r[n - 2]).sqrt(),
+        (j, _) => (r[j - 1] * r[j]).sqrt(),
+    }
+}
+
+/// The ranks `lo..=hi` whose annuli give the surface density at the batch of
+/// rank `p` among radii `r` sorted outward: `k` ranks inside to `k` outside,
+/// widened one rank on each side at a time until the annulus spans at least
+/// `min_ratio` in radius.
+fn window(r: &[f64], p: usize, k: usize, min_ratio: f64) -> (usize, usize) {
+    let n = r.len();
+    let mut lo = p.saturating_sub(k);
+    let mut hi = (p + k).min(n - 1);
+    while upper_edge(r, hi) < min_ratio * lower_edge(r, lo) && (lo > 0 || hi < n - 1) {
+        lo = lo.saturating_sub(1);
+        hi = (hi + 1).min(n - 1);
+    }
+    (lo, hi)
+}
+
+/// Upper edge of the annulus of the batch at rank `j`.
+fn upper_edge(r: &[f64], j: usize) -> f64 {
+    if r.len() == 1 { r[0] * 1.05 } else { lower_edge(r, j + 1) }
+}
+
+/// The mass of ranks `lo..=hi` over the area of their annuli.
+fn mean_density(r: &[f64], m: &[f64], lo: usize, hi: usize) -> f64 {
+    let mass: f64 = m[lo..=hi].iter().sum();
+    mass / (PI * (upper_edge(r, hi).powi(2) - lower_edge(r, lo).powi(2)))
+}
+
+/// Surface density at the batch of rank `p` among radii `r` sorted outward
+/// with masses `m` (see [`window`]).
+fn density_at(r: &[f64], m: &[f64], p: usize, k: usize, min_ratio: f64) -> f64 {
+    let (lo, hi) = window(r, p, k, min_ratio);
+    mean_density(r, m, lo, hi)
+}
+
+/// The dust batches sorted by radius, kept sorted as they move, so the
+/// surface density at any batch is read from the current positions of its
+/// neighbours.
+struct Ranks {
+    /// Radii, ascending, m.
+    r: Vec<f64>,
+    /// Masses in the same order, kg.
+    m: Vec<f64>,
+    /// Batch index in the same order.
+    id: Vec<usize>,
+    /// Rank of each batch (`usize::MAX` once it left the dust).
+    rank: Vec<usize>,
+    /// Each batch's last step: (t₀, R₀, t₁, R₁), s and m.
+    step: Vec<[f64; 4]>,
+}
+
+impl Ranks {
+    fn new(radii: &[f64], masses: &[f64]) -> Ranks {
+        let mut id: Vec<usize> = (0..radii.len()).collect();
+        id.sort_by(|&a, &b| radii[a].total_cmp(&radii[b]).then(a.cmp(&b)));
+        let mut rank = vec![0; radii.len()];
+        for (p, &i) in id.iter().enumerate() {
+            rank[i] = p;
+        }
+        Ranks {
+            r: id.iter().map(|&i| radii[i]).collect(),
+            m: id.iter().map(|&i| masses[i]).collect(),
+            id,
+            rank,
+            step: radii.iter().map(|&r| [0.0, r, 0.0, r]).collect(),
+        }
+    }
+
+    /// Where batch `j` is at time `t`, m: interpolated in its last step, which
+    /// began no later than the time of the batch furthest behind, or carried
+    /// on at the speed of that step beyond its end.
+    fn at(&self, j: usize, t: f64) -> f64 {
+        let [t0, r0, t1, r1] = self.step[j];
+        if t1 > t0 { (r0 + (r1 - r0) * ((t - t0) / (t1 - t0)).max(0.0)).max(0.5 * r1) } else { r1 }
+    }
+
+    /// Surface density at batch `i` at time `t` if it is at radius `r`,
+    /// kg m⁻², from the positions of its neighbours at that same time.
+    fn density(&self, i: usize, t: f64, r_i: f64, k: usize, min_ratio: f64) -> f64 {
+        let n = self.r.len();
+        let p = self.rank[i];
+        let mut reach = k + 4;
+        loop {
+            let lo = p.saturating_sub(reach);
+            let hi = (p + reach).min(n - 1);
+            let mut local: Vec<(f64, f64, usize)> = (lo..=hi)
+                .map(|q| {
+                    let j = self.id[q];
+                    (if j == i { r_i } else { self.at(j, t) }, self.m[q], j)
+                })
+                .collect();
+            local.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let r: Vec<f64> = local.iter().map(|x| x.0).collect();
+            let m: Vec<f64> = local.iter().map(|x| x.1).collect();
+            let q = local.iter().position(|x| x.2 == i).unwrap_or(p - lo);
+            let (a, b) = window(&r, q, k, min_ratio);
+            // The annulus must not touch a cut that is not the end of the disk.
+            let inside = (a > 0 || lo == 0) && (b + 1 < r.len() || hi == n - 1);
+            if inside || (lo == 0 && hi == n - 1) {
+                return mean_density(&r, &m, a, b);
+            }
+            reach *= 2;
+        }
+    }
+
+    /// Moves batch `i` to radius `r` after a step from `t0` to `t1`, swapping
+    /// it past the batches it overtakes.
+    fn move_to(&mut self, i: usize, t0: f64, t1: f64, r: f64) {
+        let r0 = self.r[self.rank[i]];
+        self.step[i] = [t0, r0, t1, r];
+        let mut p = self.rank[i];
+        self.r[p] = r;
+        while p > 0 && self.r[p - 1] > r {
+            self.swap(p - 1, p);
+            p -= 1;
+        }
+        while p + 1 < self.r.len() && self.r[p + 1] < r {
+            self.swap(p, p + 1);
+            p += 1;
+        }
+    }
+
+    fn swap(&mut self, a: usize, b: usize) {
+        self.r.swap(a, b);
+        self.m.swap(a, b);
+        self.id.swap(a, b);
+        self.rank[self.id[a]] = a;
+        self.rank[self.id[b]] = b;
+    }
+
+    /// Takes batch `i` out of the dust.
+    fn remove(&mut self, i: usize) {
+        let p = self.rank[i];
+        self.r.remove(p);
+        self.m.remove(p);
+        self.id.remove(p);
+        for q in p..self.id.len() {
+            self.rank[self.id[q]] = q;
+        }
+        self.rank[i] = usize::MAX;
+    }
+}
+
+/// Batches stepped together, in parallel: the furthest behind in time. A
+/// fixed number, so results do not depend on the thread count.
+const WAVE: usize = 32;
+
+/// A batch's time as a heap key: the earliest first, ties by index.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Due(f64, usize);
+
+impl Eq for Due {}
+
+impl PartialOrd for Due {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Due {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        // Reversed: `BinaryHeap` pops the largest.
+        other.0.total_cmp(&self.0).then(other.1.cmp(&self.1))
+    }
+}
+
+/// Frame times: `per_decade` per decade from one year (or `t_end` if sooner) to `t_end`.
+fn frame_times(t_end: f64, per_decade: usize) -> Vec<f64> {
+    let t_first = YEAR.min(t_end);
+    let decades = (t_end / t_first).log10().max(0.0);
+    let count = ((decades * per_decade.max(1) as f64 - 1e-9).ceil() as usize).max(1);
+    let mut times: Vec<f64> = (0..count).map(|j| t_first * 10f64.powf(j as f64 / per_decade.max(1) as f64)).collect();
+    times.push(t_end);
+    times
+}
+
 /// Runs the batch model.
+///
+/// Each batch advances with its own steps (Δln m growth or a fraction of its
+/// drift time, the rule of Sect. 5.2.5 applied per batch), always the batch
+/// furthest behind in time first, and reads Σ_d from the current positions of
+/// its neighbours at every step: a batch that drifts carries its Σ_d with it
+/// instead of reading a profile from an earlier time. The result does not
+/// depend on the thread count.
 pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Result<BatchRun, PhysicsError> {
     cfg.validate()?;
     let disk = cfg.model.disk;
     let n = cfg.batches;
-    let radii: Vec<f64> = (0..n).map(|i| cfg.r_in * (cfg.r_out / cfg.r_in).powf(i as f64 / (n - 1) as f64)).collect();
+    let u = cfg.offset;
+    let radii: Vec<f64> =
+        (0..n).map(|i| cfg.r_in * (cfg.r_out / cfg.r_in).powf((i as f64 + u) / ((n - 1) as f64 + u))).collect();
     let e = edges(&radii);
     // Batch masses from the initial Σ_d = Z₀Σ_g, integrated over each annulus.
     let masses: Vec<f64> = (0..n)
+        .into_par_iter()
         .map(|i| {
             let sub = 64;
             (0..sub)
@@ -331,112 +512,138 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
         // Drift only: particles keep their initial (monomer) size.
         model.thresholds.v_frag = 0.0;
     }
+    let min_ratio = (2.0 * cfg.smoothing_width).exp();
     let mut states: Vec<GrowthState> = radii.iter().map(|&r| model.start(r)).collect();
     let mut fates = vec![Fate::Dust; n];
-    let mut latest: Vec<BatchSample> = vec![
-        BatchSample {
-            r: 0.0,
-            mass: 0.0,
-            filling: 1.0,
-            stokes: 0.0,
-            t_grow: 0.0,
-            loading: 0.0,
-            si: false,
-            dust: true
-        };
-        n
-    ];
-    // Synchronisation times.
-    let t_first = YEAR.min(cfg.t_end);
-    let decades = (cfg.t_end / t_first).log10().max(0.0);
-    let syncs = ((decades * cfg.syncs_per_decade as f64).ceil() as usize).max(1);
-    let times: Vec<f64> = std::iter::once(t_first)
-        .chain((1..=syncs).map(|k| t_first * (cfg.t_end / t_first).powf(k as f64 / syncs as f64)))
-        .collect();
-    let mut frames = Vec::new();
-    for (k, &t_next) in times.iter().enumerate() {
-        if cancelled(k as f64 / times.len() as f64) {
+    let mut ranks = Ranks::new(&radii, &masses);
+    let times = frame_times(cfg.t_end, cfg.frames_per_decade);
+    let blank =
+        BatchSample { r: 0.0, mass: 0.0, filling: 1.0, stokes: 0.0, t_grow: 0.0, loading: 0.0, si: false, dust: true };
+    let mut samples: Vec<Vec<BatchSample>> = vec![vec![blank; n]; times.len()];
+    // The next frame each batch has not yet passed.
+    let mut next_frame = vec![0usize; n];
+    let mut queue: std::collections::BinaryHeap<Due> = (0..n).map(|i| Due(0.0, i)).collect();
+    let span = (cfg.t_end / times[0]).ln();
+    let (mut events, mut waves) = (0usize, 0usize);
+    let mut wave: Vec<usize> = Vec::with_capacity(WAVE);
+    while let Some(Due(t, _)) = queue.peek().copied() {
+        // The batches furthest behind step together, each reading Σ_d at its
+        // own time; the updates are applied in order afterwards.
+        wave.clear();
+        while wave.len() < WAVE {
+            match queue.pop() {
+                Some(Due(_, i)) => wave.push(i),
+                None => break,
+            }
+        }
+        events += wave.len();
+        if events > 400_000 * n {
+            return Err(PhysicsError::InvalidParameter {
+                name: "run",
+                value: events as f64,
+                reason: "step budget exhausted",
+            });
+        }
+        waves += 1;
+        if waves.is_multiple_of(256) && cancelled(((t / times[0]).max(1.0).ln() / span).clamp(0.0, 1.0)) {
             return Err(PhysicsError::InvalidParameter { name: "run", value: 0.0, reason: "cancelled" });
         }
-        let dust: Vec<usize> = (0..n).filter(|&i| fates[i] == Fate::Dust).collect();
-        let sigma_points: Vec<(f64, f64)> = dust.iter().map(|&i| (states[i].r, masses[i])).collect();
-        let sigma = surface_density(&sigma_points, cfg.smoothing, MIN_HALF_WIDTH);
-        let profile = Profile1d::new(&sigma_points, &sigma);
-        // Advance every dust batch to t_next with Σ_d of this synchronisation
-        // read at its current radius.
-        let results: Vec<(usize, GrowthState, Option<Stop>, super::growth::TrackPoint)> = dust
+        let stepped: Vec<(GrowthState, super::growth::TrackPoint, Option<Stop>)> = wave
             .par_iter()
             .map(|&i| {
+                let sigma = |t: f64, r: f64| ranks.density(i, t, r, cfg.smoothing, min_ratio);
                 let mut s = states[i].clone();
-                let mut last = None;
-                let mut ended = None;
-                for _ in 0..100_000 {
-                    let here = profile.at(s.r);
-                    let (p, e) = model.step(&mut s, Some(here), t_next);
-                    last = Some(p);
-                    if e.is_some() {
-                        ended = e;
-                        break;
-                    }
-                    if s.t >= t_next {
-                        break;
-                    }
-                }
-                let point = last.unwrap_or_else(|| model.step(&mut s.clone(), Some(profile.at(s.r)), s.t).0);
-                (i, s, ended, point)
+                let (point, ended) = model.step(&mut s, Some(&sigma), cfg.t_end);
+                (s, point, ended)
             })
             .collect();
-        for (i, s, ended, p) in results {
+        for (&i, (after, point, ended)) in wave.iter().zip(stepped) {
+            let before = std::mem::replace(&mut states[i], after);
+            let after = &states[i];
+            // Samples for every frame this step reaches, interpolated in time.
+            while next_frame[i] < times.len() && times[next_frame[i]] <= after.t {
+                let tf = times[next_frame[i]];
+                let w = if after.t > before.t { ((tf - before.t) / (after.t - before.t)).clamp(0.0, 1.0) } else { 1.0 };
+                let gone = matches!(ended, Some(Stop::InnerEdge)) && w >= 1.0;
+                samples[next_frame[i]][i] = BatchSample {
+                    r: before.r + w * (after.r - before.r),
+                    mass: before.mass * (after.mass / before.mass).powf(w),
+                    filling: before.filling + w * (after.filling - before.filling),
+                    stokes: point.stokes,
+                    t_grow: point.t_grow,
+                    loading: 0.0,
+                    si: false,
+                    dust: !gone,
+                };
+                next_frame[i] += 1;
+            }
             match ended {
-                Some(Stop::Planetesimal) => fates[i] = Fate::Planetesimals { t: s.t, r: s.r },
-                Some(Stop::InnerEdge) => fates[i] = Fate::Lost { t: s.t },
-                _ => {}
-            }
-            latest[i] = BatchSample {
-                r: s.r,
-                mass: s.mass,
-                filling: s.filling,
-                stokes: p.stokes,
-                t_grow: p.t_grow,
-                loading: 0.0,
-                si: false,
-                dust: fates[i] == Fate::Dust,
-            };
-            states[i] = s;
-        }
-        // Streaming-instability diagnostics: Z* from batches with 10⁻² ≤ Ωt_s ≤ 1.
-        let dust_now: Vec<usize> = (0..n).filter(|&i| fates[i] == Fate::Dust).collect();
-        let star: Vec<(f64, f64)> = dust_now
-            .iter()
-            .map(|&i| {
-                let st = latest[i].stokes;
-                (latest[i].r, if (1e-2..=1.0).contains(&st) { masses[i] } else { 0.0 })
-            })
-            .collect();
-        let sigma_star = surface_density(&star, cfg.smoothing, MIN_HALF_WIDTH);
-        for (j, &i) in dust_now.iter().enumerate() {
-            let b = &mut latest[i];
-            let z_star = sigma_star[j] / disk.surface_density(b.r);
-            b.loading = z_star / dust_scale_height(disk.alpha, b.stokes);
-            let omega = disk.omega(b.r);
-            b.si = (1e-2..=1.0).contains(&b.stokes) && b.loading >= 1.0 && b.t_grow > 1.0 / omega;
-        }
-        let last = k + 1 == times.len();
-        if last || (cfg.frame_every > 0 && k % cfg.frame_every == 0) {
-            let mut budget = [0.0; 3];
-            for i in 0..n {
-                match fates[i] {
-                    Fate::Dust => budget[0] += masses[i],
-                    Fate::Planetesimals { .. } => budget[1] += masses[i],
-                    Fate::Lost { .. } => budget[2] += masses[i],
+                Some(stop) => {
+                    fates[i] = match stop {
+                        Stop::Planetesimal => Fate::Planetesimals { t: after.t, r: after.r },
+                        _ => Fate::Lost { t: after.t },
+                    };
+                    let last = BatchSample {
+                        r: after.r,
+                        mass: after.mass,
+                        filling: after.filling,
+                        stokes: point.stokes,
+                        t_grow: point.t_grow,
+                        loading: 0.0,
+                        si: false,
+                        dust: false,
+                    };
+                    for frame in &mut samples[next_frame[i]..] {
+                        frame[i] = last;
+                    }
+                    next_frame[i] = times.len();
+                    ranks.remove(i);
+                }
+                None => {
+                    ranks.move_to(i, before.t, after.t, after.r);
+                    if after.t < cfg.t_end {
+                        queue.push(Due(after.t, i));
+                    }
                 }
             }
-            frames.push(Frame { t: t_next, batches: latest.clone(), budget });
         }
     }
+    // Budgets and the streaming-instability diagnostics of each frame:
+    // Z* from batches with 10⁻² ≤ Ωt_s ≤ 1.
+    let frames = times
+        .iter()
+        .zip(samples)
+        .map(|(&t, mut batches)| {
+            let mut budget = [0.0; 3];
+            for (i, fate) in fates.iter().enumerate() {
+                let k = match *fate {
+                    Fate::Planetesimals { t: tp, .. } if tp <= t => 1,
+                    Fate::Lost { t: tl } if tl <= t => 2,
+                    _ => 0,
+                };
+                budget[k] += masses[i];
+            }
+            let dust: Vec<usize> = (0..n).filter(|&i| batches[i].dust).collect();
+            let star: Vec<(f64, f64)> = dust
+                .iter()
+                .map(|&i| {
+                    let st = batches[i].stokes;
+                    (batches[i].r, if (1e-2..=1.0).contains(&st) { masses[i] } else { 0.0 })
+                })
+                .collect();
+            let sigma_star = surface_density(&star, cfg.smoothing, cfg.smoothing_width);
+            for (j, &i) in dust.iter().enumerate() {
+                let b = &mut batches[i];
+                let z_star = sigma_star[j] / disk.surface_density(b.r);
+                b.loading = z_star / dust_scale_height(disk.alpha, b.stokes);
+                let omega = disk.omega(b.r);
+                b.si = (1e-2..=1.0).contains(&b.stokes) && b.loading >= 1.0 && b.t_grow > 1.0 / omega;
+            }
+            Frame { t, batches, budget }
+        })
+        .collect();
     Ok(BatchRun { masses, initial_radii: radii, fates, frames, total_mass })
 }
-
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -70,6 +70,26 @@ pub struct GrowthModel {
     pub inner_edge: f64,
     /// Growth per step, Δln m.
     pub dlnm: f64,
+    /// Largest step as a fraction of the drift time R/|Ṙ| (0.05, Sect. 5.2.5).
+    pub drift_step: f64,
+    /// Advance mass and radius with the rates at the middle of the step
+    /// (second order) instead of its start (first order, the thesis's scheme).
+    pub midpoint: bool,
+}
+
+/// Growth and drift rates of a particle at one place.
+struct Rates {
+    env: super::disk::Local,
+    stopping: super::aggregate::Stopping,
+    stokes: f64,
+    radius: f64,
+    v_rel: super::aggregate::RelativeVelocity,
+    /// m/ṁ, s, before the first-regime rule.
+    t_grow: f64,
+    /// The first turbulence regime below St_η, where t_grow is held.
+    first_regime: bool,
+    /// |Ṙ|, m s⁻¹.
+    v_drift: f64,
 }
 
 /// One point of a track.
@@ -151,6 +171,8 @@ impl GrowthModel {
             planetesimal_mass: 1e13,
             inner_edge: super::constants::AU,
             dlnm: 0.1,
+            drift_step: 0.05,
+            midpoint: false,
         }
     }
 
@@ -168,38 +190,58 @@ impl GrowthModel {
         }
     }
 
-    /// Evaluates the state, then advances it by one step, never beyond
-    /// `t_until`. `sigma_d` overrides the dust surface density of the disk
-    /// (kg m⁻²; the batch model uses the batches' own). Returns the point
-    /// evaluated before the step and whether the particle left the disk
-    /// (planetesimal reached or inner edge crossed; the state is then final).
-    pub fn step(&self, s: &mut GrowthState, sigma_d: Option<f64>, t_until: f64) -> (TrackPoint, Option<Stop>) {
+    /// Growth and drift rates of a particle of mass `m` (kg) and filling
+    /// factor `phi` at radius `r` (m) in dust of surface density `sigma_d`
+    /// (kg m⁻²; `None`: the disk's own).
+    fn rates(&self, m: f64, phi: f64, r: f64, sigma_d: Option<f64>) -> Rates {
         let mono = self.monomer;
-        let m0 = mono.mass();
-        let e_roll = mono.rolling_energy();
-        let (m, phi, r) = (s.mass, s.filling, s.r);
         let env = self.disk.local(r);
         let agg = Aggregate { mass: m, filling: phi };
         let stopping = stopping_time(&env, &mono, &agg, self.newton);
         let st = stopping.time * env.omega;
         let a = agg.radius(&mono);
         let me = Particle { mass: m, stokes: st };
+        let rv = relative_velocity(&env, &me, &me, self.turbulence, self.epsilon);
+        let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
+        let sigma = sigma_d.unwrap_or(env.dust_surface_density);
+        let m_dot = sigma / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * rv.total();
+        let t_grow = if m_dot > 0.0 { m / m_dot } else { f64::INFINITY };
+        let first_regime = rv.dominant() == 1 && st < env.reynolds.powf(-0.5);
+        let v_drift = radial_drift(env.eta_vk, st);
+        Rates { env, stopping, stokes: st, radius: a, v_rel: rv, t_grow, first_regime, v_drift }
+    }
+
+    /// Evaluates the state, then advances it by one step, never beyond
+    /// `t_until`. `sigma_d` overrides the dust surface density of the disk
+    /// (kg m⁻², as a function of time and radius; the batch model uses the
+    /// batches' own). Returns the point evaluated before the step and whether
+    /// the particle left the disk (planetesimal reached or inner edge crossed;
+    /// the state is then final).
+    pub fn step(
+        &self,
+        s: &mut GrowthState,
+        sigma_d: Option<&dyn Fn(f64, f64) -> f64>,
+        t_until: f64,
+    ) -> (TrackPoint, Option<Stop>) {
+        let mono = self.monomer;
+        let m0 = mono.mass();
+        let e_roll = mono.rolling_energy();
+        let (m, phi, r) = (s.mass, s.filling, s.r);
+        let start = self.rates(m, phi, r, sigma_d.map(|f| f(s.t, r)));
+        let Rates { env, stopping, stokes: st, radius: a, v_rel: rv, first_regime, v_drift, .. } = start;
         let mono_particle = Particle {
             mass: m0,
             stokes: stopping_time(&env, &mono, &Aggregate { mass: m0, filling: 1.0 }, self.newton).time * env.omega,
         };
-        let rv = relative_velocity(&env, &me, &me, self.turbulence, self.epsilon);
+        let me = Particle { mass: m, stokes: st };
         let v = rv.total();
         let v_mono = relative_velocity(&env, &me, &mono_particle, self.turbulence, self.epsilon).total();
-        let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
-        let sigma = sigma_d.unwrap_or(env.dust_surface_density);
-        let m_dot = sigma / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * v;
-        let mut t_grow = if m_dot > 0.0 { m / m_dot } else { f64::INFINITY };
+        let mut t_grow = start.t_grow;
+        let st_eta = env.reynolds.powf(-0.5);
         // In the first turbulence regime same-size velocities vanish and the
         // particles grow by sweeping up smaller ones at a roughly constant
         // rate (Sect. 4.5): keep t_grow at its value on entering that regime.
-        let st_eta = env.reynolds.powf(-0.5);
-        if rv.dominant() == 1 && st < st_eta && t_grow.is_finite() {
+        if first_regime && t_grow.is_finite() {
             t_grow = *s.frozen_t_grow.get_or_insert(t_grow);
         } else {
             s.frozen_t_grow = None;
@@ -217,7 +259,6 @@ impl GrowthModel {
         } else {
             !t_grow.is_finite()
         };
-        let v_drift = radial_drift(env.eta_vk, st);
         let t_drift = r / v_drift;
         let point = TrackPoint {
             t: s.t,
@@ -255,11 +296,26 @@ impl GrowthModel {
             dt = dt.min(self.dlnm * t_grow);
         }
         if self.drift {
-            dt = dt.min(0.05 * t_drift);
+            dt = dt.min(self.drift_step * t_drift);
+        }
+        // Rates over the step: at its start, or at its middle.
+        let (mut growth_time, mut drift_speed) = (t_grow, v_drift);
+        if self.midpoint && dt > 0.0 {
+            let half = 0.5 * dt;
+            let m_h = if halted { m } else { m * (half / t_grow).exp() };
+            let r_h = if self.drift { r - v_drift * half } else { r };
+            if r_h > 0.0 {
+                let mid = self.rates(m_h, phi, r_h, sigma_d.map(|f| f(s.t + half, r_h)));
+                growth_time = match s.frozen_t_grow {
+                    Some(frozen) if mid.first_regime => frozen,
+                    _ => mid.t_grow,
+                };
+                drift_speed = mid.v_drift;
+            }
         }
         s.t += dt;
         if self.drift {
-            s.r -= v_drift * dt;
+            s.r -= drift_speed * dt;
             if s.r <= self.inner_edge {
                 return (point, Some(Stop::InnerEdge));
             }
@@ -267,7 +323,7 @@ impl GrowthModel {
         if halted {
             return (point, None);
         }
-        let m_new = m * (dt / t_grow).exp();
+        let m_new = m * (dt / growth_time).exp();
         let n = m_new / m0;
         let phi_hs = n.powf(-0.5).min(1.0);
         s.filling = match self.porosity {

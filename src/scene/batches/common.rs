@@ -4,7 +4,7 @@ use crate::scene::quantities;
 use crate::scene::controls::Control;
 use crate::scene::disk::common::DiskParams;
 use crate::scene::core::{Progress, SceneError};
-use crate::physics::batches::{BatchConfig, BatchRun, run};
+use crate::physics::batches::{BatchConfig, BatchRun, MIN_HALF_WIDTH, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use serde::{Deserialize, Serialize};
@@ -81,6 +81,7 @@ impl BatchParams {
         model.thresholds.v_bounce = v_frag;
         model.thresholds.v_eros = self.v_eros;
         model.dlnm = 0.2;
+        model.midpoint = true;
         BatchConfig {
             model,
             r_in: self.r_in_au * AU,
@@ -88,9 +89,10 @@ impl BatchParams {
             batches: self.batches,
             t_end: self.duration_yr * YEAR,
             coagulation: self.coagulation,
-            syncs_per_decade: 160,
             smoothing: 2,
-            frame_every: 4,
+            smoothing_width: MIN_HALF_WIDTH,
+            frames_per_decade: 40,
+            offset: 0.0,
         }
     }
 

@@ -212,9 +212,22 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
     fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
     fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
-    let planetesimals: Vec<f64> =
-        porous.iter().filter(|t| t.stop == Stop::Planetesimal).map(|t| t.points[0].r / AU).collect();
-    let outermost = planetesimals.iter().copied().fold(0.0, f64::max);
+    // Where planetesimals form (the last point of a track that reaches the
+    // planetesimal mass) and where their material started.
+    let formed: Vec<[f64; 3]> = porous
+        .iter()
+        .filter(|t| t.stop == Stop::Planetesimal)
+        .filter_map(|t| {
+            let end = t.points.last()?;
+            Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
+        })
+        .collect();
+    let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
+    let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
+    if !formed.is_empty() {
+        let points = formed.iter().map(|f| [f[1], f[2]]).collect();
+        fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
+    }
     let max_st_eroded = porous
         .iter()
         .filter(|t| t.halted_by == Some("erosion"))
@@ -224,8 +237,14 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         Scalar {
             key: "porous_planetesimal_tracks",
             label: "porous tracks reaching 10¹⁶ g",
-            value: planetesimals.len() as f64,
+            value: formed.len() as f64,
             unit: "",
+        },
+        Scalar {
+            key: "outermost_planetesimal_formation",
+            label: "outermost radius where a planetesimal forms",
+            value: outermost_formation,
+            unit: "AU",
         },
         Scalar {
             key: "outermost_planetesimal_start",

@@ -125,3 +125,32 @@ fn a_quantity_shared_by_scenes_is_declared_alike() {
         }
     }
 }
+
+/// The `batches` parameter of a batch scene.
+fn batch_count(p: &SceneParams) -> usize {
+    let mut p = p.clone();
+    let controls = p.controls();
+    match controls.iter().find(|c| c.key == "batches").map(|c| c.value()) {
+        Some(grainscope::scene::controls::DefaultValue::Count(n)) => n,
+        other => panic!("batches: {other:?}"),
+    }
+}
+
+#[test]
+fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
+    for id in ["surface-density", "batch-lifelines", "disk-map", "planetesimal-yield", "formation-zone", "scale-ladder"]
+    {
+        let p = SceneParams::default_for(id).expect("scene");
+        let coarse = p.coarse().unwrap_or_else(|| panic!("{id} has no preview"));
+        let batches = batch_count(&coarse);
+        assert!(batches <= 40, "{id}: {batches} batches");
+        let full_batches = batch_count(&p);
+        assert!(full_batches > batches, "{id}: the preview is not cheaper");
+        let out = scene::compute(&coarse, &Progress::default()).expect("preview");
+        let ids = |o: &scene::SceneOutput| o.figures.iter().map(|f| f.id.clone()).collect::<Vec<_>>();
+        let full = scene::compute(&p, &Progress::default()).expect("full");
+        assert_eq!(ids(&out), ids(&full), "{id}");
+    }
+    // Light scenes have none.
+    assert!(SceneParams::default_for("hysteresis").expect("scene").coarse().is_none());
+}

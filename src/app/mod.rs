@@ -452,9 +452,19 @@ impl GrainscopeApp {
             let caches = Arc::clone(&self.caches);
             self.stale = true;
             self.live_scene = Some(i);
+            let coarse = params.coarse();
             self.worker.submit(move |progress| {
+                // A coarse preview on its own thread, shown until the full
+                // result arrives (and never, if the full one is cached).
+                let finished = Arc::new(std::sync::atomic::AtomicBool::new(false));
+                if let Some(c) = coarse {
+                    let (progress, finished) = (progress.clone(), Arc::clone(&finished));
+                    std::thread::spawn(move || preview(&c, &progress, &finished));
+                }
                 let mut c = caches.lock().map_err(|_| SceneError::Cancelled)?;
-                scene::compute_cached(&params, progress, &mut c).map(|o| Job::Scene(i, o))
+                let result = scene::compute_cached(&params, progress, &mut c).map(|o| Job::Scene(i, o));
+                finished.store(true, std::sync::atomic::Ordering::Relaxed);
+                result
             });
         } else {
             self.worker.cancel();
@@ -2006,4 +2016,19 @@ fn install_fonts(ctx: &egui::Context) {
     fonts.families.entry(egui::FontFamily::Proportional).or_default().insert(0, "dejavu-sans".into());
     fonts.families.entry(egui::FontFamily::Monospace).or_default().push("dejavu-sans".into());
     ctx.set_fonts(fonts);
+}
+
+/// Computes the coarse parameters `c` of a heavy scene and offers the result
+/// for display, unless the full result came first or the job was cancelled.
+fn preview(c: &scene::SceneParams, progress: &scene::Progress, finished: &std::sync::atomic::AtomicBool) {
+    if let Ok(mut out) = scene::compute(c, &progress.quiet_child()) {
+        if finished.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
+            return;
+        }
+        out.notes.insert(0, "preview at low resolution; the full result follows".into());
+        // Only while nothing newer was offered (a live view of the full run).
+        if progress.partial().is_none() {
+            progress.publish(out);
+        }
+    }
 }

@@ -364,7 +364,8 @@ impl RunConfig {
     }
 
     /// As [`RunConfig::run`], and hands the run so far (with a snapshot of
-    /// now appended) to `observe` about twice a second, for live display.
+    /// now appended) to `observe` after 0.05 s and then about twice a
+    /// second, for live display.
     pub fn run_observed(
         &self,
         seed: u64,
@@ -401,6 +402,8 @@ impl RunConfig {
         let mut ended = "end time";
         let ln_span = (t_end / t0).ln().max(1e-9);
         let mut shown = std::time::Instant::now();
+        // The first view comes after 0.05 s, later ones every 0.5 s.
+        let mut interval = 0.05;
         let so_far = |engine: &Engine<Column>, snapshots: &[Snapshot], history: &[Sample]| {
             let mut snaps = snapshots.to_vec();
             snaps.push(snapshot(engine));
@@ -436,7 +439,8 @@ impl RunConfig {
                     ended = "cancelled";
                     break 'outer;
                 }
-                if shown.elapsed().as_secs_f64() > 0.5 {
+                if shown.elapsed().as_secs_f64() > interval {
+                    interval = 0.5;
                     observe(&so_far(&engine, &snapshots, &history));
                     shown = std::time::Instant::now();
                 }

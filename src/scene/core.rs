@@ -76,6 +76,13 @@ pub trait Scene {
     fn measurements(_p: &mut Self::Params) -> Option<&mut Vec<Measurement>> {
         None
     }
+
+    /// A cheaper version of the parameters (fewer batches, fewer Monte Carlo
+    /// groups, coarser grids) whose result a heavy scene shows first, within
+    /// about 0.1 s, while the full one computes. None (the default): no preview.
+    fn coarse(_p: &Self::Params) -> Option<Self::Params> {
+        None
+    }
 }
 
 /// What a computation may use besides its parameters.
@@ -278,6 +285,12 @@ impl Progress {
     pub fn fraction(&self) -> f64 {
         self.permille.load(Ordering::Relaxed) as f64 / 1000.0
     }
+    /// A progress that shares this one's cancellation and pause but reports
+    /// its fraction and results nowhere (for a preview computed beside).
+    pub fn quiet_child(&self) -> Progress {
+        Progress { cancel: Arc::clone(&self.cancel), pause: Arc::clone(&self.pause), ..Progress::default() }
+    }
+
     /// Offers an intermediate result of a long computation for display.
     pub fn publish(&self, output: SceneOutput) {
         if let Ok(mut slot) = self.partial.lock() {

@@ -110,6 +110,13 @@ macro_rules! scenes {
                 }
             }
 
+            /// The cheaper parameters of the scene's preview, if it has one.
+            pub fn coarse(&self) -> Option<SceneParams> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::coarse(p).map(SceneParams::$scene), )*)*
+                }
+            }
+
             /// The imported measurements the scene works on, if it takes any.
             pub fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
                 match self {

@@ -33,6 +33,10 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         super::common::inspect_batch(&p.run, run, fig, at, &|_, s| [s.r / AU, s.mass * 1e3])
     }
 
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { run: p.run.coarse(), ..p.clone() })
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }

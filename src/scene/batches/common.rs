@@ -70,6 +70,11 @@ impl BatchParams {
         c
     }
 
+    /// The run of a preview: at most 40 batches.
+    pub fn coarse(&self) -> BatchParams {
+        BatchParams { batches: self.batches.min(40), ..self.clone() }
+    }
+
     /// The run configuration.
     pub fn config(&self) -> BatchConfig {
         let porosity = if self.growth == "compact" { Porosity::Compact } else { Porosity::Full };

@@ -40,6 +40,10 @@ the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         super::common::inspect_batch(&p.run, run, fig, at, &|t, s| [t / YEAR, s.r / AU])
     }
 
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { run: p.run.coarse(), ..p.clone() })
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }

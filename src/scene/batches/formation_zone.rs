@@ -30,6 +30,10 @@ disks run in parallel.",
         p.controls()
     }
 
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { run: p.run.coarse(), n_mass: p.n_mass.min(3), ..p.clone() })
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
     }

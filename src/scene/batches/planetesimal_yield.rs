@@ -28,6 +28,10 @@ are independent and go in parallel.",
         p.controls()
     }
 
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { run: p.run.coarse(), ..p.clone() })
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
     }

@@ -35,6 +35,10 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         p.controls()
     }
 
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { run: p.run.coarse(), ..p.clone() })
+    }
+
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress, ctx.caches.get())
     }

@@ -104,19 +104,46 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
     let fractions: Vec<std::sync::atomic::AtomicU32> =
         missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
+    // Live view: every threshold's first run so far (cached ones complete).
+    let so_far: std::sync::Mutex<Vec<(f64, Arc<Vec<Run>>)>> = std::sync::Mutex::new(
+        p.thresholds()
+            .into_iter()
+            .zip(&params)
+            .map(|(v, q)| {
+                let done = if cache.contains(q) { cache.get(q, progress).ok() } else { None };
+                (v, done.unwrap_or_default())
+            })
+            .collect(),
+    );
     let fresh: Vec<Vec<Run>> = missing
         .par_iter()
         .enumerate()
         .map(|(k, q)| {
             let cfg = q.config()?;
-            let runs = cfg.run_seeds(q.runs.max(1), &|f| {
-                fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
-                let sum: f64 =
-                    fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
-                progress.set(sum / fractions.len() as f64);
-                progress.wait_while_paused();
-                !progress.cancelled()
-            })?;
+            let slot = params.iter().position(|x| x == *q).unwrap_or(0);
+            let observe = |run: &Run| {
+                if let Ok(mut sets) = so_far.lock() {
+                    if let Some(s) = sets.get_mut(slot) {
+                        s.1 = Arc::new(vec![run.clone()]);
+                    }
+                    let mut out = output(p, &sets);
+                    let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
+                    out.notes.insert(0, format!("running: v_eros = {} m/s at {t:.4} yr (live view)", q.v_eros));
+                    progress.publish(out);
+                }
+            };
+            let runs = cfg.run_seeds_observed(
+                q.runs.max(1),
+                &|f| {
+                    fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+                    let sum: f64 =
+                        fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                    progress.set(sum / fractions.len() as f64);
+                    progress.wait_while_paused();
+                    !progress.cancelled()
+                },
+                &observe,
+            )?;
             progress.check()?;
             Ok(runs)
         })
@@ -128,6 +155,11 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     for (v, q) in p.thresholds().into_iter().zip(&params) {
         sets.push((v, cache.get(q, progress)?));
     }
+    Ok(output(p, &sets))
+}
+
+/// The figures, scalars and notes of runs for each threshold (v_eros, runs).
+fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
     let mut zeta = Figure::new(
         "zeta",
         "ζ of the largest body against its Stokes number",
@@ -174,10 +206,10 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         }
     }
     let mut notes = Vec::new();
-    for (v, runs) in &sets {
+    for (v, runs) in sets {
         for line in super::common::endings(runs) {
             notes.push(format!("v_eros = {v} m/s, {line}"));
         }
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None })
+    SceneOutput { warnings: Vec::new(), scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None }
 }

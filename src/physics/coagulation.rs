@@ -32,7 +32,7 @@ use super::aggregate::{
     stopping_time,
 };
 use super::disk::Local;
-use super::monte_carlo::{Body, Collision, Engine, Family, Model, Settings};
+use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Settings};
 use rayon::prelude::*;
 use std::f64::consts::PI;
 
@@ -158,10 +158,24 @@ impl Model for Column {
     }
 
     fn rate(&self, a: &Family<Props>, b: &Family<Props>) -> f64 {
-        // h_ij/(h_i h_j) with h_ij = (h_i⁻² + h_j⁻²)^{-1/2} is 1/(h_i² + h_j²)^{1/2}.
-        let (hi, hj) = (a.props.scale_height, b.props.scale_height);
-        let sigma = PI * (a.props.radius + b.props.radius).powi(2);
-        sigma / ((2.0 * PI).sqrt() * (hi * hi + hj * hj).sqrt()) * self.velocity(a, b)
+        self.rate_at(a, b, self.velocity(a, b))
+    }
+
+    /// One relative velocity for both the rate and the outcome, and no
+    /// fragments made where only the target's mass change is needed.
+    fn pair(&self, a: &Family<Props>, b: &Family<Props>) -> (f64, Effect) {
+        let v = self.velocity(a, b);
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        let effect = match outcome(t.mass, p.mass, v, &self.thresholds) {
+            Outcome::Stick => Effect::Stick { filling: self.filling_after(t.body(), p.body(), v) },
+            Outcome::Erode { efficiency } => {
+                let lost = self.c1 * efficiency * p.mass;
+                if lost >= t.mass { Effect::Shatter } else { Effect::Erode { loss: lost } }
+            }
+            Outcome::Fragment => Effect::Shatter,
+            Outcome::Bounce => Effect::Bounce,
+        };
+        (self.rate_at(a, b, v), effect)
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional
@@ -193,6 +207,16 @@ impl Model for Column {
 
     fn compact(&self, body: Body) -> f64 {
         if self.compaction == Compaction::Full { self.external_compaction(body) } else { body.filling }
+    }
+}
+
+impl Column {
+    /// The rate coefficient of a pair at relative velocity `v`:
+    /// h_ij/(h_i h_j) with h_ij = (h_i⁻² + h_j⁻²)^{-1/2} is 1/(h_i² + h_j²)^{1/2}.
+    fn rate_at(&self, a: &Family<Props>, b: &Family<Props>, v: f64) -> f64 {
+        let (hi, hj) = (a.props.scale_height, b.props.scale_height);
+        let sigma = PI * (a.props.radius + b.props.radius).powi(2);
+        sigma / ((2.0 * PI).sqrt() * (hi * hi + hj * hj).sqrt()) * v
     }
 }
 

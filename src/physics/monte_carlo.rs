@@ -87,6 +87,38 @@ pub enum Collision {
     Bounce,
 }
 
+/// What one collision does to the more massive particle, as far as the
+/// sequence limits (4.22)–(4.24) need it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Effect {
+    /// The particles stick into one of this filling factor.
+    Stick {
+        /// Filling factor of the product.
+        filling: f64,
+    },
+    /// The target loses this mass.
+    Erode {
+        /// Mass lost.
+        loss: f64,
+    },
+    /// The target shatters.
+    Shatter,
+    /// Nothing happens.
+    Bounce,
+}
+
+impl Effect {
+    /// The effect of `collision`.
+    pub fn of(collision: Collision) -> Effect {
+        match collision {
+            Collision::Stick { filling } => Effect::Stick { filling },
+            Collision::Erode { loss, .. } => Effect::Erode { loss },
+            Collision::Shatter { .. } => Effect::Shatter,
+            Collision::Bounce => Effect::Bounce,
+        }
+    }
+}
+
 /// A collision model: rate coefficients and outcomes.
 pub trait Model: Sync {
     /// Properties cached per family.
@@ -101,6 +133,15 @@ pub trait Model: Sync {
 
     /// The outcome of one collision; `target` is the more massive particle.
     fn collide(&self, target: &Family<Self::Props>, projectile: &Family<Self::Props>) -> Collision;
+
+    /// The rate coefficient of a pair (as [`Model::rate`]) and what one
+    /// collision does to the more massive particle (as [`Model::collide`]
+    /// reduced to its mass change and filling factor after sticking; `None`
+    /// when they bounce). Models override it to share work between the two.
+    fn pair(&self, a: &Family<Self::Props>, b: &Family<Self::Props>) -> (f64, Effect) {
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        (self.rate(a, b), Effect::of(self.collide(t, p)))
+    }
 
     /// The filling factor of a newly made particle after any compaction that
     /// acts on the particle as a whole (not per collision), e.g. by gas
@@ -501,13 +542,14 @@ impl<M: Model> Engine<M> {
     fn pair(&self, i: usize, j: usize) -> Pair {
         let (a, b) = (&self.families[i], &self.families[j]);
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-        let c = self.model.rate(a, b) / self.volume;
-        let (dm, dphi, c) = match self.model.collide(t, p) {
-            Collision::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
-            Collision::Erode { loss, .. } => (loss, 0.0, c),
-            Collision::Shatter { .. } => (t.mass, t.filling, c),
+        let (rate, effect) = self.model.pair(a, b);
+        let c = rate / self.volume;
+        let (dm, dphi, c) = match effect {
+            Effect::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
+            Effect::Erode { loss } => (loss, 0.0, c),
+            Effect::Shatter => (t.mass, t.filling, c),
             // Nothing happens: such events are left out.
-            Collision::Bounce => (0.0, 0.0, 0.0),
+            Effect::Bounce => (0.0, 0.0, 0.0),
         };
         let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { (f * x / dx).log2() } else { f64::INFINITY };
         let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
@@ -629,7 +671,7 @@ impl<M: Model> Engine<M> {
     }
 
     fn event(&mut self, i: usize, j: usize) {
-        let mut made: Vec<(Body, f64, i32)> = Vec::with_capacity(2);
+        let mut made: Vec<Product> = Vec::with_capacity(2);
         if i == j {
             let f = self.families[i];
             if f.groups >= 2.0 {
@@ -651,12 +693,40 @@ impl<M: Model> Engine<M> {
         if j != i {
             self.refresh_rates(j);
         }
-        for (body, count, zoom) in made {
+        for (body, count, zoom, kind) in made {
             if count > 0.0 && body.mass > 0.0 {
-                self.add_family(body, count, zoom);
+                self.add_product(body, count, zoom, kind);
             }
         }
         self.tidy();
+    }
+
+    /// Adds `count` particles `body` made by an event at zoom `zoom`. Too few
+    /// to fill one group, they merge at once into the family `tidy` would
+    /// merge them into (4.27), without computing pair data for a family that
+    /// would not live to use it. The products of erosion and shattering
+    /// (remnants, fragments, monomers) that differ from an existing family by
+    /// no more than `MERGE_REFRESH` in mass and φ join it whatever their
+    /// number: the family's properties and pair data do not change, and the
+    /// next re-zoom would give them its zoom factor anyway. Products of
+    /// sticking always start a family of their own when they fill a group.
+    fn add_product(&mut self, body: Body, count: f64, zoom: i32, kind: Made) {
+        let groups = count / exp2i(zoom);
+        if let Some(t) = self.most_similar_to(body, None) {
+            let f = &self.families[t];
+            let same = kind == Made::Broken
+                && (body.mass / f.mass - 1.0).abs() <= MERGE_REFRESH
+                && (body.filling / f.filling - 1.0).abs() <= MERGE_REFRESH;
+            if same || (1e-6..1.0 - 1e-9).contains(&groups) {
+                if self.merge_particles_into(body, count, t) {
+                    self.refresh_pairs(t);
+                } else {
+                    self.refresh_rates(t);
+                }
+                return;
+            }
+        }
+        self.add_family(body, count, zoom);
     }
 
     /// The products of `units` lo-particles each meeting `per` hi-particles;
@@ -668,7 +738,7 @@ impl<M: Model> Engine<M> {
         per: f64,
         units: f64,
         zoom: i32,
-        made: &mut Vec<(Body, f64, i32)>,
+        made: &mut Vec<Product>,
     ) {
         let lo_is_target = lo.mass >= hi.mass;
         let single = if lo_is_target { self.model.collide(lo, hi) } else { self.model.collide(hi, lo) };
@@ -684,32 +754,32 @@ impl<M: Model> Engine<M> {
         match single {
             Collision::Stick { filling } => {
                 self.tally.stick += 1;
-                made.push((compacted(grown(projectile.mass, filling)), units, zoom));
+                made.push((compacted(grown(projectile.mass, filling)), units, zoom, Made::Stuck));
             }
             Collision::Erode { loss, fragment, count } => {
                 self.tally.erode += 1;
                 let remnant = grown(-loss, target.filling);
                 let lost = units * per * count;
                 if remnant.mass > 0.0 {
-                    made.push((remnant, units, zoom));
-                    made.push((compacted(fragment), lost, fragment_zoom(lost)));
+                    made.push((remnant, units, zoom, Made::Broken));
+                    made.push((compacted(fragment), lost, fragment_zoom(lost), Made::Broken));
                 } else {
                     // Cannot happen within the f_m limit; keep the mass anyway.
                     let all = units * (target.mass + per * projectile.mass);
                     let n = all / fragment.mass;
-                    made.push((compacted(fragment), n, fragment_zoom(n)));
+                    made.push((compacted(fragment), n, fragment_zoom(n), Made::Broken));
                 }
             }
             Collision::Shatter { fragment, count } => {
                 self.tally.shatter += 1;
                 let n = units * count;
-                made.push((compacted(fragment), n, fragment_zoom(n)));
+                made.push((compacted(fragment), n, fragment_zoom(n), Made::Broken));
             }
             Collision::Bounce => {
                 // Left out by the rates; if reached, the particles are returned unchanged.
                 self.tally.bounce += 1;
-                made.push((lo.body(), units, zoom));
-                made.push((hi.body(), units * per, zoom));
+                made.push((lo.body(), units, zoom, Made::Stuck));
+                made.push((hi.body(), units * per, zoom, Made::Stuck));
             }
         }
     }
@@ -797,16 +867,20 @@ impl<M: Model> Engine<M> {
 
     /// The healthy family most like family k: largest R^(m)(R^(φ))³ (Sect. 4.3.4).
     fn most_similar(&self, k: usize) -> Option<usize> {
-        let f = &self.families[k];
+        self.most_similar_to(self.families[k].body(), Some(k))
+    }
+
+    /// The healthy family (other than `except`) most like particles `body`.
+    fn most_similar_to(&self, body: Body, except: Option<usize>) -> Option<usize> {
         let score = |g: &Family<M::Props>| {
-            let rm = (f.mass / g.mass).min(g.mass / f.mass);
-            let rp = (f.filling / g.filling).min(g.filling / f.filling);
+            let rm = (body.mass / g.mass).min(g.mass / body.mass);
+            let rp = (body.filling / g.filling).min(g.filling / body.filling);
             rm.ln() + 3.0 * rp.ln()
         };
         self.families
             .iter()
             .enumerate()
-            .filter(|(i, g)| *i != k && g.groups > 0.0)
+            .filter(|(i, g)| Some(*i) != except && g.groups > 0.0)
             .max_by(|a, b| score(a.1).total_cmp(&score(b.1)))
             .map(|(i, _)| i)
     }
@@ -816,10 +890,16 @@ impl<M: Model> Engine<M> {
     /// its cached pair data to be recomputed; otherwise only its group count
     /// changes and the cached rates per pair are kept.
     fn merge_into(&mut self, k: usize, t: usize) -> bool {
-        let (a, b) = (self.families[k], self.families[t]);
-        let g = a.particles() + b.particles();
-        let mass = (a.mass * a.particles() + b.mass * b.particles()) / g;
-        let filling = (a.filling * a.particles() + b.filling * b.particles()) / g;
+        let a = self.families[k];
+        self.merge_particles_into(a.body(), a.particles(), t)
+    }
+
+    /// (4.27) for `count` particles `body` added to family t (see [`Engine::merge_into`]).
+    fn merge_particles_into(&mut self, body: Body, count: f64, t: usize) -> bool {
+        let b = self.families[t];
+        let g = count + b.particles();
+        let mass = (body.mass * count + b.mass * b.particles()) / g;
+        let filling = (body.filling * count + b.filling * b.particles()) / g;
         self.tally.merges += 1;
         let moved = (mass / b.mass - 1.0).abs() > MERGE_REFRESH || (filling / b.filling - 1.0).abs() > MERGE_REFRESH;
         let props = if moved { self.model.props(Body { mass, filling }) } else { b.props };
@@ -881,6 +961,18 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
     let width = std::f64::consts::LN_10 / n;
     bins.into_iter().map(|(b, m)| (10f64.powf((b as f64 + 0.5) / n), m / volume / width)).collect()
 }
+
+/// How an event made a product.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Made {
+    /// By sticking (or returned unchanged by a bounce).
+    Stuck,
+    /// By erosion or shattering: a remnant or fragments.
+    Broken,
+}
+
+/// Particles made by one event: what they are, how many, at which zoom factor.
+type Product = (Body, f64, i32, Made);
 
 /// A merge that moves a family's mass or filling factor by less than this
 /// keeps its cached properties and pair data.

@@ -275,18 +275,16 @@ pub enum EngineError {
     Invalid(&'static str),
 }
 
-/// Cached data of a pair of families: rate coefficient per volume and the
-/// change of the target (the more massive) in one collision.
+/// Cached data of a pair of families (the same for (i, j) and (j, i)): rate
+/// coefficient per volume and how far the target (the more massive) may change
+/// in one event.
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 struct Pair {
     /// K/V, s⁻¹ (pair collision rate).
     c: f64,
-    /// |δm| of the target in one collision.
-    dm: f64,
-    /// |δφ| of the target in one collision.
-    dphi: f64,
-    /// log₂(f_m m_t/|δm|) and log₂(f_φ φ_t/|δφ|) of the target (+∞ without change):
-    /// N_ε = ⌈max(z_hi − z_lo − these)⌉ (4.22)–(4.24).
+    /// The smaller of ⌊log₂(f_m m_t/|δm|)⌋ and ⌊log₂(f_φ φ_t/|δφ|)⌋ of the target
+    /// (+∞ without change): N_ε = ⌈max(z_hi − z_lo − these)⌉ (4.22)–(4.24), and
+    /// ⌈z − h⌉ = z − ⌊h⌋ for integer z.
     headroom: f64,
 }
 
@@ -500,7 +498,9 @@ impl<M: Model> Engine<M> {
             // The lo-particles are the projectiles: one on one.
             return (lo, hi, span);
         }
-        let n = f64::from(span) - self.pairs[lo][hi].headroom;
+        // Pair data are symmetric: read the row of the first family (the one
+        // whose rates are being refreshed), which is contiguous in memory.
+        let n = f64::from(span) - self.pairs[i][j].headroom;
         let n_eps = if n.is_finite() { (n.ceil().max(0.0) as i32).min(span) } else { 0 };
         (lo, hi, n_eps)
     }
@@ -551,9 +551,9 @@ impl<M: Model> Engine<M> {
             // Nothing happens: such events are left out.
             Effect::Bounce => (0.0, 0.0, 0.0),
         };
-        let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { (f * x / dx).log2() } else { f64::INFINITY };
+        let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY };
         let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
-        Pair { c, dm, dphi, headroom }
+        Pair { c, headroom }
     }
 
     /// Recomputes the group rates of family k (its groups or zoom changed).
@@ -872,10 +872,12 @@ impl<M: Model> Engine<M> {
 
     /// The healthy family (other than `except`) most like particles `body`.
     fn most_similar_to(&self, body: Body, except: Option<usize>) -> Option<usize> {
+        // R^(m)(R^(φ))³ itself: both ratios lie in (0, 1] and far above the
+        // smallest normal number for any masses and filling factors of a run.
         let score = |g: &Family<M::Props>| {
             let rm = (body.mass / g.mass).min(g.mass / body.mass);
             let rp = (body.filling / g.filling).min(g.filling / body.filling);
-            rm.ln() + 3.0 * rp.ln()
+            rm * rp * rp * rp
         };
         self.families
             .iter()
@@ -977,6 +979,14 @@ type Product = (Body, f64, i32, Made);
 /// A merge that moves a family's mass or filling factor by less than this
 /// keeps its cached properties and pair data.
 const MERGE_REFRESH: f64 = 1e-3;
+
+/// ⌊log₂ x⌋ for x > 0, read off the binary exponent where x is a normal
+/// number (exact, and far cheaper than a logarithm); N_ε (4.24) needs no
+/// more than this.
+fn floor_log2(x: f64) -> f64 {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    if x > 0.0 && biased != 0 && biased != 0x7ff { f64::from(biased - 1023) } else { x.log2().floor() }
+}
 
 /// Families with fewer than one group merge only into a family within this
 /// mass factor; otherwise they are magnified.

@@ -872,18 +872,37 @@ impl<M: Model> Engine<M> {
 
     /// The healthy family (other than `except`) most like particles `body`.
     fn most_similar_to(&self, body: Body, except: Option<usize>) -> Option<usize> {
-        // R^(m)(R^(φ))³ itself: both ratios lie in (0, 1] and far above the
-        // smallest normal number for any masses and filling factors of a run.
+        let ratios = |g: &Family<M::Props>| {
+            ((body.mass / g.mass).min(g.mass / body.mass), (body.filling / g.filling).min(g.filling / body.filling))
+        };
+        let healthy = |i: usize, g: &Family<M::Props>| Some(i) != except && g.groups > 0.0;
+        // The product R^(m)(R^(φ))³ finds the few candidates cheaply (both
+        // ratios lie in (0, 1], far above underflow); among those within 10⁻⁹
+        // of the best, the logarithmic score decides as it always has, so that
+        // near-ties fall the same way.
+        let best = self
+            .families
+            .iter()
+            .enumerate()
+            .filter(|(i, g)| healthy(*i, g))
+            .map(|(_, g)| {
+                let (rm, rp) = ratios(g);
+                rm * rp * rp * rp
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
         let score = |g: &Family<M::Props>| {
-            let rm = (body.mass / g.mass).min(g.mass / body.mass);
-            let rp = (body.filling / g.filling).min(g.filling / body.filling);
-            rm * rp * rp * rp
+            let (rm, rp) = ratios(g);
+            rm.ln() + 3.0 * rp.ln()
         };
         self.families
             .iter()
             .enumerate()
-            .filter(|(i, g)| Some(*i) != except && g.groups > 0.0)
-            .max_by(|a, b| score(a.1).total_cmp(&score(b.1)))
+            .filter(|(i, g)| {
+                let (rm, rp) = ratios(g);
+                healthy(*i, g) && rm * rp * rp * rp >= best * (1.0 - 1e-9)
+            })
+            .map(|(i, g)| (i, score(g)))
+            .max_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(i, _)| i)
     }
 

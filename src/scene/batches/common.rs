@@ -54,6 +54,10 @@ impl Default for BatchParams {
     }
 }
 
+/// Batches in all that a preview of a sweep runs (its first picture within
+/// about 0.1 s on two cores).
+const PREVIEW_BATCHES: usize = 120;
+
 impl BatchParams {
     /// The documented parameters.
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
@@ -72,7 +76,14 @@ impl BatchParams {
 
     /// The run of a preview: at most 40 batches.
     pub fn coarse(&self) -> BatchParams {
-        BatchParams { batches: self.batches.min(40), ..self.clone() }
+        self.coarse_over(1)
+    }
+
+    /// The run of each of `disks` disks in the preview of a sweep: about 120
+    /// batches in all, 12 to 40 per disk, never more than the full run.
+    pub fn coarse_over(&self, disks: usize) -> BatchParams {
+        let per_disk = (PREVIEW_BATCHES / disks.max(1)).clamp(12, 40);
+        BatchParams { batches: self.batches.min(per_disk), ..self.clone() }
     }
 
     /// The run configuration.

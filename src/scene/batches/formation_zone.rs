@@ -31,7 +31,8 @@ disks run in parallel.",
     }
 
     fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { run: p.run.coarse(), n_mass: p.n_mass.min(3), ..p.clone() })
+        let n_mass = p.n_mass.min(3);
+        Some(Params { run: p.run.coarse_over(2 * n_mass * p.n_z), n_mass, ..p.clone() })
     }
 
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -29,7 +29,7 @@ are independent and go in parallel.",
     }
 
     fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { run: p.run.coarse(), ..p.clone() })
+        Some(Params { run: p.run.coarse_over(p.n_mass * p.n_z), ..p.clone() })
     }
 
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

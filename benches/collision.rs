@@ -4,7 +4,7 @@
 //! time per collision (median of repeated runs) and |e − e_ref|, where e_ref
 //! comes from a run at rtol = 1e-11; then the time of whole scenes.
 
-use grainscope::physics::collision::{Options, Setup, collide};
+use grainscope::physics::collision::{Options, Setup, collide, sticking_search};
 use grainscope::scene::{self, Caches, Progress, SceneParams};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -74,10 +74,54 @@ fn main() {
         scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene")
     });
     println!("  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms", t.as_secs_f64() * 1e3);
+    restitution_accuracy();
     println!("  every scene with its default parameters:");
     for info in scene::SCENES {
         let p = SceneParams::default_for(info.id).expect("scene");
         let t = time(|| scene::compute(&p, &Progress::default()).expect("scene"));
         println!("    {:<24} {:>9.3} ms{}", info.id, t.as_secs_f64() * 1e3, if info.heavy { "  (worker)" } else { "" });
+    }
+}
+
+/// The e(v) panel of the restitution scene against a dense reference: the
+/// model computed at every one of its 200 velocities at rtol = 1e-10, for the
+/// reference ice set, a quasi-static (T_vis = 1e-14 s) and a viscous
+/// (T_vis = 1e-10 s) case; and the sticking-velocity search against
+/// bisection.
+fn restitution_accuracy() {
+    println!("\n  e(v) panel against every velocity computed at rtol 1e-10:");
+    println!("  {:<28} {:>9} {:>12} {:>10} {:>10}", "case", "time [ms]", "max |Δe|", "v_s [m/s]", "v_s evals");
+    for (name, t_vis) in [("reference ice", None), ("T_vis = 1e-14 s", Some(1e-14)), ("T_vis = 1e-10 s", Some(1e-10))] {
+        let mut p = SceneParams::default_for("restitution").expect("scene");
+        if let Some(t) = t_vis {
+            p.set("t_vis", &t.to_string()).expect("valid");
+        }
+        let mut caches = Caches::default();
+        scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene");
+        let mut flip = false;
+        let t = time(|| {
+            flip = !flip;
+            let mut q = p.clone();
+            q.set("v_min", if flip { "0.5" } else { "0.50001" }).expect("valid");
+            scene::compute_cached(&q, &Progress::default(), &mut caches).expect("scene")
+        });
+        let out = scene::compute(&p, &Progress::default()).expect("scene");
+        let curve = &out.figures[0].series.iter().find(|s| s.name == "e (model)").expect("e(v)").points;
+        let mut setup = Setup::reference_ice();
+        if let Some(t) = t_vis {
+            setup.t_vis = t;
+        }
+        let tight = Options { rtol: 1e-10, ..Options::default() };
+        let worst = curve
+            .iter()
+            .map(|&[v, e]| (collide(&setup, v, &tight).expect("collision").e_adhesive - e).abs())
+            .fold(0.0, f64::max);
+        let search = sticking_search(&setup, &Options::default(), 1e-4).expect("v_s");
+        println!(
+            "  {name:<28} {:>9.2} {worst:>12.2e} {:>10.4} {:>10}",
+            t.as_secs_f64() * 1e3,
+            search.velocity,
+            search.evaluations
+        );
     }
 }

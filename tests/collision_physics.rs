@@ -1,7 +1,9 @@
 //! Physics of head-on collisions (thesis ch. 2): published numbers, exact
 //! limits, conservation and stability over the documented ranges.
 
-use grainscope::physics::collision::{Options, Outcome, Setup, collide, restitution, sticking_velocity};
+use grainscope::physics::collision::{
+    Options, Outcome, Setup, collide, restitution, sticking_search, sticking_velocity,
+};
 use grainscope::physics::contact::e_independent;
 use grainscope::physics::plasticity::{e_plastic, yield_velocity};
 use rand::{Rng, SeedableRng};
@@ -237,4 +239,53 @@ fn sphere_on_wall_uses_the_projectile_as_reduced_body() {
     let on_sphere = sticking_velocity(&sphere, &opts(), 1e-3).expect("v_s");
     let on_wall = sticking_velocity(&wall, &opts(), 1e-3).expect("v_s");
     assert!(on_wall > on_sphere, "{on_wall} vs {on_sphere}");
+}
+
+/// The plain definition of v_s: bisection in log v on the outcome alone.
+/// Returns v_s and the collisions it took.
+fn bisected_sticking_velocity(s: &Setup, rel: f64) -> (f64, usize) {
+    let mut n = 0;
+    let mut sticks = |v: f64| {
+        n += 1;
+        collide(s, v, &opts()).expect("collides").outcome == Outcome::Stick
+    };
+    let (mut lo, mut hi) = (s.pair.jkr_sticking_velocity(), s.pair.jkr_sticking_velocity());
+    while sticks(hi) {
+        hi *= 2.0;
+    }
+    while !sticks(lo) {
+        lo *= 0.5;
+    }
+    while hi / lo - 1.0 > rel {
+        let mid = (lo * hi).sqrt();
+        if sticks(mid) {
+            lo = mid;
+        } else {
+            hi = mid;
+        }
+    }
+    ((lo * hi).sqrt(), n)
+}
+
+#[test]
+fn sticking_search_agrees_with_bisection_in_fewer_collisions() {
+    for (t_vis, gamma) in [(1e-11, 0.74), (1e-14, 0.74), (1e-10, 0.74), (3e-12, 0.74), (1e-11, 0.1), (1e-13, 2.0)] {
+        let mut s = ice();
+        s.t_vis = t_vis;
+        s.pair.surface_energy = gamma;
+        let search = sticking_search(&s, &opts(), 1e-4).expect("search");
+        let (bisected, n) = bisected_sticking_velocity(&s, 1e-4);
+        assert!(
+            (search.velocity / bisected - 1.0).abs() <= 2e-4,
+            "T_vis {t_vis}, γ {gamma}: {} vs {bisected}",
+            search.velocity
+        );
+        assert!(search.evaluations < n, "T_vis {t_vis}, γ {gamma}: {} collisions vs {n}", search.evaluations);
+        // The bracket holds what it says: stick below, bounce above.
+        let [lo, hi] = search.bracket;
+        assert!(hi / lo - 1.0 <= 1e-4);
+        assert_eq!(collide(&s, lo, &opts()).expect("collides").outcome, Outcome::Stick);
+        assert_eq!(collide(&s, hi, &opts()).expect("collides").outcome, Outcome::Bounce);
+        assert!(search.bounces.iter().all(|b| b[0] >= hi && b[1] > 0.0));
+    }
 }

@@ -1,5 +1,6 @@
 //! Scene-level checks: caching never changes results, outputs are complete.
 
+use grainscope::physics::collision::{Options, Outcome, Setup, collide};
 use grainscope::scene::{self, Caches, Progress, SCENES, SceneParams};
 
 fn small_restitution() -> SceneParams {
@@ -153,4 +154,31 @@ fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
     }
     // Light scenes have none.
     assert!(SceneParams::default_for("hysteresis").expect("scene").coarse().is_none());
+}
+
+#[test]
+fn the_adaptive_restitution_curve_is_the_model_within_1e4() {
+    // e(v) is drawn through adaptively placed collisions: at every velocity
+    // of the grid it must be what the model gives there.
+    let mut p = SceneParams::default_for("restitution").expect("scene");
+    for (k, v) in [("n_radii", "2"), ("n_t_vis", "1")] {
+        p.set(k, v).expect("valid");
+    }
+    let out = scene::compute(&p, &Progress::default()).expect("scene");
+    let curve = &out.figures[0].series.iter().find(|s| s.name == "e (model)").expect("e(v)").points;
+    assert_eq!(curve.len(), 200);
+    let v_s = out.scalars.iter().find(|s| s.key == "v_stick").expect("v_s").value;
+    let setup = Setup::reference_ice();
+    let opts = Options::default();
+    let mut bounced = 0;
+    for &[v, e] in curve.iter().step_by(7) {
+        let direct = collide(&setup, v, &opts).expect("collides");
+        if direct.outcome == Outcome::Stick {
+            assert!(v <= v_s * (1.0 + 1e-5) && e == 0.0, "v = {v}: sticks, drawn {e}, v_s = {v_s}");
+        } else {
+            bounced += 1;
+            assert!((e - direct.e_adhesive).abs() <= 1e-4, "v = {v}: drawn {e}, model {}", direct.e_adhesive);
+        }
+    }
+    assert!(bounced > 15, "{bounced}");
 }

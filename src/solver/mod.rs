@@ -1,7 +1,8 @@
-//! Numerical integrators shared by the physical models.
+//! Numerical integrators, root finders and samplers shared by the physical models.
 
 mod roots;
 mod rosenbrock;
+pub mod sampling;
 
 pub use roots::{Root, illinois};
 pub use rosenbrock::{Matrix, Rosenbrock4, SolverError, SolverStats, State, StiffSystem};

@@ -49,6 +49,24 @@ fn main() {
             println!("  {kernel:<9} {t:>6}  {w:>4}   {events:>10.0}   {per_run:>13.1}   {worst:>11.3}");
         }
     }
+    println!("The same with no group above 1e-3 of the total mass (group_mass_cap):");
+    for (kernel, t) in [("constant", 1000.0), ("linear", 10.0), ("product", 0.9)] {
+        for w in [20.0, 60.0] {
+            let p = Params {
+                kernel: kernel.into(),
+                time: t,
+                groups_per_decade: w,
+                runs: 16,
+                group_mass_cap: 1e-3,
+                ..Params::default()
+            };
+            let start = Instant::now();
+            let (bins, events) = analytic_kernels::run(&p, &Progress::default()).expect("runs");
+            let per_run = start.elapsed().as_secs_f64() * 1e3 / 16.0 * rayon::current_num_threads() as f64;
+            let worst = analytic_kernels::core_error(&bins, 0.9);
+            println!("  {kernel:<9} {t:>6}  {w:>4}   {events:>10.0}   {per_run:>13.1}   {worst:>11.3}");
+        }
+    }
 
     println!("Column at 5 AU, alpha = 1e-3, 0.1 um ice, one run (one thread)");
     println!("  case                                        w*   time [s]   events    events/s   families   |dM|/M");

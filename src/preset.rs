@@ -157,7 +157,7 @@ fn find_number(text: &str, key: &str, value: &str) -> Option<(usize, usize, Stri
 }
 
 /// The presets shipped in `presets/`, compiled into the binary: (file name, text).
-pub const SHIPPED: [(&str, &str); 50] = [
+pub const SHIPPED: [(&str, &str); 53] = [
     ("ice-bounce-8ms.ron", include_str!("../presets/ice-bounce-8ms.ron")),
     ("ice-stick-2ms.ron", include_str!("../presets/ice-stick-2ms.ron")),
     ("ice-quasistatic.ron", include_str!("../presets/ice-quasistatic.ron")),
@@ -208,6 +208,9 @@ pub const SHIPPED: [(&str, &str); 50] = [
     ("mc-kernel-constant.ron", include_str!("../presets/mc-kernel-constant.ron")),
     ("mc-kernel-linear.ron", include_str!("../presets/mc-kernel-linear.ron")),
     ("mc-kernel-product.ron", include_str!("../presets/mc-kernel-product.ron")),
+    ("mc-kernel-constant-capped.ron", include_str!("../presets/mc-kernel-constant-capped.ron")),
+    ("mc-kernel-linear-capped.ron", include_str!("../presets/mc-kernel-linear-capped.ron")),
+    ("mc-kernel-product-capped.ron", include_str!("../presets/mc-kernel-product-capped.ron")),
 ];
 
 /// Finds a preset by path, or by the name of a shipped preset (with or

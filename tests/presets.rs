@@ -34,6 +34,10 @@ fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() 
             quick.set("runs", "1").expect("runs");
             quick.set("max_events_millions", "0.02").expect("event cap");
         }
+        if file.ends_with("-capped.ron") {
+            // Capped kernel tests take seconds per run: one run here.
+            quick.set("runs", "1").expect("runs");
+        }
         let out = scene::compute(&quick, &Progress::default()).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(!out.figures.is_empty(), "{file}");
         // Every character of every label must exist in the bundled font,

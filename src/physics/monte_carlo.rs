@@ -259,11 +259,17 @@ pub struct Settings {
     pub rezoom_every: usize,
     /// Random seed.
     pub seed: u64,
+    /// Largest share of the total mass one group may hold, ε_M
+    /// (dimensionless, 0 < ε_M ≤ 1; 1 = no cap, as in the thesis). Below 1
+    /// the zoom factor of a family of mass m is also at most
+    /// ⌊log₂(ε_M M/m)⌋: the most massive particles are followed in smaller
+    /// groups than (4.26) alone gives.
+    pub group_mass_cap: f64,
 }
 
 impl Default for Settings {
     fn default() -> Self {
-        Settings { groups_per_decade: 60.0, f_m: 0.1, f_phi: 0.1, rezoom_every: 100, seed: 1 }
+        Settings { groups_per_decade: 60.0, f_m: 0.1, f_phi: 0.1, rezoom_every: 100, seed: 1, group_mass_cap: 1.0 }
     }
 }
 
@@ -356,7 +362,14 @@ impl<M: Model> Engine<M> {
         if !(s.f_m > 0.0 && s.f_m <= 1.0 && s.f_phi > 0.0 && s.f_phi <= 1.0 && s.rezoom_every >= 1) {
             return Err(EngineError::Invalid("need 0 < f_m, f_φ ≤ 1 and a re-zoom interval ≥ 1"));
         }
-        let zoom = zoom_for(particles, s.groups_per_decade);
+        if !(s.group_mass_cap > 0.0 && s.group_mass_cap <= 1.0) {
+            return Err(EngineError::Invalid("the group mass cap ε_M must be in (0, 1]"));
+        }
+        let zoom = zoom_for(particles, s.groups_per_decade).min(capped_zoom(
+            first.mass,
+            first.mass * particles,
+            s.group_mass_cap,
+        ));
         let props = model.props(first);
         let family = Family { mass: first.mass, filling: first.filling, groups: particles / exp2i(zoom), zoom, props };
         let mut e = Engine {
@@ -938,7 +951,7 @@ impl<M: Model> Engine<M> {
         }
         for (f, dirty) in self.families.iter_mut().zip(self.dirty.iter_mut()) {
             let n10 = decades.get(&(f.mass.log10().floor() as i64)).copied().unwrap_or(0.0);
-            let z = zoom_for(n10, w_star);
+            let z = zoom_for(n10, w_star).min(capped_zoom(f.mass, self.initial_mass, self.settings.group_mass_cap));
             *dirty = z != f.zoom;
             if *dirty {
                 f.groups = f.particles() / exp2i(z);
@@ -1023,6 +1036,12 @@ fn exp2i(k: i32) -> f64 {
 }
 
 /// z* = [log₂(N₁₀/w*)] ≥ 0 (4.26).
+/// The largest zoom factor at which one group of particles of mass `m`
+/// holds at most `cap` of the total mass `total` (no limit for `cap` ≥ 1).
+fn capped_zoom(m: f64, total: f64, cap: f64) -> i32 {
+    if cap >= 1.0 { i32::MAX } else { (cap * total / m).log2().floor().max(0.0) as i32 }
+}
+
 fn zoom_for(n10: f64, w_star: f64) -> i32 {
     if n10 <= w_star { 0 } else { (n10 / w_star).log2().floor() as i32 }
 }

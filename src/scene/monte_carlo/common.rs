@@ -142,6 +142,7 @@ impl ColumnParams {
                 f_phi: self.f_limit,
                 rezoom_every: 100,
                 seed: self.seed as u64,
+                group_mass_cap: 1.0,
             },
             snapshots,
             history_per_decade: 8,

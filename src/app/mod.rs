@@ -733,7 +733,15 @@ impl GrainscopeApp {
         }
         if !self.session.lecture {
             egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
-                egui::ScrollArea::vertical().show(ui, |ui| self.side_panel(ui));
+                // The content never asks for more than the panel's width, so
+                // the panel changes width only when the user drags its edge
+                // (wider content, e.g. while a slider moves, would otherwise
+                // widen it a little every frame).
+                let width = ui.available_width();
+                egui::ScrollArea::vertical().show(ui, |ui| {
+                    ui.set_max_width(width);
+                    self.side_panel(ui)
+                });
             });
         }
         self.request();

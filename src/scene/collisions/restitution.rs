@@ -270,7 +270,12 @@ fn adaptive_restitution(
     let v_s = search.velocity;
     let direct = |progress: &Progress| par_map(velocities, progress, done, total, e_of);
     if v_s >= v_hi {
-        // The whole range sticks (to the search's precision).
+        // The search found no bounce below v_hi: the range sticks, unless a
+        // collision of the first round bounced (a window of bouncing between
+        // the search's doublings), and then every velocity is computed.
+        if first.iter().any(|&e| e > 0.0) {
+            return Ok((direct(progress)?, v_s));
+        }
         return Ok((vec![0.0; velocities.len()], v_s));
     }
     if coarse.iter().zip(&first).any(|(&v, &e)| v > bounce && e == 0.0) {

@@ -212,6 +212,12 @@ impl Analytic {
         sum
     }
 
+    /// Exact mass per unit volume per unit ln m at mass k (real, k ≫ 1, where
+    /// N_k is smooth in k): k²N_k.
+    pub fn exact_mass_per_ln(&self, k: f64, t: f64) -> f64 {
+        k * k * self.exact_continuous(k, t)
+    }
+
     /// N_k for real k (Stirling's ln Γ(k + 1)).
     fn exact_continuous(&self, k: f64, t: f64) -> f64 {
         let ln_fact = k * k.ln() - k + 0.5 * (2.0 * std::f64::consts::PI * k).ln() + 1.0 / (12.0 * k);

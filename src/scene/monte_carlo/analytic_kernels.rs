@@ -215,7 +215,7 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let floor = 1e-8 * bins.iter().map(|b| per_ln(b, b.4)).fold(0.0, f64::max);
     let curve: Vec<[f64; 2]> = crate::scene::core::logspace(100.0, top.max(1e3), 200)
         .into_iter()
-        .map(|k| [k, kernel.exact_mass_between(k, k * 1.01, p.time) / 1.01f64.ln()])
+        .map(|k| [k, kernel.exact_mass_per_ln(k, p.time)])
         .filter(|q| q[1] > floor)
         .collect();
     fig = fig.with(Series::new("exact", curve, Style::Dashed, 1));

@@ -192,7 +192,9 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut Cache) -> Result<Sce
         .collect();
     let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
     let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
-    let key_s: RangeKey = (key_c, p.r_min, p.r_max, p.n_radii);
+    // The v_s(R) panel draws its own T_vis family: the current T_vis is not
+    // among its inputs.
+    let key_s: RangeKey = (CollisionParams { t_vis: 0.0, ..key_c.clone() }, p.r_min, p.r_max, p.n_radii);
     let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
     let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
     let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);

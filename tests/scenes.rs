@@ -152,6 +152,14 @@ fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
         let full = scene::compute(&p, &Progress::default()).expect("full");
         assert_eq!(ids(&out), ids(&full), "{id}");
     }
+    // The restitution scene previews with fewer radii, with the same figures.
+    let p = SceneParams::default_for("restitution").expect("scene");
+    let coarse = p.coarse().expect("restitution has a preview");
+    assert_ne!(coarse, p, "the preview is the full computation");
+    let ids = |o: &scene::SceneOutput| o.figures.iter().map(|f| f.id.clone()).collect::<Vec<_>>();
+    let out = scene::compute(&coarse, &Progress::default()).expect("preview");
+    let full = scene::compute(&p, &Progress::default()).expect("full");
+    assert_eq!(ids(&out), ids(&full));
     // Light scenes have none.
     assert!(SceneParams::default_for("hysteresis").expect("scene").coarse().is_none());
 }

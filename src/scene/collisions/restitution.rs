@@ -43,6 +43,11 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
         compute(p, ctx.progress, ctx.caches.get())
     }
 
+    /// Six radii for e(R) and v_s(R) (the costly panels).
+    fn coarse(p: &Params) -> Option<Params> {
+        Some(Params { n_radii: p.n_radii.min(6), ..p.clone() })
+    }
+
     fn material_changed(p: &mut Params) {
         p.collision.material_changed();
     }

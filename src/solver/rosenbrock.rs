@@ -162,20 +162,31 @@ impl<const N: usize> Lu<N> {
 
     /// Solves `m x = b`.
     fn solve(&self, b: &State<N>) -> Option<State<N>> {
+        // Block sizes known at compile time unroll the loops.
+        match self.k {
+            1 => self.solve_block::<1>(b),
+            2 => self.solve_block::<2>(b),
+            3 => self.solve_block::<3>(b),
+            4 => self.solve_block::<4>(b),
+            _ => self.solve_block::<N>(b),
+        }
+    }
+
+    /// [`solve`](Self::solve) with a leading block of `K` (= `self.k`, or
+    /// `N`, since columns beyond `self.k` hold only the diagonal).
+    fn solve_block<const K: usize>(&self, b: &State<N>) -> Option<State<N>> {
         let mut x = State::<N>::zeros();
         for i in 0..N {
             let mut s = b[self.perm[i]];
-            for j in 0..i.min(self.k) {
+            for j in 0..i.min(K) {
                 s -= self.lu[(i, j)] * x[j];
             }
             x[i] = s;
         }
         for i in (0..N).rev() {
             let mut s = x[i];
-            if i < self.k {
-                for j in i + 1..self.k {
-                    s -= self.lu[(i, j)] * x[j];
-                }
+            for j in i + 1..K.max(i + 1) {
+                s -= self.lu[(i, j)] * x[j];
             }
             x[i] = s * self.inv_diag[i];
         }

@@ -307,8 +307,8 @@ fn adaptive_restitution(
         return Ok((direct(progress)?, v_s));
     }
     let budget = velocities.len().min(velocities.iter().filter(|&&v| v > stick).count() + 2);
-    let close = |_: f64, predicted: f64, sampled: f64| (predicted.max(0.0).sqrt() - sampled.sqrt()).abs() <= E_TOLERANCE;
-    let refined = refine(samples, 1e-9, budget.max(COARSE_VELOCITIES + 2), close, |xs: &[f64]| {
+    let miss = |_: f64, predicted: f64, sampled: f64| (predicted.max(0.0).sqrt() - sampled.sqrt()).abs() / E_TOLERANCE;
+    let refined = refine(samples, 1e-9, budget.max(COARSE_VELOCITIES + 2), miss, |xs: &[f64]| {
         let vs: Vec<f64> = xs.iter().map(|x| x.exp()).collect();
         let e = par_map(&vs, progress, done, total, e_of)?;
         Ok::<_, SceneError>(e.iter().map(|e| e * e).collect())

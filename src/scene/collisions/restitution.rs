@@ -418,9 +418,10 @@ fn radius_panel(
             pair.e_jkr(v),
         ])
     })?;
+    let title = format!("Restitution against reduced radius at v = {} m/s", human(v));
     let fig = Figure::new(
         "restitution-radius",
-        "Restitution against reduced radius",
+        &title,
         Axis::log("reduced radius R", "µm"),
         Axis::linear("coefficient of restitution", ""),
     )

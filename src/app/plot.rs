@@ -300,7 +300,9 @@ pub fn show(
                         };
                         let x = untransform(p.x, xs);
                         let y = untransform(p.y, ys);
-                        let head = if name.is_empty() { String::new() } else { format!("{name}\n") };
+                        // Away from the data the values are the pointer's, and
+                        // the label says so (an audience reads them as data).
+                        let head = if name.is_empty() { "pointer at\n".to_string() } else { format!("{name}\n") };
                         Some(format!("{head}{x_name} = {} {x_unit}\n{y_name} = {} {y_unit}", human(x), human(y)))
                     });
                 // egui_plot keeps the first default bounds it was given: when

@@ -160,6 +160,17 @@ fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
     let out = scene::compute(&coarse, &Progress::default()).expect("preview");
     let full = scene::compute(&p, &Progress::default()).expect("full");
     assert_eq!(ids(&out), ids(&full));
+    // Capped kernel tests preview with the uncapped method.
+    let mut k = SceneParams::default_for("kernel-tests").expect("scene");
+    k.set("group_mass_cap", "1e-3").expect("valid");
+    let coarse = k.coarse().expect("a capped kernel test has a preview");
+    let SceneParams::KernelTests(c) = &coarse else { panic!("not a kernel test") };
+    assert_eq!(c.group_mass_cap, 1.0);
+    let uncapped = SceneParams::default_for("kernel-tests").expect("scene");
+    assert_eq!(
+        ids(&scene::compute(&coarse, &Progress::default()).expect("preview")),
+        ids(&scene::compute(&uncapped, &Progress::default()).expect("uncapped"))
+    );
     // Light scenes have none.
     assert!(SceneParams::default_for("hysteresis").expect("scene").coarse().is_none());
 }

@@ -2031,7 +2031,14 @@ fn install_fonts(ctx: &egui::Context) {
 /// Computes the coarse parameters `c` of a heavy scene and offers the result
 /// for display, unless the full result came first or the job was cancelled.
 fn preview(c: &scene::SceneParams, progress: &scene::Progress, finished: &std::sync::atomic::AtomicBool) {
-    if let Ok(mut out) = scene::compute(c, &progress.quiet_child()) {
+    // On a thread pool of its own: in the global pool the preview's parallel
+    // work would queue behind the full run's (seconds-long Monte Carlo runs).
+    let compute = || scene::compute(c, &progress.quiet_child());
+    let result = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+        Ok(pool) => pool.install(compute),
+        Err(_) => compute(),
+    };
+    if let Ok(mut out) = result {
         if finished.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
             return;
         }

@@ -36,6 +36,13 @@ the groups per decade w* grow; the low-mass tail stays resolved far below the pe
     fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         compute(p, ctx.progress)
     }
+
+    /// Capped runs take seconds each: first the uncapped method with at most
+    /// two runs (milliseconds).
+    fn coarse(p: &Params) -> Option<Params> {
+        let c = Params { group_mass_cap: 1.0, runs: p.runs.min(2), ..p.clone() };
+        (c != *p).then_some(c)
+    }
 }
 
 /// Parameters of the scene.

@@ -63,17 +63,10 @@ fn main() {
     let restitution = SceneParams::default_for("restitution").expect("scene");
     let t = time(|| scene::compute(&restitution, &Progress::default()).expect("scene"));
     println!("  restitution, all three panels:                  {:>8.2} ms", t.as_secs_f64() * 1e3);
-    // Only e(v) (200 velocities) and v_s: the other panels come from the cache.
-    let mut caches = Caches::default();
-    scene::compute_cached(&restitution, &Progress::default(), &mut caches).expect("scene");
-    let mut flip = false;
-    let t = time(|| {
-        flip = !flip;
-        let mut p = restitution.clone();
-        p.set("v_min", if flip { "0.5" } else { "0.50001" }).expect("valid");
-        scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene")
-    });
+    let t = recompute_time(&restitution, "v_min", ["0.5", "0.50001"]);
     println!("  restitution, e(v) at 200 velocities + v_stick:   {:>8.2} ms", t.as_secs_f64() * 1e3);
+    let t = recompute_time(&restitution, "t_vis", ["1e-11", "1.1e-11"]);
+    println!("  restitution, a change of T_vis (e(v) and e(R)):  {:>8.2} ms", t.as_secs_f64() * 1e3);
     restitution_accuracy();
     println!("  every scene with its default parameters:");
     for info in scene::SCENES {
@@ -83,11 +76,25 @@ fn main() {
     }
 }
 
+/// Time of a cached recomputation of scene `p` when `key` alternates
+/// between two values: what that parameter's change costs in the window.
+fn recompute_time(p: &SceneParams, key: &str, values: [&str; 2]) -> Duration {
+    let mut caches = Caches::default();
+    scene::compute_cached(p, &Progress::default(), &mut caches).expect("scene");
+    let mut flip = false;
+    time(|| {
+        flip = !flip;
+        let mut q = p.clone();
+        q.set(key, values[usize::from(flip)]).expect("valid");
+        scene::compute_cached(&q, &Progress::default(), &mut caches).expect("scene")
+    })
+}
+
 /// The e(v) panel of the restitution scene against a dense reference: the
 /// model computed at every one of its 200 velocities at rtol = 1e-10, for the
 /// reference ice set, a quasi-static (T_vis = 1e-14 s) and a viscous
-/// (T_vis = 1e-10 s) case; and the sticking-velocity search against
-/// bisection.
+/// (T_vis = 1e-10 s) case, with the collisions the sticking-velocity search
+/// took.
 fn restitution_accuracy() {
     println!("\n  e(v) panel against every velocity computed at rtol 1e-10:");
     println!("  {:<28} {:>9} {:>12} {:>10} {:>10}", "case", "time [ms]", "max |Δe|", "v_s [m/s]", "v_s evals");
@@ -96,15 +103,7 @@ fn restitution_accuracy() {
         if let Some(t) = t_vis {
             p.set("t_vis", &t.to_string()).expect("valid");
         }
-        let mut caches = Caches::default();
-        scene::compute_cached(&p, &Progress::default(), &mut caches).expect("scene");
-        let mut flip = false;
-        let t = time(|| {
-            flip = !flip;
-            let mut q = p.clone();
-            q.set("v_min", if flip { "0.5" } else { "0.50001" }).expect("valid");
-            scene::compute_cached(&q, &Progress::default(), &mut caches).expect("scene")
-        });
+        let t = recompute_time(&p, "v_min", ["0.5", "0.50001"]);
         let out = scene::compute(&p, &Progress::default()).expect("scene");
         let curve = &out.figures[0].series.iter().find(|s| s.name == "e (model)").expect("e(v)").points;
         let mut setup = Setup::reference_ice();

@@ -29,8 +29,8 @@ v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelast
 e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
 Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
 combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
-sticking and bouncing of the full model, found from a bracket by extrapolating e_A² (near-linear \
-in 1/v² there) to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
+sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
+bounces to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
 e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
         heavy: true,
     };
@@ -251,8 +251,8 @@ const V_STICK_PRECISION: f64 = 1e-6;
 const COARSE_VELOCITIES: usize = 9;
 
 /// e_A(v) over the velocity range: zero up to v_s, and above it a curve of
-/// adaptive samples (e_A² against ln v, cubic between samples, refined until
-/// every interval's middle is within [`E_TOLERANCE`]), read at `velocities`.
+/// adaptive samples (e_A² against ln v, cubic between samples, refined by
+/// [`refine`] to [`E_TOLERANCE`]), read at `velocities`.
 /// Far fewer collisions than velocities where e(v) is smooth; every velocity
 /// is computed directly when the curve would need more samples than that.
 fn adaptive_restitution(

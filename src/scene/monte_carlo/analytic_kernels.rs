@@ -100,7 +100,7 @@ impl Params {
             Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 64.0).doc("independent seeds, run in parallel"),
             Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"),
             Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"),
-            Control::number("group_mass_cap", "largest group mass share ε_M", &mut self.group_mass_cap).default(d.group_mass_cap).shown(one.0, one.1).range(1e-4, 1.0).log().doc("caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the exact kernels within 5 % at ~100 times the cost"),
+            Control::number("group_mass_cap", "largest group mass share ε_M", &mut self.group_mass_cap).default(d.group_mass_cap).shown(one.0, one.1).range(1e-4, 1.0).log().doc("caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the constant and product kernels within 5 % at ~100 times the cost"),
         ]
     }
 

@@ -106,6 +106,25 @@ pub fn movie(
     dir: &Path,
     cancelled: &dyn Fn() -> bool,
 ) -> Result<Vec<PathBuf>> {
+    let files = movie_files(preset, n_frames, only, animate, fps, cancelled)?;
+    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
+    let mut set = FileSet::new();
+    for (name, bytes) in &files {
+        set.stage(&dir.join(name), bytes)?;
+    }
+    Ok(set.commit()?)
+}
+
+/// The files of a played history, as [`movie`] writes them: (file name,
+/// bytes), frames first, each figure's animated PNG after its frames.
+pub fn movie_files(
+    preset: &Preset,
+    n_frames: usize,
+    only: Option<&str>,
+    animate: bool,
+    fps: u16,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<Vec<(String, Vec<u8>)>> {
     let out = scene::compute(&preset.scene, &Progress::default())?;
     let played = frames(&preset.scene, &out, n_frames)?;
     let ids: Vec<String> = out.figures.iter().map(|f| f.id.clone()).filter(|id| only.is_none_or(|o| o == id)).collect();
@@ -113,9 +132,8 @@ pub fn movie(
         let known: Vec<&str> = out.figures.iter().map(|f| f.id.as_str()).collect();
         bail!("no figure '{}' in this scene (figures: {})", only.unwrap_or_default(), known.join(", "));
     }
-    std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
     let stamp = Stamp::of(preset)?;
-    let mut set = FileSet::new();
+    let mut files = Vec::new();
     for id in &ids {
         let mut images = Vec::new();
         for (k, figs) in played.iter().enumerate() {
@@ -124,17 +142,17 @@ pub fn movie(
             }
             let Some(fig) = figs.iter().find(|f| &f.id == id) else { continue };
             let bytes = figure_bytes(fig, "png", FRAME_SIZE, Some(&stamp))?;
-            set.stage(&dir.join(format!("{id}-{:04}.png", k + 1)), &bytes)?;
             if animate {
-                images.push(bytes);
+                images.push(bytes.clone());
             }
+            files.push((format!("{id}-{:04}.png", k + 1), bytes));
         }
         if animate {
             let apng = animated_png(&images, fps, &stamp).with_context(|| format!("cannot animate figure '{id}'"))?;
-            set.stage(&dir.join(format!("{id}.png")), &apng)?;
+            files.push((format!("{id}.png"), apng));
         }
     }
-    Ok(set.commit()?)
+    Ok(files)
 }
 
 /// Joins PNG frames of equal size into one animated PNG (APNG) that loops,

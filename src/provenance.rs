@@ -158,10 +158,18 @@ fn extension(path: &Path) -> String {
 pub fn read(path: &Path) -> Result<Preset, ProvenanceError> {
     let origin = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|cause| ProvenanceError::Read { path: origin.clone(), cause })?;
-    let text = match extension(path).as_str() {
-        "png" => png_text(&bytes),
-        "svg" => std::str::from_utf8(&bytes).ok().and_then(svg_text),
-        "csv" => std::str::from_utf8(&bytes).ok().and_then(csv_text),
+    from_bytes(&bytes, &origin)
+}
+
+/// The preset embedded in the bytes of an exported PNG, SVG or CSV file;
+/// `name` (a file name or path) gives the kind by its extension and names
+/// the file in errors.
+pub fn from_bytes(bytes: &[u8], name: &str) -> Result<Preset, ProvenanceError> {
+    let origin = name.to_string();
+    let text = match extension(Path::new(name)).as_str() {
+        "png" => png_text(bytes),
+        "svg" => std::str::from_utf8(bytes).ok().and_then(svg_text),
+        "csv" => std::str::from_utf8(bytes).ok().and_then(csv_text),
         _ => return Err(ProvenanceError::Kind(origin)),
     };
     let text = text.ok_or_else(|| ProvenanceError::Missing(origin.clone()))?;

@@ -153,17 +153,19 @@ fn set_aside(path: &Path) -> std::io::Result<PathBuf> {
     Err(std::io::Error::other("too many unreadable session files"))
 }
 
+/// The session as the RON text of its file.
+pub fn to_ron(session: &Session) -> Result<String, String> {
+    ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false)).map_err(|e| e.to_string())
+}
+
 /// Writes the session to `path` atomically.
 pub fn save(session: &Session, path: &Path) -> Result<(), WriteError> {
-    let text =
-        ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false)).map_err(|e| {
-            WriteError {
-                path: path.to_path_buf(),
-                cause: std::io::Error::other(e.to_string()),
-                written: Vec::new(),
-                not_written: vec![path.to_path_buf()],
-            }
-        })?;
+    let text = to_ron(session).map_err(|e| WriteError {
+        path: path.to_path_buf(),
+        cause: std::io::Error::other(e),
+        written: Vec::new(),
+        not_written: vec![path.to_path_buf()],
+    })?;
     write_atomically(path, text.as_bytes())
 }
 

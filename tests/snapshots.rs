@@ -16,6 +16,12 @@ use std::time::{Duration, Instant};
 
 use egui_kittest::{Harness, SnapshotOptions};
 use grainscope::app::GrainscopeApp;
+use grainscope::app::platform::native::NativePlatform;
+
+/// A window on the desktop platform that keeps no session.
+fn new_app() -> GrainscopeApp {
+    GrainscopeApp::new(egui::Context::default(), Box::new(NativePlatform::new(None)))
+}
 use grainscope::scene::{SCENES, SceneParams};
 
 /// How long one scene may take to compute before the test gives up.
@@ -26,7 +32,7 @@ const PATIENCE: Duration = Duration::from_secs(240);
 /// skipped with a message, except in CI (`CI` set), where it must run.
 fn harness(w: f32, h: f32) -> Option<Harness<'static, GrainscopeApp>> {
     let build = || {
-        let app = GrainscopeApp::new(egui::Context::default(), None);
+        let app = new_app();
         Harness::builder()
             .with_size(egui::vec2(w, h))
             .wgpu()
@@ -79,10 +85,10 @@ fn check(
 ) -> Result<(), String> {
     {
         let app = h.state_mut();
-        app.session.scene = id.to_string();
-        app.session.params.insert(id.to_string(), snapshot_params(id));
-        app.session.lecture = lecture;
-        app.session.light = light;
+        app.state.session.scene = id.to_string();
+        app.state.session.params.insert(id.to_string(), snapshot_params(id));
+        app.state.session.lecture = lecture;
+        app.state.session.light = light;
     }
     settle(h, name);
     h.try_snapshot_options(name, &SnapshotOptions::default()).map_err(|e| format!("{name}: {e}"))

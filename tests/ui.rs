@@ -4,13 +4,20 @@ use egui::accesskit::Role;
 use egui_kittest::Harness;
 use egui_kittest::kittest::Queryable;
 use grainscope::app::GrainscopeApp;
+use grainscope::app::command::Command;
+use grainscope::app::platform::native::NativePlatform;
+
+/// A window on the desktop platform that keeps no session.
+fn new_app() -> GrainscopeApp {
+    GrainscopeApp::new(egui::Context::default(), Box::new(NativePlatform::new(None)))
+}
 
 fn harness() -> Harness<'static, GrainscopeApp> {
     harness_sized(1400.0, 1400.0)
 }
 
 fn harness_sized(w: f32, h: f32) -> Harness<'static, GrainscopeApp> {
-    let app = GrainscopeApp::new(egui::Context::default(), None);
+    let app = new_app();
     Harness::builder().with_size(egui::vec2(w, h)).build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app)
 }
 
@@ -64,10 +71,22 @@ fn switching_scene_and_pinning_keeps_the_app_alive() {
     assert!(h.query_all_by_label_contains("Regime of this aggregate collision").next().is_some());
     h.get_by_label("Pin curves").click();
     h.run();
-    assert_eq!(h.state().session.pins.len(), 1);
+    assert_eq!(h.state().state.session.pins.len(), 1);
     h.get_by_role_and_label(Role::Slider, "monomer radius r₀").set_value_accesskit(1.0);
     h.run();
     assert!(h.query_all_by_label_contains("pinned: monomer radius r₀").next().is_some());
+}
+
+/// Imports measurements from a typed path, as the "Load data" button does.
+fn import(app: &mut GrainscopeApp, path: &std::path::Path) {
+    use grainscope::app::command::Field;
+    app.apply(Command::SetText(Field::DataPath, path.display().to_string()));
+    app.apply(Command::LoadDataPath);
+}
+
+/// The notice of a refused control value: (key, why).
+fn control_notice(h: &Harness<'static, GrainscopeApp>) -> Option<(String, String)> {
+    h.state().state.control_notice.clone()
 }
 
 #[test]
@@ -77,11 +96,13 @@ fn importing_measurements_opens_the_fit_scene_and_bad_files_change_nothing() {
     std::fs::write(&good, "velocity [m/s],restitution\n5,0.7\n10,0.75\n20,0.77\n").expect("write");
     let bad = dir.path().join("bad.csv");
     std::fs::write(&bad, "velocity [m/s],restitution\n5,0.7\n-10,0.75\n").expect("write");
-    let mut app = GrainscopeApp::new(egui::Context::default(), None);
-    let before = app.session.clone();
-    app.import_data(&bad);
-    assert_eq!(app.session, before, "a rejected file changed the session");
-    app.import_data(&good);
+    let mut app = new_app();
+    let before = app.state.session.clone();
+    import(&mut app, &bad);
+    let mut after = app.state.session.clone();
+    after.data_path = before.data_path.clone();
+    assert_eq!(after, before, "a rejected file changed the session");
+    import(&mut app, &good);
     assert_eq!(app.params().info().id, "fit");
     match app.params() {
         grainscope::scene::SceneParams::Fit(p) => assert_eq!(p.data.len(), 3),
@@ -134,7 +155,7 @@ fn a_typed_value_outside_its_range_is_refused_with_a_notice() {
     for typed in ["1e300", "-1", "nan", "abc"] {
         type_into_slider(&mut h, "impact velocity v", typed);
         assert_eq!(velocity(&h), before, "'{typed}' changed the parameters");
-        let (key, message) = h.state().control_notice().expect("a notice");
+        let (key, message) = control_notice(&h).expect("a notice");
         assert_eq!(key, "velocity");
         assert!(message.contains(typed) && message.contains("kept 8"), "{message}");
         assert!(message.contains("1e-3 … 1000 m/s"), "{message}");
@@ -142,7 +163,7 @@ fn a_typed_value_outside_its_range_is_refused_with_a_notice() {
     }
     // A valid value is taken and clears the notice.
     type_into_slider(&mut h, "impact velocity v", "4");
-    assert!(h.state().control_notice().is_none());
+    assert!(control_notice(&h).is_none());
     let e = h.state().output().and_then(|o| o.scalar("e")).expect("e");
     assert!((e - 0.222).abs() < 0.002, "{e}");
 }
@@ -152,10 +173,10 @@ fn a_long_status_message_wraps_inside_the_window() {
     let width = 800.0;
     let mut h = Harness::builder()
         .with_size(egui::vec2(width, 700.0))
-        .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), GrainscopeApp::new(egui::Context::default(), None));
+        .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), new_app());
     h.run();
     let long = format!("preset not loaded: {}", "a very long path segment/".repeat(20));
-    h.state_mut().import_data(std::path::Path::new(&long));
+    import(h.state_mut(), std::path::Path::new(&long));
     h.run();
     let node = h.get_by_label_contains("a very long path segment");
     assert!(node.rect().max.x <= width + 0.5, "the message runs off the window: {:?}", node.rect());
@@ -167,19 +188,21 @@ fn an_unreadable_session_file_starts_clean_and_is_kept() {
     let dir = tempfile::tempdir().expect("tempdir");
     let path = dir.path().join("session.ron");
     std::fs::write(&path, "(scene: \"rocking\", params: {\"rocking\": Rocking((q: ").expect("write");
-    let mut app = GrainscopeApp::new(egui::Context::default(), None);
-    app.open_session(path.clone(), None);
-    assert_eq!(app.session, grainscope::app::Session::default());
-    assert_eq!(app.notices().len(), 1, "{:?}", app.notices());
-    assert!(app.notices()[0].contains("kept as"), "{:?}", app.notices());
+    let on_disk = || Box::new(NativePlatform::new(Some(path.clone())));
+    let mut app = GrainscopeApp::new(egui::Context::default(), on_disk());
+    app.restore_session();
+    assert_eq!(app.state.session, grainscope::app::Session::default());
+    let notices = &app.state.notices;
+    assert_eq!(notices.len(), 1, "{notices:?}");
+    assert!(notices[0].contains("kept as"), "{notices:?}");
     assert!(!path.exists());
     // Saving writes a fresh, readable session next to the kept file.
-    app.session.scene = "rocking".into();
+    app.state.session.scene = "rocking".into();
     app.save_session();
-    let mut again = GrainscopeApp::new(egui::Context::default(), None);
-    again.open_session(path.clone(), None);
-    assert_eq!(again.session.scene, "rocking");
-    assert!(again.notices().is_empty());
+    let mut again = GrainscopeApp::new(egui::Context::default(), on_disk());
+    again.restore_session();
+    assert_eq!(again.state.session.scene, "rocking");
+    assert!(again.state.notices.is_empty());
     assert_eq!(std::fs::read_dir(dir.path()).expect("dir").count(), 2);
 }
 
@@ -209,17 +232,17 @@ fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions(
     // and leaving it unedited keeps the value.
     {
         let app = h.state_mut();
-        let id = app.session.scene.clone();
-        let p = app.session.params.get_mut(&id).expect("params");
+        let id = app.state.session.scene.clone();
+        let p = app.state.session.params.get_mut(&id).expect("params");
         p.set("radius", "1.2345e-7").expect("valid");
     }
     h.run();
     type_into_slider(&mut h, "monomer radius r₀", "");
     assert_eq!(monomer_radius(&h), 1.2345e-7);
-    assert!(h.state().control_notice().is_none());
+    assert!(control_notice(&h).is_none());
     // The lower end of the range, typed in display units (0.01 µm = 1e-8 m).
     type_into_slider(&mut h, "monomer radius r₀", "0.01");
-    assert!(h.state().control_notice().is_none(), "{:?}", h.state().control_notice());
+    assert!(control_notice(&h).is_none(), "{:?}", control_notice(&h));
     assert!((monomer_radius(&h) / 1e-8 - 1.0).abs() < 1e-12, "{}", monomer_radius(&h));
     // A whole-number field refuses a fraction instead of rounding it.
     open_scene(&mut h, "Restitution");
@@ -227,7 +250,7 @@ fn value_fields_take_their_range_ends_keep_unedited_values_and_refuse_fractions(
     let before = h.state().params().clone();
     type_into_slider(&mut h, "velocities", "2.5");
     assert_eq!(h.state().params(), &before);
-    let (key, message) = h.state().control_notice().expect("a notice");
+    let (key, message) = control_notice(&h).expect("a notice");
     assert_eq!(key, "n_velocities");
     assert!(message.contains("2.5 is not a whole number"), "{message}");
 }
@@ -245,7 +268,7 @@ fn every_scene_shows_its_first_parameter_without_scrolling_at_projector_and_desk
         h.run_steps(2);
         let mut seen = std::collections::BTreeSet::new();
         for _ in 0..grainscope::scene::SCENES.len() {
-            let scene = h.state().session.scene.clone();
+            let scene = h.state().state.session.scene.clone();
             seen.insert(scene.clone());
             let label = first_control(&h);
             let node = h.query_all_by_label_contains(&label).next();
@@ -270,7 +293,7 @@ fn lecture_mode_gives_the_plots_most_of_a_projector_screen() {
     let outside = h.state().plot_area().expect("plots").area();
     h.get_by_label("Lecture mode").click();
     h.run_steps(3);
-    assert!(h.state().session.lecture);
+    assert!(h.state().state.session.lecture);
     let area = h.state().plot_area().expect("plots");
     let share = area.area() / (w * ht);
     assert!(share >= 0.8, "plots cover {:.0} % of the window in lecture mode", 100.0 * share);
@@ -282,7 +305,7 @@ fn lecture_mode_gives_the_plots_most_of_a_projector_screen() {
     // Escape leaves lecture mode.
     h.key_press(egui::Key::Escape);
     h.run_steps(2);
-    assert!(!h.state().session.lecture);
+    assert!(!h.state().state.session.lecture);
 }
 
 #[test]
@@ -292,8 +315,8 @@ fn switching_scenes_and_themes_never_panics() {
     for k in 0..grainscope::scene::SCENES.len() {
         {
             let app = h.state_mut();
-            app.session.light = k % 2 == 0;
-            app.session.lecture = k % 3 == 0;
+            app.state.session.light = k % 2 == 0;
+            app.state.session.lecture = k % 3 == 0;
         }
         h.run_steps(2);
         h.key_press(egui::Key::PageDown);
@@ -337,11 +360,11 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     let deck = grainscope::deck::Deck::from_ron(DECK, "test", None).expect("deck");
     let mut h = harness_sized(1024.0, 768.0);
     settle(&mut h);
-    h.state_mut().present(deck, 0);
+    h.state_mut().apply(Command::Present(Box::new(deck), 0));
     settle(&mut h);
     assert_eq!(scene_id(&h), "hysteresis");
     assert_eq!(velocity(&h), 4.0);
-    assert!(h.state().session.lecture, "presenting uses the lecture look");
+    assert!(h.state().state.session.lecture, "presenting uses the lecture look");
     h.get_by_label_contains("Slow ice");
     // The highlighted control is at hand beside the plots, and live.
     h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(6.0);
@@ -363,10 +386,10 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     assert_eq!(scene_id(&h), "restitution");
     h.key_press(egui::Key::End);
     settle(&mut h);
-    assert_eq!(h.state().presenting().map(|p| p.index), Some(2));
+    assert_eq!(h.state().state.presenter.as_ref().map(|p| p.index), Some(2));
     h.key_press(egui::Key::ArrowRight);
     settle(&mut h);
-    assert_eq!(h.state().presenting().map(|p| p.index), Some(2), "stays at the last slide");
+    assert_eq!(h.state().state.presenter.as_ref().map(|p| p.index), Some(2), "stays at the last slide");
     assert!(h.query_by_label_contains("Notes of the third slide").is_none());
     h.key_press(egui::Key::N);
     settle(&mut h);
@@ -380,8 +403,8 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     assert!(h.query_by_label("last slide").is_none());
     h.key_press(egui::Key::Escape);
     settle(&mut h);
-    assert!(h.state().presenting().is_none());
-    assert!(!h.state().session.lecture, "leaving restores the look from before");
+    assert!(h.state().state.presenter.as_ref().is_none());
+    assert!(!h.state().state.session.lecture, "leaving restores the look from before");
 }
 
 /// A slider drag is one undo step: Ctrl+Z restores the value from before
@@ -418,23 +441,23 @@ fn play_advances_the_time_cursor_and_pause_stops_it() {
     let mut h = harness();
     h.run();
     let before = h.state().output().map(|o| o as *const _);
-    let t0 = h.state().time().expect("the collision has a time cursor");
+    let t0 = h.state().state.time().expect("the collision has a time cursor");
     h.key_press(egui::Key::Space);
     h.run_steps(3);
     h.get_by_label("❚❚ Pause");
-    assert!(h.state().playing());
-    let t1 = h.state().time().expect("time");
+    assert!(h.state().state.playback.playing);
+    let t1 = h.state().state.time().expect("time");
     assert!(t1 > t0, "{t0} → {t1}");
     assert_eq!(before, h.state().output().map(|o| o as *const _), "playing never recomputes");
     h.get_by_label("❚❚ Pause").click();
     h.run_steps(3);
-    let t2 = h.state().time().expect("time");
+    let t2 = h.state().state.time().expect("time");
     h.run_steps(10);
-    assert!(!h.state().playing());
-    assert_eq!(h.state().time(), Some(t2));
+    assert!(!h.state().state.playback.playing);
+    assert_eq!(h.state().state.time(), Some(t2));
     h.key_press(egui::Key::Period);
     h.run();
-    assert!((h.state().time().expect("time") - (t2 + 0.01)).abs() < 1e-9);
+    assert!((h.state().state.time().expect("time") - (t2 + 0.01)).abs() < 1e-9);
     h.key_press(egui::Key::F1);
     h.run();
     h.get_by_label("Keyboard shortcuts");
@@ -450,7 +473,7 @@ fn an_exported_figure_reopens_its_state() {
     h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(3.0);
     h.run();
     let exported = h.state().params().clone();
-    h.state_mut().session.export_dir = dir.path().display().to_string();
+    h.state_mut().state.session.export_dir = dir.path().display().to_string();
     h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::E);
     h.run();
     // The files are written on a thread of their own.
@@ -465,12 +488,12 @@ fn an_exported_figure_reopens_its_state() {
     assert!(png.exists(), "{}", h.state().status());
     h.get_by_role_and_label(Role::Slider, "impact velocity v").set_value_accesskit(5.0);
     h.run();
-    h.state_mut().open_file(&png);
+    h.state_mut().apply(Command::OpenPath(png.display().to_string()));
     h.run();
     assert_eq!(h.state().params(), &exported);
     let plain = dir.path().join("plain.png");
     std::fs::write(&plain, b"not a png").expect("write");
-    h.state_mut().open_file(&plain);
+    h.state_mut().apply(Command::OpenPath(plain.display().to_string()));
     h.run();
     assert_eq!(h.state().params(), &exported, "a file without state changes nothing");
 }
@@ -521,7 +544,7 @@ fn clicking_a_map_cell_inspects_it_and_opens_the_collision() {
     h.run_steps(2);
     h.drop_at(at);
     h.run_steps(3);
-    let card = h.state().inspection().cloned().expect("the click opens a card");
+    let card = h.state().state.inspection().cloned().expect("the click opens a card");
     assert!(card.point[0] < 2.2 && card.point[1] < 2.2, "a lower-left cell: {}", card.title);
     let dv: f64 = card
         .rows

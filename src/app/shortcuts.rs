@@ -30,52 +30,7 @@ impl Mode {
     }
 }
 
-/// What a shortcut does.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Action {
-    /// Show or hide the list of shortcuts.
-    Help,
-    /// Undo the last parameter change.
-    Undo,
-    /// Redo what was undone.
-    Redo,
-    /// Play or pause the scene's history.
-    PlayPause,
-    /// Move the time cursor one step forward.
-    StepForward,
-    /// Move the time cursor one step back.
-    StepBack,
-    /// Put the time cursor at the start of the history.
-    Rewind,
-    /// Next scene in the navigator.
-    NextScene,
-    /// Previous scene in the navigator.
-    PreviousScene,
-    /// Lecture mode on or off.
-    ToggleLecture,
-    /// Leave lecture mode, presenter mode or the help overlay.
-    Leave,
-    /// Reset the open scene's parameters to their defaults.
-    ResetScene,
-    /// Export the open scene's figures (PNG, SVG, CSV) to the export folder.
-    Export,
-    /// Next slide.
-    NextSlide,
-    /// Previous slide.
-    PreviousSlide,
-    /// First slide.
-    FirstSlide,
-    /// Last slide.
-    LastSlide,
-    /// Slide n (1–9).
-    Slide(usize),
-    /// Speaker notes on or off.
-    ToggleNotes,
-    /// Speaker notes in a window of their own on or off.
-    NotesWindow,
-    /// Restore the slide as the deck defines it.
-    ResetSlide,
-}
+pub use super::command::Action;
 
 /// A key with the modifiers it needs (none when both are false).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

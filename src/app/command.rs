@@ -1,0 +1,210 @@
+//! Every user action as one value. Menus, buttons, keys, the presenter's
+//! clicker, dropped files, dialog answers and deck steps all become a
+//! [`Command`], applied in one place ([`super::state::AppState::apply`]).
+//! The keyboard table ([`super::shortcuts::SHORTCUTS`]) maps keys to the
+//! commands of [`Action`], so the help lists exactly what exists.
+
+use super::platform::{FileKind, Picked};
+use crate::deck::{Deck, LoadedDeck};
+use crate::figure::{Figure, View};
+use crate::preset::Preset;
+use crate::scene::SceneParams;
+use std::collections::HashMap;
+
+/// What a key (or its button) asks for: the commands the keyboard reaches.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Action {
+    /// Show or hide the list of shortcuts.
+    Help,
+    /// Undo the last parameter change.
+    Undo,
+    /// Redo what was undone.
+    Redo,
+    /// Play or pause the scene's history.
+    PlayPause,
+    /// Move the time cursor one step forward.
+    StepForward,
+    /// Move the time cursor one step back.
+    StepBack,
+    /// Put the time cursor at the start of the history.
+    Rewind,
+    /// Next scene in the navigator.
+    NextScene,
+    /// Previous scene in the navigator.
+    PreviousScene,
+    /// Lecture mode on or off.
+    ToggleLecture,
+    /// Leave lecture mode, presenter mode or the help overlay.
+    Leave,
+    /// Reset the open scene's parameters to their defaults.
+    ResetScene,
+    /// Export the open scene's figures (PNG, SVG, CSV) to the export folder.
+    Export,
+    /// Next slide.
+    NextSlide,
+    /// Previous slide.
+    PreviousSlide,
+    /// First slide.
+    FirstSlide,
+    /// Last slide.
+    LastSlide,
+    /// Slide n (1–9).
+    Slide(usize),
+    /// Speaker notes on or off.
+    ToggleNotes,
+    /// Speaker notes in a window of their own on or off.
+    NotesWindow,
+    /// Restore the slide as the deck defines it.
+    ResetSlide,
+}
+
+/// A text field of the window whose content is kept in the session.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Field {
+    /// The preset path for Load and Save.
+    PresetPath,
+    /// The measurements path for Load data.
+    DataPath,
+    /// The folder quick exports go to.
+    ExportDir,
+    /// The deck editor's file.
+    DeckPath,
+}
+
+/// A change to the deck being built.
+#[derive(Debug, Clone, PartialEq)]
+pub enum DeckEdit {
+    /// Open or close the editor.
+    Open(bool),
+    /// The deck's title and slides as edited in place (titles, notes).
+    Replace(Box<Deck>),
+    /// Swap two slides.
+    Swap(usize, usize),
+    /// Remove a slide.
+    Remove(usize),
+    /// Append the window's current state as a slide.
+    AddCurrent,
+    /// Present the deck from a slide.
+    Present(usize),
+    /// Save it to the deck file.
+    Save,
+    /// Open the deck file into the editor.
+    Open,
+    /// Open a shipped deck into the editor.
+    Shipped(&'static str),
+}
+
+/// Every user action.
+#[derive(Debug, Clone)]
+pub enum Command {
+    /// A keyboard action (or the button that does the same).
+    Act(Action),
+    /// Open scene `i` of [`crate::scene::SCENES`].
+    OpenScene(usize),
+    /// The open scene's parameters as edited in its controls.
+    SetParams(Box<SceneParams>),
+    /// A value typed into control `key` was refused (why).
+    Refuse {
+        /// The control.
+        key: String,
+        /// The message shown under it.
+        message: String,
+    },
+    /// Control `key` took a valid value: its refusal notice goes.
+    Accept(String),
+    /// Open `params`'s scene with those parameters (from a card or link).
+    OpenParams(Box<SceneParams>, String),
+    /// Switch to a preset (shipped or read), naming where it came from.
+    ApplyPreset(Box<Preset>, String),
+    /// Present a deck from slide `at`.
+    Present(Box<LoadedDeck>, usize),
+    /// Go to slide `i` of the deck presented.
+    GoToSlide(usize),
+    /// Leave presenter mode.
+    StopPresenting,
+    /// Open a file given as bytes (dropped, picked, or read from a typed path).
+    OpenBytes(Picked),
+    /// Open the file at a path the user typed (or dropped, where drops are paths).
+    OpenPath(String),
+    /// Import measurements from the data path.
+    LoadDataPath,
+    /// Ask the platform for a file to open.
+    Pick(FileKind),
+    /// Save the open scene as a preset at the preset path.
+    SavePresetPath,
+    /// Save the open scene as a preset where the user chooses.
+    SavePresetAs,
+    /// Clear the open scene's measurements.
+    ClearData,
+    /// Export one figure as drawn into the export folder (png, svg or csv).
+    ExportFigure(Box<Figure>, &'static str),
+    /// Export one figure as drawn where the user chooses.
+    SaveFigureAs(Box<Figure>),
+    /// Write the played history as a movie into the export folder.
+    Movie,
+    /// Keep the open scene's model curves for comparison.
+    Pin,
+    /// Remove the open scene's pins.
+    ClearPins,
+    /// The family tool's settings.
+    SetSweep(Sweep),
+    /// Draw a family over the sweep's values.
+    DrawFamily,
+    /// Reset every scene's parameters.
+    ResetAll,
+    /// Light theme on or off.
+    SetLight(bool),
+    /// Lecture mode on or off.
+    SetLecture(bool),
+    /// The parameter panel over the plots in lecture mode on or off.
+    SetLectureParams(bool),
+    /// The shortcut list on or off.
+    SetHelp(bool),
+    /// A text field's new content.
+    SetText(Field, String),
+    /// The time cursor at a fraction of the history.
+    SetTime(f64),
+    /// Playback paused (by a step, a scrub or a button).
+    StopPlaying,
+    /// Playback speed.
+    SetSpeed(f64),
+    /// Playback loops or not.
+    SetLooping(bool),
+    /// Advance a playing history by a frame's seconds.
+    Tick(f64),
+    /// Keep every plot's range (the views) or follow the data (none).
+    LockAxes(Option<HashMap<String, View>>),
+    /// Inspect a point of a figure: (figure id, point in axis units, where on the screen).
+    Inspect(String, [f64; 2], [f32; 2]),
+    /// Close the inspection card.
+    CloseInspection,
+    /// Dismiss notice `i`.
+    Dismiss(usize),
+    /// The deck editor.
+    Deck(DeckEdit),
+    /// Close the speaker notes' own window.
+    CloseNotesWindow,
+    /// Pause or resume the running computation.
+    PauseJob(bool),
+    /// Cancel the running computation.
+    CancelJob,
+}
+
+/// Settings of the family tool: one curve set per value of `key`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Sweep {
+    /// The parameter swept.
+    pub key: String,
+    /// First value (SI).
+    pub from: f64,
+    /// Last value (SI).
+    pub to: f64,
+    /// Number of values (2–12).
+    pub steps: usize,
+}
+
+impl Default for Sweep {
+    fn default() -> Self {
+        Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 }
+    }
+}

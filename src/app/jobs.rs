@@ -1,0 +1,412 @@
+//! Background work: every job the window starts (a scene's computation with
+//! its coarse preview, a family sweep, rendering an export or a movie) is a
+//! value of [`Job`], and [`run`] does it, knowing nothing of threads. A
+//! [`Runner`] decides where jobs run: [`ThreadRunner`] on native threads; a
+//! browser runs the same values in a Web Worker of the same code. Each job
+//! belongs to a [`Lane`]; a new job on a lane cancels the one running there,
+//! and the generation number of every result drops one that is stale.
+
+use crate::figure::{self, Figure, Series, Style};
+use crate::preset::Preset;
+use crate::provenance::Stamp;
+use crate::scene::{self, Caches, Progress, SceneError, SceneOutput, SceneParams};
+use crate::session::Pin;
+use std::sync::mpsc::{Receiver, Sender, channel};
+use std::sync::{Arc, Mutex};
+
+/// Where a job runs beside others: one job at a time per lane.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Lane {
+    /// The open scene's result, or a family sweep: the newest wins.
+    Compute,
+    /// Figures rendered for an export: the newest wins.
+    Export,
+    /// A history rendered as a movie: the newest wins.
+    Movie,
+}
+
+/// A piece of work, as plain data.
+#[derive(Debug, Clone)]
+pub enum Job {
+    /// Scene `scene`'s result for `params`; `coarse`, when given, is
+    /// computed beside it as a preview shown until the full result lands.
+    Scene {
+        /// Index of the scene in [`scene::SCENES`].
+        scene: usize,
+        /// The parameters.
+        params: Box<SceneParams>,
+        /// Coarse parameters for a quick preview.
+        coarse: Option<Box<SceneParams>>,
+    },
+    /// One model curve set per value of parameter `key`, pinned as a family.
+    Sweep {
+        /// The parameters the sweep starts from.
+        base: Box<SceneParams>,
+        /// The parameter swept.
+        key: String,
+        /// Its values (SI units).
+        values: Vec<f64>,
+        /// Palette index of the first pin.
+        first_color: usize,
+    },
+    /// Figures rendered as PNG, SVG and CSV files carrying the state.
+    Export {
+        /// The figures as drawn.
+        figures: Vec<Figure>,
+        /// The state the files carry.
+        stamp: Box<Stamp>,
+        /// Prefix of every file name.
+        prefix: String,
+    },
+    /// A played history as frames and an animated PNG per figure.
+    Movie {
+        /// The scene's state.
+        preset: Box<Preset>,
+        /// Frames per figure.
+        frames: usize,
+    },
+}
+
+impl Job {
+    /// The lane the job runs on.
+    pub fn lane(&self) -> Lane {
+        match self {
+            Job::Scene { .. } | Job::Sweep { .. } => Lane::Compute,
+            Job::Export { .. } => Lane::Export,
+            Job::Movie { .. } => Lane::Movie,
+        }
+    }
+}
+
+/// What a finished job produced.
+#[derive(Debug)]
+pub enum Done {
+    /// A scene's result.
+    Scene(usize, SceneOutput),
+    /// A sweep's pins.
+    Sweep(Vec<Pin>),
+    /// Files to write: what they are ("export", "movie"), and (name, bytes).
+    Files(&'static str, Vec<(String, Vec<u8>)>),
+}
+
+/// Why a job gave no result.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum JobError {
+    /// It was cancelled (nothing to report).
+    #[error("cancelled")]
+    Cancelled,
+    /// It failed: why.
+    #[error("{0}")]
+    Failed(String),
+}
+
+impl From<SceneError> for JobError {
+    fn from(e: SceneError) -> Self {
+        match e {
+            SceneError::Cancelled => JobError::Cancelled,
+            e => JobError::Failed(e.to_string()),
+        }
+    }
+}
+
+/// A job's result with where it came from.
+#[derive(Debug)]
+pub struct Finished {
+    /// The lane it ran on.
+    pub lane: Lane,
+    /// Its result; a cancelled job reports nothing.
+    pub result: Result<Done, JobError>,
+}
+
+/// Does `job`, reporting to `progress`; scene results come from and go to
+/// `caches`. The same function runs wherever a runner runs it.
+pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done, JobError> {
+    match job {
+        Job::Scene { scene, params, .. } => {
+            let mut c = caches.lock().map_err(|_| JobError::Cancelled)?;
+            Ok(Done::Scene(scene, scene::compute_cached(&params, progress, &mut c)?))
+        }
+        Job::Sweep { base, key, values, first_color } => {
+            let mut pins = Vec::new();
+            for (j, v) in values.iter().enumerate() {
+                progress.check()?;
+                progress.set(j as f64 / values.len() as f64);
+                let mut p = (*base).clone();
+                p.set(&key, &v.to_string())?;
+                let out = scene::compute(&p, &Progress::default())?;
+                let curves = line_curves(&out).into_iter().map(|(id, s)| (id, s.at(*v))).collect();
+                pins.push(Pin {
+                    params: p,
+                    label: format!("{key} = {}", figure::tick_label(*v)),
+                    curves,
+                    color: first_color + j,
+                });
+            }
+            Ok(Done::Sweep(pins))
+        }
+        Job::Export { figures, stamp, prefix } => {
+            let mut files = Vec::new();
+            for (k, fig) in figures.iter().enumerate() {
+                for ext in ["png", "svg", "csv"] {
+                    progress.check()?;
+                    let bytes = crate::provenance::figure_bytes(fig, ext, figure::EXPORT_SIZE, Some(&stamp))
+                        .map_err(|e| JobError::Failed(format!("{e:#}")))?;
+                    files.push((format!("{prefix}{}.{ext}", fig.id), bytes));
+                }
+                progress.set((k + 1) as f64 / figures.len().max(1) as f64);
+            }
+            Ok(Done::Files("export", files))
+        }
+        Job::Movie { preset, frames } => {
+            let files = crate::handout::movie_files(&preset, frames, None, true, 12, &|| progress.cancelled())
+                .map_err(|e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) })?;
+            Ok(Done::Files("movie", files))
+        }
+    }
+}
+
+/// The line series of every figure of `out`, by figure id (what a pin keeps).
+pub fn line_curves(out: &SceneOutput) -> Vec<(String, Series)> {
+    out.figures
+        .iter()
+        .flat_map(|f| f.series.iter().filter(|s| s.style == Style::Line).map(move |s| (f.id.clone(), s.clone())))
+        .collect()
+}
+
+/// Runs jobs somewhere other than the window's frame.
+pub trait Runner {
+    /// Starts `job` on its lane, cancelling the job running there.
+    fn submit(&mut self, job: Job);
+    /// Cancels the job on `lane`, if any.
+    fn cancel(&mut self, lane: Lane);
+    /// Whether a job runs on `lane`.
+    fn busy(&self, lane: Lane) -> bool;
+    /// The fraction done of the job on `lane`.
+    fn progress(&self, lane: Lane) -> f64;
+    /// Pauses or resumes the job on `lane` (jobs that do not honour pauses run on).
+    fn set_paused(&self, lane: Lane, paused: bool);
+    /// Whether the job on `lane` is paused.
+    fn paused(&self, lane: Lane) -> bool;
+    /// The newest intermediate result the job on `lane` offered.
+    fn partial(&self, lane: Lane) -> Option<Arc<SceneOutput>>;
+    /// Results of the newest jobs that finished since the last call; stale
+    /// and cancelled ones are dropped.
+    fn poll(&mut self) -> Vec<Finished>;
+    /// Computes a cheap scene at once, sharing the runner's caches.
+    fn compute_now(&self, params: &SceneParams) -> Result<SceneOutput, SceneError>;
+}
+
+/// The job running on a lane.
+struct Running {
+    generation: u64,
+    progress: Progress,
+}
+
+/// Set once a job's full result is in, so that its preview is not shown.
+type Flag = Arc<std::sync::atomic::AtomicBool>;
+
+/// A runner on native threads: a thread per job, a one-thread pool of its
+/// own for previews (so that they do not queue behind the full run's
+/// parallel work), and one set of caches shared by all.
+pub struct ThreadRunner {
+    caches: Arc<Mutex<Caches>>,
+    done: (Sender<(Lane, u64, Result<Done, JobError>)>, Receiver<(Lane, u64, Result<Done, JobError>)>),
+    generation: u64,
+    running: Vec<(Lane, Running)>,
+    repaint: Arc<dyn Fn() + Send + Sync>,
+}
+
+impl ThreadRunner {
+    /// A runner that calls `repaint` whenever a result is ready.
+    pub fn new(repaint: impl Fn() + Send + Sync + 'static) -> Self {
+        ThreadRunner {
+            caches: Arc::new(Mutex::new(Caches::default())),
+            done: channel(),
+            generation: 0,
+            running: Vec::new(),
+            repaint: Arc::new(repaint),
+        }
+    }
+
+    fn running(&self, lane: Lane) -> Option<&Running> {
+        self.running.iter().find(|(l, _)| *l == lane).map(|(_, r)| r)
+    }
+}
+
+impl Runner for ThreadRunner {
+    fn submit(&mut self, job: Job) {
+        let lane = job.lane();
+        self.cancel(lane);
+        self.generation += 1;
+        let generation = self.generation;
+        let progress = Progress::default();
+        self.running.push((lane, Running { generation, progress: progress.clone() }));
+        let finished = Flag::default();
+        if let Job::Scene { coarse: Some(c), .. } = &job {
+            // A coarse preview beside the full run, shown until the full
+            // result arrives (and never, if the full one is cached).
+            let (c, progress, finished) = ((**c).clone(), progress.clone(), Arc::clone(&finished));
+            let _ = std::thread::Builder::new()
+                .name("grainscope-preview".into())
+                .spawn(move || preview(&c, &progress, &finished));
+        }
+        let (tx, caches, repaint) = (self.done.0.clone(), Arc::clone(&self.caches), Arc::clone(&self.repaint));
+        let started = std::thread::Builder::new().name("grainscope-job".into()).spawn(move || {
+            let result = run(job, &progress, &caches);
+            finished.store(true, std::sync::atomic::Ordering::Relaxed);
+            let _ = tx.send((lane, generation, result));
+            repaint();
+        });
+        if started.is_err() {
+            // No thread: the job is dropped and the lane reports an error.
+            let _ = self.done.0.send((lane, generation, Err(JobError::Failed("no thread to run the job on".into()))));
+        }
+    }
+
+    fn cancel(&mut self, lane: Lane) {
+        self.running.retain(|(l, r)| {
+            if *l == lane {
+                r.progress.cancel();
+            }
+            *l != lane
+        });
+    }
+
+    fn busy(&self, lane: Lane) -> bool {
+        self.running(lane).is_some()
+    }
+
+    fn progress(&self, lane: Lane) -> f64 {
+        self.running(lane).map_or(0.0, |r| r.progress.fraction())
+    }
+
+    fn set_paused(&self, lane: Lane, paused: bool) {
+        if let Some(r) = self.running(lane) {
+            r.progress.set_paused(paused);
+        }
+    }
+
+    fn paused(&self, lane: Lane) -> bool {
+        self.running(lane).is_some_and(|r| r.progress.paused())
+    }
+
+    fn partial(&self, lane: Lane) -> Option<Arc<SceneOutput>> {
+        self.running(lane).and_then(|r| r.progress.partial())
+    }
+
+    fn poll(&mut self) -> Vec<Finished> {
+        let mut out = Vec::new();
+        while let Ok((lane, generation, result)) = self.done.1.try_recv() {
+            let current = self.running(lane).is_some_and(|r| r.generation == generation);
+            if !current {
+                continue;
+            }
+            self.running.retain(|(l, _)| *l != lane);
+            if !matches!(result, Err(JobError::Cancelled)) {
+                out.push(Finished { lane, result });
+            }
+        }
+        out
+    }
+
+    fn compute_now(&self, params: &SceneParams) -> Result<SceneOutput, SceneError> {
+        match self.caches.lock() {
+            Ok(mut c) => scene::compute_cached(params, &Progress::default(), &mut c),
+            Err(_) => scene::compute(params, &Progress::default()),
+        }
+    }
+}
+
+/// Computes the coarse parameters `c` of a heavy scene and offers the result
+/// for display, unless the full result came first or the job was cancelled.
+fn preview(c: &SceneParams, progress: &Progress, finished: &std::sync::atomic::AtomicBool) {
+    let compute = || scene::compute(c, &progress.quiet_child());
+    let result = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
+        Ok(pool) => pool.install(compute),
+        Err(_) => compute(),
+    };
+    if let Ok(mut out) = result {
+        if finished.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
+            return;
+        }
+        out.notes.insert(0, "preview at low resolution; the full result follows".into());
+        // Only while nothing newer was offered (a live view of the full run).
+        if progress.partial().is_none() {
+            progress.publish(out);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::time::{Duration, Instant};
+
+    fn wait(r: &mut ThreadRunner) -> Vec<Finished> {
+        let start = Instant::now();
+        loop {
+            let got = r.poll();
+            if !got.is_empty() || start.elapsed() > Duration::from_secs(60) {
+                return got;
+            }
+            std::thread::sleep(Duration::from_millis(2));
+        }
+    }
+
+    fn scene_job(velocity: f64) -> Job {
+        let mut p = SceneParams::default_for("hysteresis").expect("scene");
+        p.set("velocity", &velocity.to_string()).expect("valid");
+        Job::Scene { scene: 0, params: Box::new(p), coarse: None }
+    }
+
+    /// A newer job on a lane wins: the older one's result never lands.
+    #[test]
+    fn the_newest_job_on_a_lane_wins() {
+        let mut r = ThreadRunner::new(|| {});
+        r.submit(scene_job(2.0));
+        r.submit(scene_job(4.0));
+        let got = wait(&mut r);
+        assert_eq!(got.len(), 1);
+        match &got[0].result {
+            Ok(Done::Scene(_, out)) => {
+                let e = out.scalar("e").expect("e");
+                assert!((e - 0.222).abs() < 0.002, "the 4 m/s result, e = {e}");
+            }
+            other => panic!("{other:?}"),
+        }
+        assert!(!r.busy(Lane::Compute));
+        // A stale result that arrives late is dropped too.
+        assert!(r.poll().is_empty());
+    }
+
+    /// A cancelled sweep reports nothing and frees its lane.
+    #[test]
+    fn a_cancelled_job_reports_nothing() {
+        let mut r = ThreadRunner::new(|| {});
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        r.submit(Job::Sweep { base: Box::new(base), key: "velocity".into(), values: vec![1.0; 200], first_color: 1 });
+        r.cancel(Lane::Compute);
+        assert!(!r.busy(Lane::Compute));
+        std::thread::sleep(Duration::from_millis(50));
+        assert!(r.poll().is_empty());
+    }
+
+    /// Rendering an export gives three files per figure, named by the prefix.
+    #[test]
+    fn an_export_job_renders_every_figure_three_ways() {
+        let preset = crate::preset::resolve("ice-bounce-8ms").expect("shipped");
+        let out = scene::compute(&preset.scene, &Progress::default()).expect("computes");
+        let stamp = Stamp::of(&preset).expect("stamp");
+        let job = Job::Export { figures: out.figures.clone(), stamp: Box::new(stamp), prefix: "h-".into() };
+        match run(job, &Progress::default(), &Mutex::new(Caches::default())) {
+            Ok(Done::Files("export", files)) => {
+                assert_eq!(files.len(), 3 * out.figures.len());
+                assert!(files.iter().all(|(n, b)| n.starts_with("h-") && !b.is_empty()));
+                let png = &files.iter().find(|(n, _)| n.ends_with(".png")).expect("a png").1;
+                let back = crate::provenance::from_bytes(png, "x.png").expect("carries its state");
+                assert_eq!(back.scene, preset.scene);
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+}

@@ -1,0 +1,303 @@
+//! The figure area: the open scene's figures laid out as panels (a lead
+//! figure, small multiples, an enlarged slide figure), with pins, the time
+//! cursor and the inspected point drawn over them, a ladder of linked
+//! numbers or the contact sketch beside them, and their export buttons.
+
+use super::plot;
+use super::{Cx, sketch};
+use crate::app::command::{Command, Field};
+use crate::app::state::AppState;
+use crate::figure::{self, Figure, Series, Style, View};
+use crate::scene::{self, Extra};
+use std::sync::Arc;
+
+/// The figures, with a scene's ladder of linked numbers beside them.
+pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let ladder = match cx.state.output().map(|o| &o.extra) {
+        Some(Extra::Ladder(rungs)) => Some(Arc::clone(rungs)),
+        _ => None,
+    };
+    let Some(rungs) = ladder else {
+        panels(ui, cx);
+        return;
+    };
+    let avail = ui.available_size();
+    let width = (0.3 * avail.x).clamp(250.0, 440.0);
+    let text = if cx.state.session.lecture { 16.0 } else { 13.0 };
+    ui.horizontal_top(|ui| {
+        ui.allocate_ui_with_layout(egui::vec2(width, avail.y), egui::Layout::top_down(egui::Align::Min), |ui| {
+            ui.set_width(width);
+            egui::ScrollArea::vertical().id_salt("ladder").show(ui, |ui| ladder_panel(ui, &rungs, text));
+        });
+        ui.vertical(|ui| panels(ui, cx));
+    });
+}
+
+/// The "Lock axes" switch: keeps every plot's range while parameters change.
+fn lock_axes(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let mut lock = cx.state.locked.is_some();
+    if ui
+        .checkbox(&mut lock, "Lock axes")
+        .on_hover_text("keep every plot's range while parameters change (double-click a plot to reset a zoom)")
+        .changed()
+    {
+        cx.send(Command::LockAxes(cx.state.lock_views(lock)));
+    }
+}
+
+fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let state = cx.state;
+    let Some(out) = state.outputs[state.index()].clone() else {
+        ui.centered_and_justified(|ui| ui.spinner());
+        return;
+    };
+    for warning in &out.warnings {
+        let text = egui::RichText::new(format!("Warning: {warning}")).color(ui.visuals().warn_fg_color).strong();
+        ui.add(egui::Label::new(text).wrap());
+    }
+    let lecture = state.session.lecture;
+    if !lecture {
+        ui.horizontal_wrapped(|ui| {
+            lock_axes(ui, cx);
+            ui.separator();
+            super::transport::row(ui, cx);
+        });
+    }
+    let full_cursor = state.params().cursor(&out);
+    let trajectory = match &out.extra {
+        Extra::Collision(t) => Some(Arc::clone(t)),
+        Extra::Paths(_) | Extra::Model(_) | Extra::Ladder(_) | Extra::None => None,
+    };
+    let n_panels = out.figures.len() + usize::from(trajectory.is_some());
+    // A slide may enlarge one figure: it leads across the full width,
+    // the others share one row below it.
+    let enlarged = state
+        .presenter
+        .as_ref()
+        .and_then(|p| p.slide().enlarge.clone())
+        .and_then(|id| out.figures.iter().position(|f| f.id == id));
+    // Many panels (a grid of experiments) are small multiples: each keeps
+    // a legible size, as many columns as fit, and the grid scrolls; the
+    // first figure leads above them at twice the width.
+    let multiples = n_panels > 6 && enlarged.is_none();
+    let avail = ui.available_size();
+    let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
+    let cols = match n_panels {
+        _ if multiples => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
+        1 => 1,
+        2..=4 => 2,
+        _ => 3,
+    };
+    // A narrow area (beside a ladder, a small window) takes fewer columns.
+    let cols = cols.min(((avail.x + 12.0) / (min_w + 12.0)).max(1.0) as usize);
+    let rows = n_panels.div_ceil(cols);
+    let size = egui::vec2(
+        (avail.x / cols as f32 - 12.0).max(min_w),
+        (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(min_h),
+    );
+    let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
+    let cursor_fraction = full_cursor.as_ref().map_or(0.0, |c| c.fraction);
+    let cursor = full_cursor.filter(|c| state.marks_shown(c));
+    let mut commands: Vec<Command> = Vec::new();
+    cx.memo.plot_rects.clear();
+    cx.memo.plot_frames.clear();
+    let look = super::look::plot_look(ui, lecture);
+    // Figures first seen while locked are locked at their first view.
+    let locked_views = state.locked.clone().map(|mut locked| {
+        for fig in &out.figures {
+            locked.entry(fig.id.clone()).or_insert_with(|| View::of(fig));
+        }
+        locked
+    });
+    if locked_views != state.locked {
+        commands.push(Command::LockAxes(locked_views.clone()));
+    }
+    let mut export_dir = state.session.export_dir.clone();
+    let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
+    let memo = &mut *cx.memo;
+    let stale = cx.work.stale;
+    // Files show what the window shows, the time cursor included.
+    let drawn = |fig: &Figure| state.drawn_figures(&out).into_iter().find(|f| f.id == fig.id).unwrap_or(fig.clone());
+    let scroll = egui::ScrollArea::new([multiples, multiples])
+        .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+        .max_height(if multiples { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
+    scroll.show(ui, |ui| {
+        // One panel: the plot with its legend, and its export buttons.
+        let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {
+            let mut marks: Vec<scene::Mark> =
+                cursor.as_ref().map(|c| c.marks_on(&fig.id).cloned().collect()).unwrap_or_default();
+            marks.extend(state.inspected_mark(&fig.id));
+            let overlay = overlay_for(state, fig, marks);
+            let locked = locked_views.as_ref().and_then(|l| l.get(&fig.id).copied());
+            let mut look = look;
+            // A legend that repeats an earlier panel's (same entries,
+            // styles and colours) is drawn once.
+            if overlay.pinned.is_empty() {
+                let signature = plot::legend_signature(fig);
+                look.legend = !legends_shown.contains(&signature);
+                legends_shown.push(signature);
+            }
+            // Beside an enlarged figure the small plots keep their
+            // height: no legend (hovering still names each curve).
+            if enlarged.is_some_and(|k| out.figures.get(k).is_some_and(|f| f.id != fig.id)) {
+                look.legend = false;
+            }
+            ui.vertical(|ui| {
+                let shown = plot::show(ui, fig, &overlay, size, stale, look, locked);
+                memo.plot_rects.push(shown.response.rect);
+                memo.plot_frames.push((fig.id.clone(), shown.frame));
+                if let Some((at, pos)) = shown.clicked {
+                    commands.push(Command::Inspect(fig.id.clone(), at, [pos.x, pos.y]));
+                }
+                if lecture {
+                    return;
+                }
+                ui.horizontal(|ui| {
+                    for ext in ["png", "svg", "csv"] {
+                        if ui.small_button(ext.to_uppercase()).on_hover_text("save into the export folder").clicked() {
+                            commands.push(Command::ExportFigure(Box::new(drawn(fig)), ext));
+                        }
+                    }
+                    if ui.small_button("Save as…").clicked() {
+                        commands.push(Command::SaveFigureAs(Box::new(drawn(fig))));
+                    }
+                });
+            });
+        };
+        // One item: a figure, or (None) the contact sketch.
+        let mut draw = |ui: &mut egui::Ui, item: Option<&Figure>, size: egui::Vec2| match (item, &trajectory) {
+            (Some(fig), _) => panel(ui, fig, size),
+            (None, Some(t)) => {
+                ui.vertical(|ui| {
+                    ui.label(egui::RichText::new("Contact sketch").strong());
+                    sketch::show(ui, t, cursor_fraction, size);
+                    if lecture {
+                        return;
+                    }
+                    ui.small("play the collision or move its time above the plots");
+                    ui.horizontal(|ui| {
+                        let label = ui.label("export folder");
+                        ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
+                    });
+                });
+            }
+            (None, None) => {}
+        };
+        let lead = if multiples { Some(0) } else { enlarged };
+        let items: Vec<Option<&Figure>> = out
+            .figures
+            .iter()
+            .enumerate()
+            .filter(|(k, _)| Some(*k) != lead)
+            .map(|(_, f)| Some(f))
+            .chain(trajectory.as_ref().map(|_| None))
+            .collect();
+        if let Some(k) = enlarged {
+            // The enlarged figure fills most of the width; the others
+            // stack beside it.
+            let side_w = if items.is_empty() { 0.0 } else { (0.34 * avail.x).max(220.0) };
+            let lead_size = egui::vec2(avail.x - side_w - 16.0, avail.y - 8.0);
+            let each = egui::vec2(side_w - 8.0, ((avail.y - 8.0) / items.len().max(1) as f32 - 10.0).max(140.0));
+            ui.horizontal_top(|ui| {
+                draw(ui, out.figures.get(k), lead_size);
+                ui.vertical(|ui| {
+                    for item in &items {
+                        draw(ui, *item, each);
+                    }
+                });
+            });
+            return;
+        }
+        if let Some(fig) = lead.and_then(|k| out.figures.get(k)) {
+            draw(ui, Some(fig), lead_size);
+        }
+        // Row by row; a last row with fewer panels shares the full width
+        // (no empty quadrant), except among small multiples.
+        for row in items.chunks(cols) {
+            let size = if row.len() < cols && !multiples {
+                let spacing = ui.spacing().item_spacing.x;
+                egui::vec2((avail.x - spacing * row.len() as f32) / row.len() as f32 - 4.0, size.y)
+            } else {
+                size
+            };
+            ui.horizontal_top(|ui| {
+                for item in row {
+                    draw(ui, *item, size);
+                }
+            });
+        }
+    });
+    if trajectory.is_none() && !lecture {
+        ui.horizontal(|ui| {
+            let label = ui.label("export folder");
+            ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
+        });
+    }
+    if export_dir != state.session.export_dir {
+        commands.push(Command::SetText(Field::ExportDir, export_dir));
+    }
+    cx.out.extend(commands);
+}
+
+/// Pins of the open scene drawn over `fig` (a sweep's as a family coloured
+/// by the swept value), with the cursor's marks.
+fn overlay_for(state: &AppState, fig: &Figure, cursor: Vec<scene::Mark>) -> plot::Overlay {
+    let current = state.params();
+    let pinned: Vec<Series> = state
+        .session
+        .pins
+        .iter()
+        .filter(|p| p.params.info().id == current.info().id)
+        .flat_map(|pin| {
+            let label = if pin.label.is_empty() {
+                let d = pin.params.differences(current);
+                if d.is_empty() { "pinned (same parameters)".to_string() } else { format!("pinned: {}", d.join(", ")) }
+            } else {
+                pin.label.clone()
+            };
+            pin.curves.iter().filter(|(id, _)| *id == fig.id).map(move |(_, s)| {
+                let name = if s.name.is_empty() { label.clone() } else { format!("{label} — {}", s.name) };
+                let mut pinned = Series::new(name, s.points.clone(), Style::Dashed, pin.color);
+                pinned.family = s.family;
+                pinned
+            })
+        })
+        .collect();
+    // A sweep's pins form a family coloured by the swept value.
+    let family = state
+        .session
+        .pins
+        .iter()
+        .find(|p| p.params.info().id == current.info().id && p.curves.iter().any(|(_, s)| s.family.is_some()))
+        .and_then(|p| {
+            let key = p.label.split(" = ").next()?.to_string();
+            let mut params = current.clone();
+            let controls = params.controls();
+            let c = controls.iter().find(|c| c.key == key)?;
+            let values: Vec<f64> = pinned.iter().filter_map(|s| s.family).collect();
+            let positive = values.iter().all(|&v| v > 0.0);
+            let scale = if positive { figure::Scale::Log } else { figure::Scale::Linear };
+            Some(figure::Family { label: c.label.to_string(), unit: c.si_unit.to_string(), scale })
+        });
+    plot::Overlay { pinned, family, cursor }
+}
+
+/// The rungs of a ladder, smallest scale on top, an arrow between them.
+fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32) {
+    for (k, rung) in rungs.iter().enumerate() {
+        if k > 0 {
+            ui.vertical_centered(|ui| ui.label(egui::RichText::new("↓").size(text)));
+        }
+        egui::Frame::group(ui.style()).show(ui, |ui| {
+            ui.set_width(ui.available_width());
+            ui.label(egui::RichText::new(&rung.scale).strong().size(text + 1.0));
+            egui::Grid::new(("rung", k)).num_columns(2).spacing([8.0, 1.0]).show(ui, |ui| {
+                for (quantity, value, source) in &rung.items {
+                    ui.label(egui::RichText::new(quantity).size(text)).on_hover_text(source);
+                    ui.label(egui::RichText::new(value).size(text).strong()).on_hover_text(source);
+                    ui.end_row();
+                }
+            });
+        });
+    }
+}

@@ -1,0 +1,75 @@
+//! The panels: one file each, every one a function of the state that draws
+//! it and says what the user did as [`Command`]s. Nothing here changes the
+//! state; [`crate::app::GrainscopeApp`] applies the commands after each panel.
+
+pub mod controls;
+pub mod deck_editor;
+pub mod figures;
+pub mod help;
+pub mod inspector;
+pub mod look;
+pub mod monomer_card;
+pub mod plot;
+pub mod presenter;
+pub mod scene_panel;
+pub mod sketch;
+pub mod status;
+pub mod top_bar;
+pub mod transport;
+
+use super::command::Command;
+use super::state::AppState;
+use crate::scene::Scalar;
+use crate::scene::monomer::Card;
+
+/// How the open scene's computation stands, as the panels show it.
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Work {
+    /// Whether a job computes the open scene (or a sweep).
+    pub running: bool,
+    /// Whether the open scene's result is older than its parameters.
+    pub stale: bool,
+    /// Fraction done of the running job.
+    pub progress: f64,
+    /// Whether the running job is paused.
+    pub paused: bool,
+    /// Whether the running job can pause.
+    pub pausable: bool,
+}
+
+/// What the panels remember between frames that is not state: layout of
+/// the last frame and values kept so as not to compute them every frame.
+#[derive(Default)]
+pub struct Memo {
+    /// Where the plots were drawn in the last frame (screen points).
+    pub plot_rects: Vec<egui::Rect>,
+    /// The frame of every plot drawn in the last frame, by figure id.
+    pub plot_frames: Vec<(String, egui::Rect)>,
+    /// Shipped presets for the menu: (chapter, title, file, text), parsed once.
+    pub shipped_menu: Option<Vec<(crate::scene::Chapter, String, &'static str, &'static str)>>,
+    /// The monomer card last shown and its derived values.
+    pub card: Option<(Card, Vec<Scalar>)>,
+    /// The (lecture, light) look last applied to the context.
+    pub look_applied: Option<(bool, bool)>,
+    /// Whether the bundled font was given to the context.
+    pub fonts_installed: bool,
+}
+
+/// What a panel draws from and reports to.
+pub struct Cx<'a> {
+    /// The state drawn.
+    pub state: &'a AppState,
+    /// Layout and values kept between frames.
+    pub memo: &'a mut Memo,
+    /// The user's actions this frame.
+    pub out: &'a mut Vec<Command>,
+    /// The computation's progress.
+    pub work: Work,
+}
+
+impl Cx<'_> {
+    /// Reports a user action.
+    pub fn send(&mut self, command: Command) {
+        self.out.push(command);
+    }
+}

@@ -1,0 +1,87 @@
+//! The monomer card: one monomer shared by every scene that builds
+//! aggregates, edited in any of them, with what it sets at every scale.
+
+use super::Cx;
+use super::controls::{self, Select};
+use crate::figure;
+use crate::scene::monomer::{self, MONOMER_KEYS};
+use crate::scene::{Scalar, SceneParams};
+
+/// Whether `key` is edited on the card rather than among the parameters.
+pub fn is_card_key(key: &str) -> bool {
+    MONOMER_KEYS.contains(&key) || key == "own_monomer"
+}
+
+/// The card's controls that apply to the scene's current monomer: the
+/// surface energy of its material and the parameter of its rolling law.
+pub fn shown_keys(params: &SceneParams) -> Vec<&'static str> {
+    use crate::physics::monomer::RollingLaw;
+    let m = params.monomer();
+    let icy = m.is_none_or(|m| m.icy);
+    let mut keys = vec![
+        "monomer_radius",
+        "icy",
+        if icy { "surface_energy_ice" } else { "surface_energy_silicate" },
+        "rolling_law",
+    ];
+    match m.map(|m| m.rolling) {
+        Some(RollingLaw::Contact { .. }) => keys.push("hysteresis"),
+        Some(RollingLaw::DominikTielens { .. }) => keys.push("xi_crit"),
+        _ => {}
+    }
+    keys.push("own_monomer");
+    keys
+}
+
+/// The card: the monomer's controls and the numbers it sets.
+pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let Some(card) = cx.state.params().monomer_card() else { return };
+    let own = cx.state.params().own_monomer();
+    let sharing = cx.state.scenes_sharing_monomer();
+    let derived = match &cx.memo.card {
+        Some((c, values)) if *c == card => values.clone(),
+        _ => {
+            let values = monomer::scalars(&monomer::monomer_of(&card), true);
+            cx.memo.card = Some((card.clone(), values.clone()));
+            values
+        }
+    };
+    egui::Frame::group(ui.style()).show(ui, |ui| {
+        let heading =
+            if own { "Monomer · this scene's own".to_string() } else { format!("Monomer · shared by {sharing} scenes") };
+        ui.label(egui::RichText::new(heading).strong()).on_hover_text(
+            "The monomer every aggregate scene builds on: a change here is seen by every scene that shares it",
+        );
+        controls::show(ui, cx, Select::Card);
+        egui::Grid::new("monomer-derived").num_columns(2).spacing([10.0, 2.0]).show(ui, |ui| {
+            for s in &derived {
+                let label = s.label.trim_start_matches("monomer: ");
+                ui.small(label);
+                let shown = ui.add(egui::Label::new(egui::RichText::new(value_text(s)).small()).wrap());
+                if s.value.is_infinite() {
+                    shown.on_hover_text(
+                        "the ch. 2 model finds no bounce up to 10 km/s: the bulk viscous loss exceeds the rebound, far outside the model's range",
+                    );
+                }
+                ui.end_row();
+            }
+        });
+    });
+}
+
+/// A derived value as text: SI with its unit, and erg for the energies.
+fn value_text(s: &Scalar) -> String {
+    if s.value.is_infinite() {
+        return "none up to 10 km/s".into();
+    }
+    let unit = match s.unit {
+        "m s^-1" => "m/s",
+        u => u,
+    };
+    let main = format!("{} {unit}", figure::human(s.value));
+    match s.unit {
+        "J" => format!("{main} ({} erg)", figure::human(s.value * 1e7)),
+        "m" => format!("{} nm", figure::human(s.value * 1e9)),
+        _ => main,
+    }
+}

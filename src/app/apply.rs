@@ -506,7 +506,7 @@ impl AppState {
     fn edit_deck(&mut self, edit: DeckEdit, fx: &mut Vec<Effect>) {
         let editor = &mut self.deck_editor;
         match edit {
-            DeckEdit::Open(open) => editor.open = open,
+            DeckEdit::Show(open) => editor.open = open,
             DeckEdit::Replace(deck) => editor.deck = *deck,
             DeckEdit::Swap(a, b) if a.max(b) < editor.deck.slides.len() => editor.deck.slides.swap(a, b),
             DeckEdit::Remove(i) if i < editor.deck.slides.len() => {
@@ -535,7 +535,7 @@ impl AppState {
                 }),
                 Err(e) => self.error = Some(format!("deck not saved: {e}")),
             },
-            DeckEdit::Open => fx.push(Effect::Read(editor.path.clone(), Then::EditDeck)),
+            DeckEdit::OpenFile => fx.push(Effect::Read(editor.path.clone(), Then::EditDeck)),
             DeckEdit::Shipped(file) => match crate::deck::resolve(file) {
                 Ok(d) => self.deck_editor.deck = d.deck,
                 Err(e) => self.error = Some(e.to_string()),

@@ -74,8 +74,8 @@ pub enum Field {
 /// A change to the deck being built.
 #[derive(Debug, Clone, PartialEq)]
 pub enum DeckEdit {
-    /// Open or close the editor.
-    Open(bool),
+    /// Show or hide the editor.
+    Show(bool),
     /// The deck's title and slides as edited in place (titles, notes).
     Replace(Box<Deck>),
     /// Swap two slides.
@@ -89,7 +89,7 @@ pub enum DeckEdit {
     /// Save it to the deck file.
     Save,
     /// Open the deck file into the editor.
-    Open,
+    OpenFile,
     /// Open a shipped deck into the editor.
     Shipped(&'static str),
 }

@@ -132,7 +132,7 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
                 progress.check()?;
                 progress.set(j as f64 / values.len() as f64);
                 let mut p = (*base).clone();
-                p.set(&key, &v.to_string())?;
+                p.set(&key, &v.to_string()).map_err(SceneError::from)?;
                 let out = scene::compute(&p, &Progress::default())?;
                 let curves = line_curves(&out).into_iter().map(|(id, s)| (id, s.at(*v))).collect();
                 pins.push(Pin {

@@ -263,13 +263,9 @@ impl GrainscopeApp {
             i.raw
                 .dropped_files
                 .iter()
-                .filter_map(|f| match (&f.path, &f.bytes) {
-                    (_, Some(bytes)) => {
-                        Some(Command::OpenBytes(Picked { name: f.name.clone(), bytes: bytes.to_vec() }))
-                    }
-                    (Some(p), None) if !p.as_os_str().is_empty() => Some(Command::OpenPath(p.display().to_string())),
-                    _ => None,
-                })
+                .map(|f| f.path())
+                .filter(|p| !p.as_os_str().is_empty())
+                .map(|p| Command::OpenPath(p.display().to_string()))
                 .collect()
         });
         for c in dropped {

@@ -4,7 +4,7 @@
 
 use super::platform::Picked;
 use crate::deck::{Deck, DeckError, LoadedDeck};
-use crate::measurements::Measurement;
+use crate::physics::fit::Measurement;
 use crate::preset::{Preset, PresetError};
 use crate::provenance::ProvenanceError;
 use std::path::Path;

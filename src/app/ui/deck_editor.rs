@@ -64,7 +64,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                 edits.push(DeckEdit::Save);
             }
             if ui.button("Open deck").clicked() {
-                edits.push(DeckEdit::Open);
+                edits.push(DeckEdit::OpenFile);
             }
         });
         ui.horizontal(|ui| {
@@ -87,6 +87,6 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
         cx.send(Command::Deck(e));
     }
     if !open {
-        cx.send(Command::Deck(DeckEdit::Open(false)));
+        cx.send(Command::Deck(DeckEdit::Show(false)));
     }
 }

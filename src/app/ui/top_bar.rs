@@ -98,7 +98,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         ui.separator();
         let mut open = cx.state.deck_editor.open;
         if ui.toggle_value(&mut open, "Deck").on_hover_text("build a lecture from the window's states").changed() {
-            cx.send(Command::Deck(DeckEdit::Open(open)));
+            cx.send(Command::Deck(DeckEdit::Show(open)));
         }
         ui.menu_button("Present", |ui| decks_menu(ui, cx));
         if ui.button("Keys").on_hover_text("keyboard shortcuts (F1)").clicked() {

@@ -155,7 +155,8 @@ fn set_aside(path: &Path) -> std::io::Result<PathBuf> {
 
 /// The session as the RON text of its file.
 pub fn to_ron(session: &Session) -> Result<String, String> {
-    ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false)).map_err(|e| e.to_string())
+    ron::ser::to_string_pretty(session, ron::ser::PrettyConfig::default().struct_names(false))
+        .map_err(|e| e.to_string())
 }
 
 /// Writes the session to `path` atomically.

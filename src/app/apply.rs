@@ -261,8 +261,11 @@ impl AppState {
     /// changes nothing.
     fn import(&mut self, picked: &Picked) {
         let takes = |p: &SceneParams| p.clone().measurements().is_some();
-        let target =
-            if takes(self.params()) { Some(self.index()) } else { (0..SCENES.len()).find(|&i| takes(self.params_of(i))) };
+        let target = if takes(self.params()) {
+            Some(self.index())
+        } else {
+            (0..SCENES.len()).find(|&i| takes(self.params_of(i)))
+        };
         let Some(i) = target else {
             self.error = Some("no scene takes measurements (nothing imported)".into());
             return;
@@ -283,8 +286,11 @@ impl AppState {
     /// The open scene as the text of a preset file.
     fn preset_text(&self) -> Result<Vec<u8>, String> {
         let info = self.params().info();
-        let preset =
-            Preset { title: format!("{} (saved)", info.title), description: String::new(), scene: self.params().clone() };
+        let preset = Preset {
+            title: format!("{} (saved)", info.title),
+            description: String::new(),
+            scene: self.params().clone(),
+        };
         preset.to_ron().map(String::into_bytes).map_err(|e| e.to_string())
     }
 
@@ -313,10 +319,7 @@ impl AppState {
 
     /// The folder a movie of the open scene goes to.
     pub fn movie_folder(&self) -> String {
-        Path::new(&self.session.export_dir)
-            .join(format!("{}-movie", self.params().info().id))
-            .display()
-            .to_string()
+        Path::new(&self.session.export_dir).join(format!("{}-movie", self.params().info().id)).display().to_string()
     }
 
     fn pin_current(&mut self) {

@@ -159,7 +159,9 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
         }
         Job::Movie { preset, frames } => {
             let files = crate::handout::movie_files(&preset, frames, None, true, 12, &|| progress.cancelled())
-                .map_err(|e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) })?;
+                .map_err(
+                    |e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) },
+                )?;
             Ok(Done::Files("movie", files))
         }
     }

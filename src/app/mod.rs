@@ -82,8 +82,8 @@ impl GrainscopeApp {
 
     /// Keeps the session for the next start, saying once if that fails.
     pub fn save_session(&mut self) {
-        let result = crate::session::to_ron(&self.state.session)
-            .and_then(|text| self.platform.save_session(text.as_bytes()));
+        let result =
+            crate::session::to_ron(&self.state.session).and_then(|text| self.platform.save_session(text.as_bytes()));
         match result {
             Ok(()) => self.state.session_save_failed = false,
             Err(e) if !self.state.session_save_failed => {
@@ -185,7 +185,8 @@ impl GrainscopeApp {
         match (self.platform.write_all(folder, files), what) {
             (Ok(names), "figure") => state.status = format!("exported {}", names.join(", ")),
             (Ok(names), _) => {
-                state.status = format!("wrote the {what}: {} files, {}", names.len(), names.last().cloned().unwrap_or_default())
+                state.status =
+                    format!("wrote the {what}: {} files, {}", names.len(), names.last().cloned().unwrap_or_default())
             }
             (Err(e), "figure") => state.error = Some(format!("export failed, earlier files untouched: {e}")),
             (Err(e), _) => state.error = Some(format!("{what} not written, earlier files untouched: {e}")),
@@ -335,7 +336,9 @@ impl GrainscopeApp {
         }
         if self.state.presenter.as_ref().is_some_and(|p| p.notes) {
             let height = (0.27 * ctx.content_rect().height()).max(120.0);
-            egui::Panel::bottom("notes").exact_size(height).show(ui, |ui| self.panel(|cx| ui::presenter::notes(ui, cx)));
+            egui::Panel::bottom("notes")
+                .exact_size(height)
+                .show(ui, |ui| self.panel(|cx| ui::presenter::notes(ui, cx)));
         }
         if !self.state.session.lecture {
             egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {

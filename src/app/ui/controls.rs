@@ -105,7 +105,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                         if changed && si.is_finite() && si >= *min - slack && si <= *max + slack {
                             **value = si.clamp(*min, *max);
                             accepted = Some(key.to_string());
-                        } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none()) {
+                        } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none())
+                        {
                             let text = typed.unwrap_or_else(|| shown.to_string());
                             let why = if parse_number(&text).is_some() {
                                 "is outside the valid range"
@@ -134,7 +135,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                         if changed && whole && shown >= *min as f64 && shown <= *max as f64 {
                             **value = shown as usize;
                             accepted = Some(key.to_string());
-                        } else if changed || typed.as_deref().is_some_and(|t| parse_number(t).is_none() || !typed_whole) {
+                        } else if changed || typed.as_deref().is_some_and(|t| parse_number(t).is_none() || !typed_whole)
+                        {
                             let text = typed.unwrap_or_else(|| shown.to_string());
                             refused = Some((
                                 key.to_string(),

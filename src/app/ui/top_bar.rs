@@ -55,7 +55,9 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         let mut path = cx.state.session.preset_path.clone();
         if ui
             .add(egui::TextEdit::singleline(&mut path).desired_width(220.0).hint_text("preset path"))
-            .on_hover_text("path for Load/Save when no file dialog is available; presets can also be dropped on the window")
+            .on_hover_text(
+                "path for Load/Save when no file dialog is available; presets can also be dropped on the window",
+            )
             .changed()
         {
             cx.send(Command::SetText(Field::PresetPath, path.clone()));
@@ -92,7 +94,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         if ui.add_enabled(redo > 0, egui::Button::new("Redo")).on_hover_text("redo (Ctrl+Shift+Z)").clicked() {
             cx.send(Command::Act(Action::Redo));
         }
-        if ui.button("Reset all").on_hover_text("every scene's parameters to their defaults (Ctrl+Z undoes)").clicked() {
+        if ui.button("Reset all").on_hover_text("every scene's parameters to their defaults (Ctrl+Z undoes)").clicked()
+        {
             cx.send(Command::ResetAll);
         }
         ui.separator();

@@ -2,11 +2,11 @@
 //! the corner the layout chose, so that they match the exported files.
 
 use super::{Entry, Look, transform};
-use egui_plot::PlotPoints;
 use crate::figure::layout::{ColourBar, Corner};
 use crate::figure::ticks::ticks;
 use crate::figure::{Figure, Fill, Heatmap, Shape, Style, colormap, family_fraction, human};
 use egui::{Color32, Pos2, Rect, Stroke, Vec2};
+use egui_plot::PlotPoints;
 
 pub(super) fn legend_size_one(ui: &egui::Ui, e: &Entry, font: &egui::FontId) -> Vec2 {
     let w = ui.painter().layout_no_wrap(e.text.clone(), font.clone(), Color32::WHITE).size().x;
@@ -41,7 +41,15 @@ pub(super) fn paint_legend(ui: &mut egui::Ui, legend: &[Entry], rect: Rect, look
 }
 
 /// A [`Style::Symbol`] of radius `r` at `c`, as egui_plot draws it.
-pub(super) fn paint_symbol(painter: &egui::Painter, c: Pos2, r: f32, shape: Shape, fill: Fill, color: Color32, line: f32) {
+pub(super) fn paint_symbol(
+    painter: &egui::Painter,
+    c: Pos2,
+    r: f32,
+    shape: Shape,
+    fill: Fill,
+    color: Color32,
+    line: f32,
+) {
     let stroke = Stroke::new((0.7 * line).max(1.2), color);
     let poly = |pts: Vec<Pos2>| {
         if fill == Fill::Filled {

@@ -267,8 +267,12 @@ impl Progress {
     pub fn paused(&self) -> bool {
         self.pause.load(Ordering::Relaxed)
     }
-    /// Blocks while paused (and not cancelled).
+    /// Blocks while paused (and not cancelled), looking again every 50 ms.
+    /// Only another thread can lift a pause; WebAssembly in a browser has no
+    /// threads to sleep (nor to lift it), so there this returns at once and
+    /// the computation runs on.
     pub fn wait_while_paused(&self) {
+        #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
         while self.paused() && !self.cancelled() {
             std::thread::sleep(std::time::Duration::from_millis(50));
         }

@@ -3,6 +3,7 @@
 //! without a cycle; the registry in [`crate::scene`] sits on top of both.
 
 use super::controls::Control;
+pub use super::grid::logspace;
 pub use super::timeline::Cursor;
 use crate::figure::Figure;
 use crate::physics::fit::Measurement;
@@ -325,11 +326,4 @@ impl Caches {
             None => unreachable!("cache slot holds another type"),
         }
     }
-}
-
-/// Evenly spaced values in log space, `n ≥ 2` points from `lo` to `hi`.
-pub fn logspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let n = n.max(2);
-    let (a, b) = (lo.ln(), hi.ln());
-    (0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp()).collect()
 }

@@ -2,10 +2,10 @@
 //! radius for every batch, coloured by Stokes number.
 
 use super::common::{BatchParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::AU;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -65,8 +65,17 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::toggle("colour_by_filling", "colour by φ", &mut self.colour_by_filling).default(d.colour_by_filling).doc("else by Stokes number"));
-        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
+        c.push(
+            Control::toggle("colour_by_filling", "colour by φ", &mut self.colour_by_filling)
+                .default(d.colour_by_filling)
+                .doc("else by Stokes number"),
+        );
+        c.push(
+            Control::count("every", "draw every n-th batch", &mut self.every)
+                .default(d.every)
+                .range(1.0, 100.0)
+                .doc("thins the paths"),
+        );
         c
     }
 }
@@ -107,7 +116,8 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
             fig = fig.with(Series::new(name, pts, Style::Points, k));
         }
     }
-    Ok(SceneOutput { warnings: Vec::new(),
+    Ok(SceneOutput {
+        warnings: Vec::new(),
         scalars: vec![crate::scene::core::Scalar {
             key: "frames",
             label: "recorded frames",

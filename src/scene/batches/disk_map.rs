@@ -3,13 +3,13 @@
 //! midplane mass loading.
 
 use super::common::{BatchParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -79,8 +79,18 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the batch paths, as a fraction of the run in log time").style_only());
+        c.push(
+            Control::count("every", "draw every n-th batch", &mut self.every)
+                .default(d.every)
+                .range(1.0, 100.0)
+                .doc("thins the paths"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time marked on the batch paths, as a fraction of the run in log time")
+                .style_only(),
+        );
         c
     }
 }
@@ -131,8 +141,7 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
     for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
         // One legend entry for the four reference orbits.
         fig = fig.with(
-            Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7)
-                .keyed("Jupiter, Saturn, Uranus, Neptune"),
+            Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7).keyed("Jupiter, Saturn, Uranus, Neptune"),
         );
     }
     let scalars = vec![
@@ -151,5 +160,11 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         },
         Scalar { key: "converted", label: "converted into planetesimals", value: run.converted_fraction(), unit: "" },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())) })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())),
+    })
 }

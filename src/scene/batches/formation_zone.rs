@@ -2,10 +2,10 @@
 //! region where planetesimals form directly, against disk mass and metallicity.
 
 use super::common::{BatchParams, log_grid, sweep_controls};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -97,9 +97,32 @@ impl Params {
             (&mut self.z_min, &mut self.z_max, &mut self.n_z),
             [(d.mass_min, d.mass_max, d.n_mass), (d.z_min, d.z_max, d.n_z)],
         ));
-        c.push(Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1).default(d.r_c_1).unit("AU").range(5.0, 300.0).log().doc("first characteristic radius"));
-        c.push(Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2).default(d.r_c_2).unit("AU").range(5.0, 300.0).log().doc("second characteristic radius"));
-        c.push(Control::choice("contrast", "dashed lines", &mut self.contrast, vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")]).default(d.contrast.clone()).doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"));
+        c.push(
+            Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1)
+                .default(d.r_c_1)
+                .unit("AU")
+                .range(5.0, 300.0)
+                .log()
+                .doc("first characteristic radius"),
+        );
+        c.push(
+            Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2)
+                .default(d.r_c_2)
+                .unit("AU")
+                .range(5.0, 300.0)
+                .log()
+                .doc("second characteristic radius"),
+        );
+        c.push(
+            Control::choice(
+                "contrast",
+                "dashed lines",
+                &mut self.contrast,
+                vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")],
+            )
+            .default(d.contrast.clone())
+            .doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"),
+        );
         c
     }
 }
@@ -167,5 +190,11 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     let widest = edges.iter().copied().fold(0.0, f64::max);
     scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
     scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

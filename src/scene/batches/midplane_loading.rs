@@ -1,13 +1,13 @@
 //! Scene "Midplane loading" (thesis Fig. 5.15): the largest midplane
 //! dust-to-gas ratio allowed by the turbulence that settled dust drives itself.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::batches::{alpha_midplane, max_loading};
 use crate::physics::constants::AU;
 use crate::physics::disk::{GasDisk, Profile};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -62,8 +62,16 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::number("z_min_solar", "smallest Z* / solar", &mut self.z_min_solar).default(d.z_min_solar).range(0.1, 20.0).log().doc("first metallicity of settled particles"),
-            Control::number("z_max_solar", "largest Z* / solar", &mut self.z_max_solar).default(d.z_max_solar).range(0.1, 20.0).log().doc("last metallicity"),
+            Control::number("z_min_solar", "smallest Z* / solar", &mut self.z_min_solar)
+                .default(d.z_min_solar)
+                .range(0.1, 20.0)
+                .log()
+                .doc("first metallicity of settled particles"),
+            Control::number("z_max_solar", "largest Z* / solar", &mut self.z_max_solar)
+                .default(d.z_max_solar)
+                .range(0.1, 20.0)
+                .log()
+                .doc("last metallicity"),
             Control::count("n_z", "metallicities", &mut self.n_z).default(d.n_z).range(1.0, 8.0).doc("log-spaced"),
             quantities::disk_mass(&mut self.disk_mass).default(d.disk_mass).doc("mass of the three disks"),
         ]
@@ -124,5 +132,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             });
         }
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures, notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures,
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

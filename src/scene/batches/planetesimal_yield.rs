@@ -2,10 +2,10 @@
 //! converted fraction against time for a grid of disks.
 
 use super::common::{BatchParams, log_grid, sweep_controls};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::YEAR;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -154,5 +154,11 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         unit: "",
     });
     scalars.push(Scalar { key: "runs", label: "disks run", value: runs.len() as f64, unit: "" });
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_f], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig_m, fig_f],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -2,13 +2,13 @@
 //! dust and planetesimal surface densities of the batch model at chosen times.
 
 use super::common::{BatchParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
 use crate::physics::constants::{AU, YEAR};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -69,7 +69,12 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("the dust snapshot to highlight, as a fraction of their span in log time").style_only());
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("the dust snapshot to highlight, as a fraction of their span in log time")
+                .style_only(),
+        );
         c
     }
 }
@@ -150,5 +155,11 @@ pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<
         },
         Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -2,13 +2,13 @@
 //! contact of two equal monomers, its characteristic energies, and the
 //! collision regimes of aggregates.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::contact::Pair;
-use crate::physics::material::{Material, combined_modulus};
 use crate::physics::material::combined_surface_energy;
+use crate::physics::material::{Material, combined_modulus};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -86,14 +86,44 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::material("material", "material", &mut self.material).default(d.material.name.clone()).doc("monomer material (Table 2.2)"),
-            Control::number("radius", "monomer radius r₀", &mut self.radius).default(d.radius).unit("m").shown("µm", 1e6).range(1e-8, 1e-2).log().doc("radius of one monomer (default 0.1 µm)"),
-            quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy (2γ_L; default 0.74)"),
+            Control::material("material", "material", &mut self.material)
+                .default(d.material.name.clone())
+                .doc("monomer material (Table 2.2)"),
+            Control::number("radius", "monomer radius r₀", &mut self.radius)
+                .default(d.radius)
+                .unit("m")
+                .shown("µm", 1e6)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("radius of one monomer (default 0.1 µm)"),
+            quantities::surface_energy(&mut self.surface_energy)
+                .default(d.surface_energy)
+                .doc("combined surface energy (2γ_L; default 0.74)"),
             quantities::force_range(&mut self.z0).default(d.z0).doc("range of surface forces (default 0.3 nm)"),
-            Control::number("xi", "rolling displacement ξ", &mut self.xi).default(d.xi).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("critical rolling displacement (default 0.1 nm)"),
-            Control::number("monomers", "monomers per aggregate N", &mut self.monomers).default(d.monomers).range(1.0, 1e9).log().doc("monomers in each of two equal aggregates"),
-            Control::number("contacts", "contacts n_c", &mut self.contacts).default(d.contacts).range(1.0, 1e9).log().doc("contacts in the colliding pair"),
-            Control::number("velocity", "aggregate velocity v", &mut self.velocity).default(d.velocity).unit("m s^-1").shown("m/s", 1.0).range(1e-4, 1e3).log().doc("relative velocity of the aggregates"),
+            Control::number("xi", "rolling displacement ξ", &mut self.xi)
+                .default(d.xi)
+                .unit("m")
+                .shown("nm", 1e9)
+                .range(1e-11, 1e-8)
+                .log()
+                .doc("critical rolling displacement (default 0.1 nm)"),
+            Control::number("monomers", "monomers per aggregate N", &mut self.monomers)
+                .default(d.monomers)
+                .range(1.0, 1e9)
+                .log()
+                .doc("monomers in each of two equal aggregates"),
+            Control::number("contacts", "contacts n_c", &mut self.contacts)
+                .default(d.contacts)
+                .range(1.0, 1e9)
+                .log()
+                .doc("contacts in the colliding pair"),
+            Control::number("velocity", "aggregate velocity v", &mut self.velocity)
+                .default(d.velocity)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(1e-4, 1e3)
+                .log()
+                .doc("relative velocity of the aggregates"),
         ]
     }
 
@@ -215,5 +245,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     if mu < 5.0 {
         notes.push(format!("Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."));
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_v, fig_r, fig_f], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig_v, fig_r, fig_f],
+        notes,
+        extra: crate::scene::core::Extra::None,
+    })
 }

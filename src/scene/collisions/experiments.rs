@@ -1,14 +1,14 @@
 //! Scene "Experiments" (thesis Sect. 2.4, Figs. 2.6 and 2.11): the best-fit
 //! restitution curves of the 17 collision experiments of Table 2.1.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
 use super::common::describe;
+use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::collision::{Options, Outcome, Setup, collide, sticking_velocity};
 use crate::physics::experiments::{Experiment, experiment, experiments};
 use crate::physics::plasticity::{e_combined, e_plastic};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -72,10 +72,19 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::choice("experiment", "experiment", &mut self.experiment, options()).default(d.experiment.clone()).doc("experiment of Table 2.1"),
-            Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all).default(d.all).doc("also show every experiment as a small plot"),
-            Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(4.0, 400.0).doc("points per curve"),
-            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("relative tolerance of the integrator (default 1e-5)"),
+            Control::choice("experiment", "experiment", &mut self.experiment, options())
+                .default(d.experiment.clone())
+                .doc("experiment of Table 2.1"),
+            Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all)
+                .default(d.all)
+                .doc("also show every experiment as a small plot"),
+            Control::count("n_velocities", "velocities", &mut self.n_velocities)
+                .default(d.n_velocities)
+                .range(4.0, 400.0)
+                .doc("points per curve"),
+            quantities::solver_tolerance(&mut self.rtol)
+                .default(d.rtol)
+                .doc("relative tolerance of the integrator (default 1e-5)"),
         ]
     }
 }
@@ -111,10 +120,12 @@ fn tabor(e: &Experiment, setup: &Setup) -> f64 {
 
 /// Computes the scene.
 pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let e = experiment(&p.experiment)
-        .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("unknown experiment '{}'", p.experiment)))?;
-    let setup =
-        e.best_fit_setup().ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", e.key)))?;
+    let e = experiment(&p.experiment).ok_or_else(|| {
+        crate::scene::controls::ParamError::Inconsistent(format!("unknown experiment '{}'", p.experiment))
+    })?;
+    let setup = e
+        .best_fit_setup()
+        .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", e.key)))?;
     let opts = Options { rtol: p.rtol, ..Options::default() };
     let rows = curves(e, &setup, p.n_velocities, &opts, progress)?;
     let mu = tabor(e, &setup);
@@ -140,9 +151,9 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
             .enumerate()
             .map(|(i, x)| {
                 progress.set(i as f64 / experiments().len() as f64);
-                let s = x
-                    .best_fit_setup()
-                    .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", x.key)))?;
+                let s = x.best_fit_setup().ok_or_else(|| {
+                    crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", x.key))
+                })?;
                 let r = curves(x, &s, p.n_velocities.min(30), &opts, progress)?;
                 let fig = Figure::new(
                     &format!("fig-2-11-{}", x.key),

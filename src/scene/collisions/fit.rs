@@ -2,15 +2,15 @@
 //! restitution model to measured coefficients of restitution.
 
 use super::common::CollisionParams;
-use crate::scene::quantities;
-use crate::scene::controls::{Control, LogRange, ParamError};
 use super::common::describe;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Heatmap, Series, Style};
 use crate::physics::collision::{Options, Setup};
 use crate::physics::experiments::experiment;
 use crate::physics::fit::{Fit as FitResult, FitError, Measurement, Search, fit, model_restitution};
 use crate::physics::material::Material;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use rand::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
@@ -138,26 +138,106 @@ impl Params {
         let s = ("s", 1.0);
         let mpa = ("MPa", 1e-6);
         vec![
-            Control::material("projectile", "material 1", &mut self.projectile).default(d.projectile.name.clone()).doc("projectile material"),
-            Control::material("target", "material 2", &mut self.target).default(d.target.name.clone()).doc("target material"),
-            Control::toggle("wall", "sphere on wall", &mut self.wall).default(d.wall).doc("projectile hits a flat target"),
-            Control::number("radius_1", "radius 1", &mut self.radius_1).default(d.radius_1).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("projectile radius"),
-            Control::number("radius_2", "radius 2", &mut self.radius_2).default(d.radius_2).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("target radius (spheres)"),
-            Control::number("gamma_min", "γ from", &mut self.gamma_min).default(d.gamma_min).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("smallest γ of the grid"),
-            Control::number("gamma_max", "γ to", &mut self.gamma_max).default(d.gamma_max).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("largest γ of the grid"),
-            Control::count("n_gamma", "γ points", &mut self.n_gamma).default(d.n_gamma).range(2.0, 100.0).doc("grid points in γ"),
+            Control::material("projectile", "material 1", &mut self.projectile)
+                .default(d.projectile.name.clone())
+                .doc("projectile material"),
+            Control::material("target", "material 2", &mut self.target)
+                .default(d.target.name.clone())
+                .doc("target material"),
+            Control::toggle("wall", "sphere on wall", &mut self.wall)
+                .default(d.wall)
+                .doc("projectile hits a flat target"),
+            Control::number("radius_1", "radius 1", &mut self.radius_1)
+                .default(d.radius_1)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("projectile radius"),
+            Control::number("radius_2", "radius 2", &mut self.radius_2)
+                .default(d.radius_2)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("target radius (spheres)"),
+            Control::number("gamma_min", "γ from", &mut self.gamma_min)
+                .default(d.gamma_min)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("smallest γ of the grid"),
+            Control::number("gamma_max", "γ to", &mut self.gamma_max)
+                .default(d.gamma_max)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("largest γ of the grid"),
+            Control::count("n_gamma", "γ points", &mut self.n_gamma)
+                .default(d.n_gamma)
+                .range(2.0, 100.0)
+                .doc("grid points in γ"),
             Control::toggle("fix_gamma", "hold γ fixed", &mut self.fix_gamma).default(d.fix_gamma).doc("do not fit γ"),
-            Control::number("gamma", "fixed γ", &mut self.gamma).default(d.gamma).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("γ when held fixed"),
-            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("smallest T_vis of the grid"),
-            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("largest T_vis of the grid"),
-            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis).default(d.n_t_vis).range(2.0, 100.0).doc("grid points in T_vis"),
-            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis).default(d.fix_t_vis).doc("do not fit T_vis"),
-            Control::number("t_vis", "fixed T_vis", &mut self.t_vis).default(d.t_vis).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("T_vis when held fixed"),
-            Control::number("y_min", "Y from", &mut self.y_min).default(d.y_min).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("smallest Y of the grid"),
-            Control::number("y_max", "Y to", &mut self.y_max).default(d.y_max).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("largest Y of the grid"),
+            Control::number("gamma", "fixed γ", &mut self.gamma)
+                .default(d.gamma)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("γ when held fixed"),
+            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min)
+                .default(d.t_vis_min)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("smallest T_vis of the grid"),
+            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max)
+                .default(d.t_vis_max)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("largest T_vis of the grid"),
+            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis)
+                .default(d.n_t_vis)
+                .range(2.0, 100.0)
+                .doc("grid points in T_vis"),
+            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis)
+                .default(d.fix_t_vis)
+                .doc("do not fit T_vis"),
+            Control::number("t_vis", "fixed T_vis", &mut self.t_vis)
+                .default(d.t_vis)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("T_vis when held fixed"),
+            Control::number("y_min", "Y from", &mut self.y_min)
+                .default(d.y_min)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("smallest Y of the grid"),
+            Control::number("y_max", "Y to", &mut self.y_max)
+                .default(d.y_max)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("largest Y of the grid"),
             Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2.0, 100.0).doc("grid points in Y"),
             Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
-            Control::number("yield_strength", "fixed Y", &mut self.yield_strength).default(d.yield_strength).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("Y when held fixed"),
+            Control::number("yield_strength", "fixed Y", &mut self.yield_strength)
+                .default(d.yield_strength)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("Y when held fixed"),
             quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("integrator tolerance (default 1e-4)"),
         ]
     }

@@ -3,14 +3,14 @@
 //! JKR curves, and its energy budget.
 
 use super::common::{CollisionParams, reference_curves};
-use crate::scene::quantities;
-use crate::scene::timeline::{self, Mark};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Cursor, Extra, Trajectory, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::collision::{Options, Outcome, collide};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Extra, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory};
+use crate::scene::quantities;
+use crate::scene::timeline::{self, Mark};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
@@ -54,7 +54,12 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
             ("elastic-force".to_string(), Mark::Point([s[1] * 1e9, s[3] * 1e6], None)),
         ];
         marks.extend(timeline::along_x(out, "energy-budget", s[0] * 1e9));
-        Some(Cursor { fraction: p.cursor, label: format!("t = {} ns", crate::figure::human(s[0] * 1e9)), marks, optional: false })
+        Some(Cursor {
+            fraction: p.cursor,
+            label: format!("t = {} ns", crate::figure::human(s[0] * 1e9)),
+            marks,
+            optional: false,
+        })
     }
 }
 
@@ -82,9 +87,18 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.collision.controls(&d.collision);
-        c.push(Control::number("follow", "follow sticking", &mut self.follow).default(d.follow).unit("t_H").range(0.0, 50.0).doc("Hertz times to follow a sticking collision after sticking is certain"));
         c.push(
-            quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time of the sketch, as a fraction of the run").style_only(),
+            Control::number("follow", "follow sticking", &mut self.follow)
+                .default(d.follow)
+                .unit("t_H")
+                .range(0.0, 50.0)
+                .doc("Hertz times to follow a sticking collision after sticking is certain"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time of the sketch, as a fraction of the run")
+                .style_only(),
         );
         c
     }
@@ -206,7 +220,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         radius_2: if c.wall { f64::INFINITY } else { c.radius_2 },
         samples: run.samples.iter().map(|s| [s.t, s.delta, s.radius, s.elastic_force]).collect(),
     };
-    Ok(SceneOutput { warnings: Vec::new(),
+    Ok(SceneOutput {
+        warnings: Vec::new(),
         scalars,
         figures: vec![fig_a, fig_f, fig_e],
         notes,

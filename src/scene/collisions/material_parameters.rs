@@ -2,12 +2,12 @@
 //! surface energies, yield strengths and relaxation times of the 17
 //! experiments against size.
 
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::contact::Pair;
 use crate::physics::experiments::{Bounded, experiments};
 use crate::physics::material::{Material, combined_modulus};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -59,8 +59,12 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::toggle("lifshitz_kolsky", "Lifshitz & Kolsky point", &mut self.lifshitz_kolsky).default(d.lifshitz_kolsky).doc("steel, R = 3.18 mm, v_y = 0.3 m/s"),
-            Control::toggle("guides", "power-law guides", &mut self.guides).default(d.guides).doc("Y ~ l^{-1/2} and Y ~ l^{-1}"),
+            Control::toggle("lifshitz_kolsky", "Lifshitz & Kolsky point", &mut self.lifshitz_kolsky)
+                .default(d.lifshitz_kolsky)
+                .doc("steel, R = 3.18 mm, v_y = 0.3 m/s"),
+            Control::toggle("guides", "power-law guides", &mut self.guides)
+                .default(d.guides)
+                .doc("Y ~ l^{-1/2} and Y ~ l^{-1}"),
         ]
     }
 }

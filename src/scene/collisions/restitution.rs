@@ -3,13 +3,15 @@
 //! velocity against radius for several relaxation times.
 
 use super::common::CollisionParams;
-use crate::scene::controls::{Control, LogRange, ParamError};
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Scale, Series, Style, human};
-use crate::physics::collision::{Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_velocity};
-use crate::solver::sampling::{Refined, interpolate, refine};
+use crate::physics::collision::{
+    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_velocity,
+};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::solver::sampling::{Refined, interpolate, refine};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -102,17 +104,80 @@ impl Params {
         let d = Self::default();
         let mut c = self.collision.controls(&d.collision);
         let v = ("m/s", 1.0);
-        c.push(Control::number("v_min", "lowest velocity", &mut self.v_min).default(d.v_min).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("start of e(v)"));
-        c.push(Control::number("v_max", "highest velocity", &mut self.v_max).default(d.v_max).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("end of e(v)"));
-        c.push(Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(2.0, 2000.0).doc("points of e(v)"));
+        c.push(
+            Control::number("v_min", "lowest velocity", &mut self.v_min)
+                .default(d.v_min)
+                .unit("m s^-1")
+                .shown(v.0, v.1)
+                .range(1e-3, 1e3)
+                .log()
+                .doc("start of e(v)"),
+        );
+        c.push(
+            Control::number("v_max", "highest velocity", &mut self.v_max)
+                .default(d.v_max)
+                .unit("m s^-1")
+                .shown(v.0, v.1)
+                .range(1e-3, 1e3)
+                .log()
+                .doc("end of e(v)"),
+        );
+        c.push(
+            Control::count("n_velocities", "velocities", &mut self.n_velocities)
+                .default(d.n_velocities)
+                .range(2.0, 2000.0)
+                .doc("points of e(v)"),
+        );
         let um = ("µm", 1e6);
-        c.push(Control::number("r_min", "smallest reduced radius", &mut self.r_min).default(d.r_min).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("start of e(R), v_s(R)"));
-        c.push(Control::number("r_max", "largest reduced radius", &mut self.r_max).default(d.r_max).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("end of e(R), v_s(R)"));
-        c.push(Control::count("n_radii", "radii", &mut self.n_radii).default(d.n_radii).range(2.0, 200.0).doc("points of e(R) and v_s(R)"));
+        c.push(
+            Control::number("r_min", "smallest reduced radius", &mut self.r_min)
+                .default(d.r_min)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("start of e(R), v_s(R)"),
+        );
+        c.push(
+            Control::number("r_max", "largest reduced radius", &mut self.r_max)
+                .default(d.r_max)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("end of e(R), v_s(R)"),
+        );
+        c.push(
+            Control::count("n_radii", "radii", &mut self.n_radii)
+                .default(d.n_radii)
+                .range(2.0, 200.0)
+                .doc("points of e(R) and v_s(R)"),
+        );
         let s = ("s", 1.0);
-        c.push(Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("first v_s(R) curve"));
-        c.push(Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("last v_s(R) curve"));
-        c.push(Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis).default(d.n_t_vis).range(1.0, 8.0).doc("curves of v_s(R)"));
+        c.push(
+            Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min)
+                .default(d.t_vis_min)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-8)
+                .log()
+                .doc("first v_s(R) curve"),
+        );
+        c.push(
+            Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max)
+                .default(d.t_vis_max)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-8)
+                .log()
+                .doc("last v_s(R) curve"),
+        );
+        c.push(
+            Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis)
+                .default(d.n_t_vis)
+                .range(1.0, 8.0)
+                .doc("curves of v_s(R)"),
+        );
         c
     }
 

@@ -1,11 +1,11 @@
 //! Scene "Critical energies" (thesis Fig. 6.1 bottom): the specific energy to
 //! split a body against size, beside catastrophic-disruption fits.
 
-use crate::scene::controls::{Control, LogRange};
 use super::common::materials;
-use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{BENZ_ASPHAUG_3KMS, splitting_energy};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -62,11 +62,31 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::number("eta_low", "low efficiency η", &mut self.eta_low).default(d.eta_low).range(1e-6, 1.0).log().doc("dotted curves"),
-            Control::number("eta_high", "high efficiency η", &mut self.eta_high).default(d.eta_high).range(1e-6, 1.0).log().doc("dashed curves"),
-            Control::number("s_min", "smallest size", &mut self.s_min).default(d.s_min).unit("m").range(1e-9, 1e6).log().doc("start of the size axis"),
-            Control::number("s_max", "largest size", &mut self.s_max).default(d.s_max).unit("m").range(1e-9, 1e7).log().doc("end of the size axis"),
-            Control::toggle("disruption_fits", "disruption fits", &mut self.disruption_fits).default(d.disruption_fits).doc("Benz & Asphaug (1999), 3 km/s"),
+            Control::number("eta_low", "low efficiency η", &mut self.eta_low)
+                .default(d.eta_low)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("dotted curves"),
+            Control::number("eta_high", "high efficiency η", &mut self.eta_high)
+                .default(d.eta_high)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("dashed curves"),
+            Control::number("s_min", "smallest size", &mut self.s_min)
+                .default(d.s_min)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("start of the size axis"),
+            Control::number("s_max", "largest size", &mut self.s_max)
+                .default(d.s_max)
+                .unit("m")
+                .range(1e-9, 1e7)
+                .log()
+                .doc("end of the size axis"),
+            Control::toggle("disruption_fits", "disruption fits", &mut self.disruption_fits)
+                .default(d.disruption_fits)
+                .doc("Benz & Asphaug (1999), 3 km/s"),
         ]
     }
 }
@@ -126,5 +146,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "",
         },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -1,11 +1,11 @@
 //! Scene "Debris disks" (thesis Fig. 6.2): the smallest fragment relative to
 //! the blow-out size against disk radius, with observed systems.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{AU, ratio_to_blowout, ratio_to_blowout_printed};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -86,12 +86,31 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::number("gamma", "surface energy γ", &mut self.gamma).default(d.gamma).unit("J m^-2").shown("J/m²", 1.0).range(1e-5, 10.0).log().doc("surface energy per unit surface"),
+            Control::number("gamma", "surface energy γ", &mut self.gamma)
+                .default(d.gamma)
+                .unit("J m^-2")
+                .shown("J/m²", 1.0)
+                .range(1e-5, 10.0)
+                .log()
+                .doc("surface energy per unit surface"),
             quantities::efficiency(&mut self.eta).default(d.eta).doc("fraction of kinetic energy into surface"),
-            Control::number("f", "velocity factor f", &mut self.f).default(d.f).range(1e-4, 1.0).log().doc("v_rel / v_K = (1.25e² + i²)^{1/2}"),
-            Control::number("luminosity", "luminosity L", &mut self.luminosity).default(d.luminosity).unit("L_sun").range(1e-3, 1e3).log().doc("star of the reference line"),
-            Control::toggle("show_printed", "printed (6.8)", &mut self.show_printed).default(d.show_printed).doc("the printed prefactor 2.4"),
-            Control::toggle("systems", "observed systems", &mut self.systems).default(d.systems).doc("Fomalhaut, HD 105, cold disks"),
+            Control::number("f", "velocity factor f", &mut self.f)
+                .default(d.f)
+                .range(1e-4, 1.0)
+                .log()
+                .doc("v_rel / v_K = (1.25e² + i²)^{1/2}"),
+            Control::number("luminosity", "luminosity L", &mut self.luminosity)
+                .default(d.luminosity)
+                .unit("L_sun")
+                .range(1e-3, 1e3)
+                .log()
+                .doc("star of the reference line"),
+            Control::toggle("show_printed", "printed (6.8)", &mut self.show_printed)
+                .default(d.show_printed)
+                .doc("the printed prefactor 2.4"),
+            Control::toggle("systems", "observed systems", &mut self.systems)
+                .default(d.systems)
+                .doc("Fomalhaut, HD 105, cold disks"),
         ]
     }
 }

@@ -1,11 +1,11 @@
 //! Scene "Smallest fragment" (thesis Fig. 6.1 top): the energy-limited
 //! smallest fragment against collider size.
 
-use crate::scene::controls::{Control, LogRange};
 use super::common::{FragmentParams, materials};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{smallest_fragment, splitting_limit};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -61,9 +61,30 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.collision.controls(&d.collision);
-        c.push(Control::number("s0_min", "smallest collider", &mut self.s0_min).default(d.s0_min).unit("m").range(1e-9, 1e6).log().doc("start of the collider-size axis"));
-        c.push(Control::number("s0_max", "largest collider", &mut self.s0_max).default(d.s0_max).unit("m").range(1e-9, 1e6).log().doc("end of the collider-size axis"));
-        c.push(Control::number("gravity_size", "self-gravity size", &mut self.gravity_size).default(d.gravity_size).unit("m").range(1.0, 1e5).log().doc("bodies above this are held by gravity"));
+        c.push(
+            Control::number("s0_min", "smallest collider", &mut self.s0_min)
+                .default(d.s0_min)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("start of the collider-size axis"),
+        );
+        c.push(
+            Control::number("s0_max", "largest collider", &mut self.s0_max)
+                .default(d.s0_max)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("end of the collider-size axis"),
+        );
+        c.push(
+            Control::number("gravity_size", "self-gravity size", &mut self.gravity_size)
+                .default(d.gravity_size)
+                .unit("m")
+                .range(1.0, 1e5)
+                .log()
+                .doc("bodies above this are held by gravity"),
+        );
         c
     }
 }
@@ -138,7 +159,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "m",
         });
     }
-    Ok(SceneOutput { warnings: Vec::new(),
+    Ok(SceneOutput {
+        warnings: Vec::new(),
         scalars,
         figures: vec![fig],
         notes: vec![

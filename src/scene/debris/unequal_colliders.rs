@@ -1,9 +1,9 @@
 //! Scene "Unequal colliders" (thesis Fig. 6.3, App. 6.B): the smallest
 //! fragment of a body s₀ hit by colliders of other sizes.
 
+use crate::figure::{Axis, Figure, Series, Style};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -58,10 +58,25 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio).default(d.erosive_ratio).range(1.0, 1e6).log().doc("mass ratio above which collisions erode"),
-            Control::number("kappa_min", "smallest κ", &mut self.kappa_min).default(d.kappa_min).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
-            Control::number("kappa_max", "largest κ", &mut self.kappa_max).default(d.kappa_max).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
-            Control::count("n_kappa", "κ curves", &mut self.n_kappa).default(d.n_kappa).range(1.0, 6.0).doc("curves of the erosion family"),
+            Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio)
+                .default(d.erosive_ratio)
+                .range(1.0, 1e6)
+                .log()
+                .doc("mass ratio above which collisions erode"),
+            Control::number("kappa_min", "smallest κ", &mut self.kappa_min)
+                .default(d.kappa_min)
+                .range(0.01, 100.0)
+                .log()
+                .doc("eroded mass / projectile mass"),
+            Control::number("kappa_max", "largest κ", &mut self.kappa_max)
+                .default(d.kappa_max)
+                .range(0.01, 100.0)
+                .log()
+                .doc("eroded mass / projectile mass"),
+            Control::count("n_kappa", "κ curves", &mut self.n_kappa)
+                .default(d.n_kappa)
+                .range(1.0, 6.0)
+                .doc("curves of the erosion family"),
         ]
     }
 }
@@ -127,5 +142,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "",
         },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -1,15 +1,17 @@
 //! Scene "Growth and drift tracks" (thesis Figs. 4.13, 4.14): m(t) and a(t)
 //! against R(t) from many starting radii.
 
-use crate::scene::quantities;
-use crate::scene::controls::{Control, LogRange};
 use super::common::GrowthParams;
-use crate::scene::core::{Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace};
-use crate::scene::inspect::{self, Inspection};
-use crate::scene::timeline;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{
+    Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace,
+};
+use crate::scene::inspect::{self, Inspection};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -47,7 +49,9 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             .iter()
             .enumerate()
             .filter(|(_, path)| path.figure == figure)
-            .filter_map(|(k, path)| inspect::nearest(fig, path.points.iter().copied(), at, 0.06).map(|(i, d)| (k, i, d)))
+            .filter_map(|(k, path)| {
+                inspect::nearest(fig, path.points.iter().copied(), at, 0.06).map(|(i, d)| (k, i, d))
+            })
             .min_by(|a, b| a.2.total_cmp(&b.2))?;
         let path = &paths[k];
         let compact = path.color == Some(1);
@@ -60,7 +64,14 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
         let track = model.run(r0, p.duration_yr * YEAR);
         let q = track.points.get(i).or(track.points.last())?;
         let mut rows = vec![
-            inspect::row("track", format!("{} growth from {} AU", if compact { "compact" } else { "porous" }, crate::figure::human(r0 / AU))),
+            inspect::row(
+                "track",
+                format!(
+                    "{} growth from {} AU",
+                    if compact { "compact" } else { "porous" },
+                    crate::figure::human(r0 / AU)
+                ),
+            ),
             inspect::row("time t", inspect::value(q.t / YEAR, "yr")),
         ];
         rows.extend(super::common::aggregate_rows(&p.growth.disk, q.r, q.mass, q.filling, q.t_grow));
@@ -82,7 +93,7 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             rows,
             bars: None,
             outcome: Some(end),
-            actions: vec![super::common::column_action(&p.growth.disk, q.r / AU)],
+            actions: vec![crate::scene::registry::column_action(&p.growth.disk, q.r / AU)],
             point: path.points[i],
         })
     }
@@ -137,13 +148,49 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.growth.controls(&d.growth);
-        c.push(Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact).default(d.v_frag_compact).unit("m s^-1").shown("m/s", 1.0).range(0.1, 1e3).log().doc("fragmentation velocity of compact grains"));
-        c.push(Control::number("r_min_au", "innermost start", &mut self.r_min_au).default(d.r_min_au).unit("AU").range(1.1, 300.0).log().doc("first starting radius"));
-        c.push(Control::number("r_max_au", "outermost start", &mut self.r_max_au).default(d.r_max_au).unit("AU").range(1.1, 1000.0).log().doc("last starting radius"));
-        c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1.0, 200.0).doc("starting radii, log-spaced"));
+        c.push(
+            Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact)
+                .default(d.v_frag_compact)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(0.1, 1e3)
+                .log()
+                .doc("fragmentation velocity of compact grains"),
+        );
+        c.push(
+            Control::number("r_min_au", "innermost start", &mut self.r_min_au)
+                .default(d.r_min_au)
+                .unit("AU")
+                .range(1.1, 300.0)
+                .log()
+                .doc("first starting radius"),
+        );
+        c.push(
+            Control::number("r_max_au", "outermost start", &mut self.r_max_au)
+                .default(d.r_max_au)
+                .unit("AU")
+                .range(1.1, 1000.0)
+                .log()
+                .doc("last starting radius"),
+        );
+        c.push(
+            Control::count("tracks", "tracks", &mut self.tracks)
+                .default(d.tracks)
+                .range(1.0, 200.0)
+                .doc("starting radii, log-spaced"),
+        );
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
-        c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time at which every track is marked, as a fraction of the run in log time").style_only());
+        c.push(
+            Control::toggle("compact", "compact tracks", &mut self.compact)
+                .default(d.compact)
+                .doc("also run compact growth"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time at which every track is marked, as a fraction of the run in log time")
+                .style_only(),
+        );
         c
     }
 
@@ -264,8 +311,24 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
     for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
         let color = Some(color);
         let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
-        paths.push(TimedPath { figure: "growth-tracks-mass".into(), color, times: times.clone(), points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect() });
-        paths.push(TimedPath { figure: "growth-tracks-size".into(), color, times, points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect() });
+        paths.push(TimedPath {
+            figure: "growth-tracks-mass".into(),
+            color,
+            times: times.clone(),
+            points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect(),
+        });
+        paths.push(TimedPath {
+            figure: "growth-tracks-size".into(),
+            color,
+            times,
+            points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect(),
+        });
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: Extra::Paths(std::sync::Arc::new(paths)) })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig_m, fig_a],
+        notes: Vec::new(),
+        extra: Extra::Paths(std::sync::Arc::new(paths)),
+    })
 }

@@ -1,11 +1,11 @@
 //! Scene "Mass–porosity track" (thesis Figs. 4.8, 5.2): the filling factor of
 //! the mass-dominating particle against its mass.
 
-use crate::scene::controls::Control;
 use super::common::TrackParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::growth::{Porosity, Track};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 
 /// The scene (see [`Scene`]).
 pub struct PorosityTrack;
@@ -105,5 +105,11 @@ pub fn compute(p: &TrackParams) -> Result<SceneOutput, SceneError> {
             unit: "s",
         });
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

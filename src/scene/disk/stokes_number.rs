@@ -1,13 +1,13 @@
 //! Scene "Stokes number" (thesis Fig. 4.1): Ωt_s against mass for compact
 //! grains and porous aggregates, with and without Newton drag.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::{Aggregate, DragRegime, stopping_time};
 use crate::physics::constants::AU;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -72,8 +72,19 @@ impl Params {
         let d = Self::default();
         let mut c = self.disk.controls(&d.disk);
         c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
-        c.push(Control::number("porous_filling", "porous φ", &mut self.porous_filling).default(d.porous_filling).range(1e-6, 1.0).log().doc("filling factor of the constant-φ family"));
-        c.push(Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension).default(d.fractal_dimension).range(1.5, 3.0).doc("D_f of the fractal family"));
+        c.push(
+            Control::number("porous_filling", "porous φ", &mut self.porous_filling)
+                .default(d.porous_filling)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("filling factor of the constant-φ family"),
+        );
+        c.push(
+            Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension)
+                .default(d.fractal_dimension)
+                .range(1.5, 3.0)
+                .doc("D_f of the fractal family"),
+        );
         c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of the mass axis"));
         c
     }
@@ -152,9 +163,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             colours[k],
         ));
     }
-    fig = fig
-        .with(Series::new("Ωt_s = 1", vec![[1.0, 1.0], [p.max_monomers, 1.0]], Style::Dashed, 6))
-        .with(Series::new(
+    fig =
+        fig.with(Series::new("Ωt_s = 1", vec![[1.0, 1.0], [p.max_monomers, 1.0]], Style::Dashed, 6)).with(Series::new(
             format!("Ωt_s = α = {}", crate::figure::human(env.alpha)),
             vec![[1.0, env.alpha], [p.max_monomers, env.alpha]],
             Style::Dashed,
@@ -169,5 +179,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     scalars
         .push(Scalar { key: "mean_free_path", label: "mean free path λ_mfp", value: env.mean_free_path, unit: "m" });
     scalars.push(Scalar { key: "monomer_mass", label: "monomer mass m₀", value: m0, unit: "kg" });
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

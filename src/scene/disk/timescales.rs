@@ -1,12 +1,12 @@
 //! Scene "Timescales" (thesis Figs. 4.5, 4.7): growth and drift times of the
 //! mass-dominating particle against its mass.
 
-use crate::scene::controls::Control;
 use super::common::TrackParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::YEAR;
 use crate::physics::growth::Porosity;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -51,7 +51,11 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.track.controls(&d.track);
-        c.push(Control::toggle("collisional_only", "collisional compaction only", &mut self.collisional_only).default(d.collisional_only).doc("Fig. 4.5 instead of Fig. 4.7"));
+        c.push(
+            Control::toggle("collisional_only", "collisional compaction only", &mut self.collisional_only)
+                .default(d.collisional_only)
+                .doc("Fig. 4.5 instead of Fig. 4.7"),
+        );
         c
     }
 }
@@ -84,5 +88,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "s",
         },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -2,12 +2,12 @@
 //! exact solutions of the Smoluchowski equation for the constant, linear and
 //! product kernels (thesis Sect. 4.3; Ormel & Spaans 2008).
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::PhysicsError;
 use crate::physics::monte_carlo::{Analytic, Body, Engine, Settings};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -262,5 +262,11 @@ pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneErro
         Scalar { key: "decades", label: "decades resolved below the peak", value: (peak / lowest).log10(), unit: "" },
         Scalar { key: "events", label: "group events per run", value: events, unit: "" },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig, err], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig, err],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -3,11 +3,11 @@
 //! three erosion thresholds.
 
 use super::common::{ColumnParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
@@ -73,7 +73,15 @@ impl Params {
             ("v_eros_2", "v_eros (second)", &mut self.v_eros_2, d.v_eros_2),
             ("v_eros_3", "v_eros (third)", &mut self.v_eros_3, d.v_eros_3),
         ] {
-            c.push(Control::number(key, label, value).unit("m s^-1").shown(v.0, v.1).range(1.0, 1e4).log().default(default).doc("erosion threshold of one set of runs"));
+            c.push(
+                Control::number(key, label, value)
+                    .unit("m s^-1")
+                    .shown(v.0, v.1)
+                    .range(1.0, 1e4)
+                    .log()
+                    .default(default)
+                    .doc("erosion threshold of one set of runs"),
+            );
         }
         c
     }
@@ -211,5 +219,11 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             notes.push(format!("v_eros = {v} m/s, {line}"));
         }
     }
-    SceneOutput { warnings: Vec::new(), scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None }
+    SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![zeta, proj],
+        notes,
+        extra: crate::scene::core::Extra::None,
+    }
 }

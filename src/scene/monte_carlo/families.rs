@@ -3,14 +3,14 @@
 //! the peak track φ_p(m_p) and the semi-analytical track for comparison.
 
 use super::common::{ColumnParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::Aggregate;
 use crate::physics::coagulation::{FamilyPoint, Run};
-use crate::scene::inspect::{self, Inspection};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::inspect::{self, Inspection};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -114,7 +114,11 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::toggle("track", "semi-analytical track", &mut self.track).default(d.track).doc("the Sect. 4.5 model for comparison"));
+        c.push(
+            Control::toggle("track", "semi-analytical track", &mut self.track)
+                .default(d.track)
+                .doc("the Sect. 4.5 model for comparison"),
+        );
         c
     }
 }
@@ -167,7 +171,8 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     if runs.len() > 1 {
         notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
     }
-    SceneOutput { warnings: Vec::new(),
+    SceneOutput {
+        warnings: Vec::new(),
         scalars: super::common::summary(runs),
         figures: vec![fig],
         notes,

@@ -3,13 +3,13 @@
 //! over runs, with the growth and drift timescales of the peak mass.
 
 use super::common::{ColumnParams, RunCache, endings, summary};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::coagulation::{Run, Sample, mass_distribution};
 use crate::physics::constants::YEAR;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -78,8 +78,18 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time").style_only());
+        c.push(
+            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade)
+                .default(d.bins_per_decade)
+                .range(1.0, 10.0)
+                .doc("histogram"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time")
+                .style_only(),
+        );
         c
     }
 }
@@ -177,7 +187,8 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
                 1,
             ));
     }
-    SceneOutput { warnings: Vec::new(),
+    SceneOutput {
+        warnings: Vec::new(),
         scalars: summary(runs),
         figures: vec![dist, times, peak],
         notes: endings(runs),

@@ -2,11 +2,11 @@
 //! pressure distribution of a contact made of two half-discs, its torque
 //! contributions, and a side view.
 
-use crate::scene::controls::Control;
 use super::common::RollingParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Fill, Heatmap, Series, Shape, Style};
 use crate::physics::rolling::{HalfDiscs, small_asymmetry_torque};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -64,8 +64,18 @@ impl Params {
     pub fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.contact.controls(&d.contact, true);
-        c.push(Control::number("xi_over_a", "asymmetry ξ/a", &mut self.xi_over_a).default(d.xi_over_a).range(0.0, 0.5).doc("rolling displacement relative to a_eq"));
-        c.push(Control::count("cells", "map cells", &mut self.cells).default(d.cells).range(11.0, 301.0).doc("resolution of the maps"));
+        c.push(
+            Control::number("xi_over_a", "asymmetry ξ/a", &mut self.xi_over_a)
+                .default(d.xi_over_a)
+                .range(0.0, 0.5)
+                .doc("rolling displacement relative to a_eq"),
+        );
+        c.push(
+            Control::count("cells", "map cells", &mut self.cells)
+                .default(d.cells)
+                .range(11.0, 301.0)
+                .doc("resolution of the maps"),
+        );
         c
     }
 }
@@ -106,28 +116,28 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     clip(&mut moment);
     let nm: Vec<f64> = centres.iter().map(|v| v * 1e9).collect();
     let markers = |fig: Figure| {
-        fig.with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Symbol(Shape::Plus, Fill::Filled), 1)).with(Series::new(
-            "centre of contact",
-            vec![[-xi * 1e9, 0.0]],
-            Style::Marker,
-            3,
-        ))
+        fig.with(Series::new("centre of mass", vec![[0.0, 0.0]], Style::Symbol(Shape::Plus, Fill::Filled), 1))
+            .with(Series::new("centre of contact", vec![[-xi * 1e9, 0.0]], Style::Marker, 3))
     };
-    let mut fig_p = markers(Figure::new(
-        "pressure-map",
-        "Pressure p(x, y) (Fig. 3.2A)",
-        Axis::linear("x (rolling direction)", "nm"),
-        Axis::linear("y", "nm"),
-    )
-    .square());
+    let mut fig_p = markers(
+        Figure::new(
+            "pressure-map",
+            "Pressure p(x, y) (Fig. 3.2A)",
+            Axis::linear("x (rolling direction)", "nm"),
+            Axis::linear("y", "nm"),
+        )
+        .square(),
+    );
     fig_p.heatmap = Some(Heatmap::new(nm.clone(), nm.clone(), pressure, "pressure (clipped)", "MPa"));
-    let mut fig_m = markers(Figure::new(
-        "torque-map",
-        "Torque contributions x·p (Fig. 3.2B)",
-        Axis::linear("x (rolling direction)", "nm"),
-        Axis::linear("y", "nm"),
-    )
-    .square());
+    let mut fig_m = markers(
+        Figure::new(
+            "torque-map",
+            "Torque contributions x·p (Fig. 3.2B)",
+            Axis::linear("x (rolling direction)", "nm"),
+            Axis::linear("y", "nm"),
+        )
+        .square(),
+    );
     fig_m.heatmap = Some(Heatmap::new(nm.clone(), nm, moment, "x·p (clipped)", "N/m"));
 
     // Side view near the contact: sphere surface above the flat, exaggerated vertically.
@@ -166,7 +176,8 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         Scalar { key: "g2", label: "release rate G₂", value: g2, unit: "J m^-2" },
         Scalar { key: "tabor", label: "Tabor parameter μ (z₀ = 0.3 nm)", value: pair.tabor(3e-10), unit: "" },
     ];
-    Ok(SceneOutput { warnings: Vec::new(),
+    Ok(SceneOutput {
+        warnings: Vec::new(),
         scalars,
         figures: vec![fig_p, fig_m, fig_s],
         notes: vec![

@@ -1,12 +1,12 @@
 //! Scene "Critical displacement" (thesis Fig. 3.4): the rolling displacement
 //! at which a pinned contact starts to roll, against radius.
 
-use crate::scene::controls::{Control, LogRange};
 use super::common::family;
 use super::common::{RollingParams, family_controls};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::rolling::critical_displacement;
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -85,7 +85,11 @@ impl Params {
             (&mut self.h_min, &mut self.h_max, &mut self.n_h),
             ((d.r_min, d.r_max), (d.h_min, d.h_max, d.n_h)),
         ));
-        c.push(Control::toggle("ding_data", "Ding et al. range", &mut self.ding_data).default(d.ding_data).doc("73–94 nm at 22.5–26.8 µm diameter"));
+        c.push(
+            Control::toggle("ding_data", "Ding et al. range", &mut self.ding_data)
+                .default(d.ding_data)
+                .doc("73–94 nm at 22.5–26.8 µm diameter"),
+        );
         c
     }
 }
@@ -153,5 +157,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
             unit: "",
         },
     ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig],
+        notes: Vec::new(),
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -2,13 +2,13 @@
 //! sideways rocks on its pinned contact at f₀, rolls once ξ passes ξ_crit,
 //! and is damped by the bulk loss of quality factor Q.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
 use super::common::RollingParams;
-use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
-use crate::scene::timeline;
 use crate::physics::rolling::{Rocking as RockingModel, RockingSample, critical_displacement, small_asymmetry_torque};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -50,7 +50,12 @@ Q/π periods (3.25): Peri & Cetinkaya's rocking dies out in ~10 periods, Q ~ 30.
             .iter()
             .flat_map(|id| timeline::along_x(out, id, t))
             .collect();
-        Some(Cursor { fraction: p.cursor, label: format!("t = {} µs", crate::figure::human(t)), marks, optional: false })
+        Some(Cursor {
+            fraction: p.cursor,
+            label: format!("t = {} µs", crate::figure::human(t)),
+            marks,
+            optional: false,
+        })
     }
 }
 
@@ -95,11 +100,32 @@ impl Params {
         let mut c = self.contact.controls(&d.contact, true);
         c.push(crate::scene::quantities::hysteresis(&mut self.hysteresis).default(d.hysteresis));
         c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss; 1e12 ≈ none"));
-        c.push(Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude).default(d.kick_amplitude).range(1e-4, 1.0).log().doc("amplitude the kick gives an undamped pinned contact"));
-        c.push(Control::number("periods", "duration", &mut self.periods).default(d.periods).unit("periods").range(1.0, 200.0).log().doc("length of the run"));
-        c.push(Control::count("steps_per_period", "steps per period", &mut self.steps_per_period).default(d.steps_per_period).range(20.0, 5000.0).doc("Runge–Kutta steps per period"));
         c.push(
-            quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time of the marker, fraction of the run").style_only(),
+            Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude)
+                .default(d.kick_amplitude)
+                .range(1e-4, 1.0)
+                .log()
+                .doc("amplitude the kick gives an undamped pinned contact"),
+        );
+        c.push(
+            Control::number("periods", "duration", &mut self.periods)
+                .default(d.periods)
+                .unit("periods")
+                .range(1.0, 200.0)
+                .log()
+                .doc("length of the run"),
+        );
+        c.push(
+            Control::count("steps_per_period", "steps per period", &mut self.steps_per_period)
+                .default(d.steps_per_period)
+                .range(20.0, 5000.0)
+                .doc("Runge–Kutta steps per period"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time of the marker, fraction of the run")
+                .style_only(),
         );
         c
     }
@@ -109,7 +135,8 @@ impl Params {
         let r = self.contact.radius;
         let pair = self.contact.pair(r);
         let inertia = self.contact.inertia(r);
-        let kick = RockingModel::kick_for_amplitude(&pair, inertia, self.kick_amplitude * pair.jkr_equilibrium_radius());
+        let kick =
+            RockingModel::kick_for_amplitude(&pair, inertia, self.kick_amplitude * pair.jkr_equilibrium_radius());
         RockingModel { pair, inertia, hysteresis: self.hysteresis, q: self.q, kick }
     }
 }
@@ -201,5 +228,11 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
     } else {
         "The contact stayed pinned: the sphere rocks about its contact.".to_string()
     }];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_xi, fig_e, fig_r], notes, extra: crate::scene::core::Extra::None })
+    Ok(SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![fig_xi, fig_e, fig_r],
+        notes,
+        extra: crate::scene::core::Extra::None,
+    })
 }

@@ -2,12 +2,12 @@
 //! F = M/R from adhesion hysteresis against radius, with the Dominik &
 //! Tielens and bulk-loss lines and the measured silica forces.
 
-use crate::scene::quantities;
-use crate::scene::controls::{Control, LogRange};
 use super::common::{RollingParams, family, family_controls};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::rolling::{bulk_torque, rolling_force, rolling_torque, small_asymmetry_torque};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The scene (see [`Scene`]).
@@ -108,9 +108,21 @@ impl Params {
             (&mut self.h_min, &mut self.h_max, &mut self.n_h),
             ((d.r_min, d.r_max), (d.h_min, d.h_max, d.n_h)),
         ));
-        c.push(Control::number("xi_dt", "DT displacement ξ", &mut self.xi_dt).default(d.xi_dt).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("ξ of the Dominik & Tielens line"));
+        c.push(
+            Control::number("xi_dt", "DT displacement ξ", &mut self.xi_dt)
+                .default(d.xi_dt)
+                .unit("m")
+                .shown("nm", 1e9)
+                .range(1e-11, 1e-8)
+                .log()
+                .doc("ξ of the Dominik & Tielens line"),
+        );
         c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss line (3.22)"));
-        c.push(Control::toggle("silica_data", "silica measurements", &mut self.silica_data).default(d.silica_data).doc("Heim, Blum & Wurm, Gundlach"));
+        c.push(
+            Control::toggle("silica_data", "silica measurements", &mut self.silica_data)
+                .default(d.silica_data)
+                .doc("Heim, Blum & Wurm, Gundlach"),
+        );
         c
     }
 }
@@ -147,12 +159,7 @@ pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
         let pair = c.pair(r);
         [x(r), rolling_force(&pair, bulk_torque(&pair, p.q))]
     });
-    fig = fig.with(Series::new(
-        format!("bulk, Q = {}", crate::figure::human(p.q)),
-        bulk.collect(),
-        Style::Dotted,
-        7,
-    ));
+    fig = fig.with(Series::new(format!("bulk, Q = {}", crate::figure::human(p.q)), bulk.collect(), Style::Dotted, 7));
 
     let mut scalars = Vec::new();
     let mut notes = Vec::new();

@@ -5,7 +5,8 @@
 //! except to open another scene from an inspected point ([`column_action`]).
 //!
 //! Adding a scene: declare its module in its chapter in [`crate::scene`] and
-//! add the line `my_scene::MyScene,` to its chapter in the list below.
+//! add the line `my_scene::MyScene,` (the module and the variant of
+//! [`SceneParams`] for its `Params`) to its chapter in the list below.
 
 use super::controls::{Control, ControlKind, DefaultValue, ParamError};
 use super::core::{Caches, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
@@ -15,7 +16,10 @@ use crate::physics::fit::Measurement;
 use serde::{Deserialize, Serialize};
 
 /// Generates, from the scenes of each chapter, the enum of scene parameters
-/// and the dispatch from it to each scene's [`Scene`] impl.
+/// and the dispatch from it to each scene's [`Scene`] impl. A macro because
+/// the dispatch is one `match` arm per scene in each of nine methods: written
+/// out, adding a scene would mean editing every `match`; here it is one line
+/// of the list (`module::Variant`, the scene's `Params` in `module`).
 macro_rules! scenes {
     ($( $(#[$chapter_doc:meta])* $chapter:ident { $( $module:ident :: $scene:ident ),* $(,)? } )*) => {
 
@@ -24,12 +28,12 @@ macro_rules! scenes {
         pub enum SceneParams {
             $($(
                 #[doc = concat!("Parameters of [`", stringify!($chapter), "::", stringify!($module), "`].")]
-                $scene(<$chapter::$module::$scene as Scene>::Params),
+                $scene($chapter::$module::Params),
             )*)*
         }
 
         /// All scenes, in the order of the scene list (by thesis chapter).
-        pub const SCENES: &[SceneInfo] = &[$($(<$chapter::$module::$scene as Scene>::INFO,)*)*];
+        pub const SCENES: &[SceneInfo] = &[$($(<$chapter::$module::Params as Scene>::INFO,)*)*];
 
         /// The chapter folder of every scene, in the order of [`SCENES`].
         const CHAPTER_OF: &[&str] = &[$($(first(stringify!($chapter), stringify!($module)),)*)*];
@@ -38,7 +42,7 @@ macro_rules! scenes {
             /// Default parameters of the scene with identifier `id`.
             pub fn default_for(id: &str) -> Option<SceneParams> {
                 $($(
-                    if id == <$chapter::$module::$scene as Scene>::INFO.id {
+                    if id == <$chapter::$module::Params as Scene>::INFO.id {
                         return Some(SceneParams::$scene(Default::default()));
                     }
                 )*)*
@@ -48,63 +52,63 @@ macro_rules! scenes {
             /// The scene's static description.
             pub fn info(&self) -> &'static SceneInfo {
                 match self {
-                    $($( SceneParams::$scene(_) => &<$chapter::$module::$scene as Scene>::INFO, )*)*
+                    $($( SceneParams::$scene(_) => &<$chapter::$module::Params as Scene>::INFO, )*)*
                 }
             }
 
             /// Whether the scene's computation can be paused.
             pub fn pausable(&self) -> bool {
                 match self {
-                    $($( SceneParams::$scene(_) => <$chapter::$module::$scene as Scene>::PAUSABLE, )*)*
+                    $($( SceneParams::$scene(_) => <$chapter::$module::Params as Scene>::PAUSABLE, )*)*
                 }
             }
 
             /// The documented parameters, with mutable access for the UI and `--set`.
             pub fn controls(&mut self) -> Vec<Control<'_>> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::controls(p), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::controls(p), )*)*
                 }
             }
 
             /// After a material was picked: re-derives what depends on it.
             pub fn material_changed(&mut self) {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::material_changed(p), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::material_changed(p), )*)*
                 }
             }
 
             /// The scene's time cursor over `out`, if it has one.
             pub fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::cursor(p, out), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::cursor(p, out), )*)*
                 }
             }
 
             /// What a click at `at` (axis units) on figure `figure` of `out` shows, if anything.
             pub fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<inspect::Inspection> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::inspect(p, out, figure, at), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::inspect(p, out, figure, at), )*)*
                 }
             }
 
             /// The cheaper parameters of the scene's preview, if it has one.
             pub fn coarse(&self) -> Option<SceneParams> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::coarse(p).map(SceneParams::$scene), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::coarse(p).map(SceneParams::$scene), )*)*
                 }
             }
 
             /// The imported measurements the scene works on, if it takes any.
             pub fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::measurements(p), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::measurements(p), )*)*
                 }
             }
 
             /// Computes the scene without validating first.
             fn dispatch(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::compute(p, ctx), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::compute(p, ctx), )*)*
                 }
             }
         }

@@ -16,45 +16,6 @@ use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-/// The scene (see [`Scene`]).
-pub struct Restitution;
-
-impl Scene for Restitution {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "restitution",
-        title: "Restitution",
-        source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
-        explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
-compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
-v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
-e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
-Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
-combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
-sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
-bounces to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
-e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    /// Six radii for e(R) and v_s(R) (the costly panels).
-    fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { n_radii: p.n_radii.min(6), ..p.clone() })
-    }
-
-    fn material_changed(p: &mut Params) {
-        p.collision.material_changed();
-    }
-}
-
 /// Parameters of the restitution scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields)]
@@ -99,8 +60,94 @@ impl Default for Params {
 }
 
 impl Params {
+    fn check_ranges(&self) -> Result<(), ParamError> {
+        LogRange::new("v_min/v_max", self.v_min, self.v_max, 2)?;
+        LogRange::new("r_min/r_max", self.r_min, self.r_max, 2)?;
+        // One T_vis curve is allowed: equal ends.
+        if self.t_vis_min != self.t_vis_max {
+            LogRange::new("t_vis_min/t_vis_max", self.t_vis_min, self.t_vis_max, 2)?;
+        }
+        Ok(())
+    }
+
+    /// The collision with equal spheres of reduced radius `r` (or a sphere of
+    /// radius `r` on a wall).
+    fn at_radius(&self, r: f64) -> CollisionParams {
+        let mut c = self.collision.clone();
+        if c.wall {
+            c.radius_1 = r;
+        } else {
+            c.radius_1 = 2.0 * r;
+            c.radius_2 = 2.0 * r;
+        }
+        c
+    }
+}
+
+/// Results of the three panels, kept so that a change of one parameter
+/// recomputes only the panels it touches.
+#[derive(Debug, Default, Clone)]
+pub struct Cache {
+    velocity: Option<(RangeKey, Panel)>,
+    radius: Option<(RangeKey, Panel)>,
+    sticking: Option<(RangeKey, (f64, f64, usize), Panel)>,
+}
+
+/// The inputs of a panel: collision parameters and a (low, high, count) range.
+type RangeKey = (CollisionParams, f64, f64, usize);
+
+#[derive(Debug, Clone)]
+struct Panel {
+    figure: Figure,
+    scalars: Vec<Scalar>,
+    notes: Vec<String>,
+}
+
+/// The collision parameters with the velocity cleared (for cache keys of
+/// panels that do not depend on it).
+fn without_velocity(c: &CollisionParams) -> CollisionParams {
+    CollisionParams { velocity: 0.0, ..c.clone() }
+}
+
+/// Runs `f` over `items` in parallel with progress and cancellation.
+fn par_map<T: Sync, R: Send>(
+    items: &[T],
+    progress: &Progress,
+    done: &AtomicUsize,
+    total: usize,
+    f: impl Fn(&T) -> Result<R, SceneError> + Sync + Send,
+) -> Result<Vec<R>, SceneError> {
+    items
+        .par_iter()
+        .map(|x| {
+            progress.check()?;
+            let r = f(x)?;
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / total as f64);
+            Ok(r)
+        })
+        .collect()
+}
+
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "restitution",
+        title: "Restitution",
+        source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
+        explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
+compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
+v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
+e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
+Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
+combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
+sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
+bounces to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
+e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
+        heavy: true,
+    };
+
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.collision.controls(&d.collision);
         let v = ("m/s", 1.0);
@@ -181,128 +228,71 @@ impl Params {
         c
     }
 
-    fn check_ranges(&self) -> Result<(), ParamError> {
-        LogRange::new("v_min/v_max", self.v_min, self.v_max, 2)?;
-        LogRange::new("r_min/r_max", self.r_min, self.r_max, 2)?;
-        // One T_vis curve is allowed: equal ends.
-        if self.t_vis_min != self.t_vis_max {
-            LogRange::new("t_vis_min/t_vis_max", self.t_vis_min, self.t_vis_max, 2)?;
+    /// Six radii for e(R) and v_s(R) (the costly panels).
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { n_radii: self.n_radii.min(6), ..self.clone() })
+    }
+
+    fn material_changed(&mut self) {
+        self.collision.material_changed();
+    }
+
+    /// Computes the scene, reusing panels of `cache` whose inputs did not change.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut Cache = ctx.caches.get();
+        p.check_ranges()?;
+        let key_c = without_velocity(&p.collision);
+        let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
+        let radii = logspace(p.r_min, p.r_max, p.n_radii);
+        let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
+            .into_iter()
+            .take(p.n_t_vis)
+            .collect();
+        let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
+        let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
+        // The v_s(R) panel draws its own T_vis family: the current T_vis is not
+        // among its inputs.
+        let key_s: RangeKey = (CollisionParams { t_vis: 0.0, ..key_c.clone() }, p.r_min, p.r_max, p.n_radii);
+        let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
+        let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
+        let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
+        let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
+        // Rough work units: a bisection costs ~20 collisions.
+        let total = usize::from(need_v) * (velocities.len() + 20)
+            + usize::from(need_r) * radii.len()
+            + usize::from(need_s) * radii.len() * t_vis.len() * 20;
+        let done = AtomicUsize::new(0);
+        let total = total.max(1);
+
+        if need_v {
+            let panel = velocity_panel(p, &velocities, progress, &done, total)?;
+            cache.velocity = Some((key_v, panel));
         }
-        Ok(())
-    }
-
-    /// The collision with equal spheres of reduced radius `r` (or a sphere of
-    /// radius `r` on a wall).
-    fn at_radius(&self, r: f64) -> CollisionParams {
-        let mut c = self.collision.clone();
-        if c.wall {
-            c.radius_1 = r;
-        } else {
-            c.radius_1 = 2.0 * r;
-            c.radius_2 = 2.0 * r;
+        if need_r {
+            let panel = radius_panel(p, &radii, progress, &done, total)?;
+            cache.radius = Some((key_r, panel));
         }
-        c
+        if need_s {
+            let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
+            cache.sticking = Some((key_s, family, panel));
+        }
+        let mut out = SceneOutput::default();
+        let panels = [
+            cache.velocity.as_ref().map(|x| &x.1),
+            cache.radius.as_ref().map(|x| &x.1),
+            cache.sticking.as_ref().map(|x| &x.2),
+        ];
+        for panel in panels.into_iter().flatten() {
+            out.figures.push(panel.figure.clone());
+            out.scalars.extend(panel.scalars.iter().cloned());
+            out.notes.extend(panel.notes.iter().cloned());
+        }
+        if p.collision.plasticity {
+            out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+        }
+        Ok(out)
     }
-}
-
-/// Results of the three panels, kept so that a change of one parameter
-/// recomputes only the panels it touches.
-#[derive(Debug, Default, Clone)]
-pub struct Cache {
-    velocity: Option<(RangeKey, Panel)>,
-    radius: Option<(RangeKey, Panel)>,
-    sticking: Option<(RangeKey, (f64, f64, usize), Panel)>,
-}
-
-/// The inputs of a panel: collision parameters and a (low, high, count) range.
-type RangeKey = (CollisionParams, f64, f64, usize);
-
-#[derive(Debug, Clone)]
-struct Panel {
-    figure: Figure,
-    scalars: Vec<Scalar>,
-    notes: Vec<String>,
-}
-
-/// The collision parameters with the velocity cleared (for cache keys of
-/// panels that do not depend on it).
-fn without_velocity(c: &CollisionParams) -> CollisionParams {
-    CollisionParams { velocity: 0.0, ..c.clone() }
-}
-
-/// Runs `f` over `items` in parallel with progress and cancellation.
-fn par_map<T: Sync, R: Send>(
-    items: &[T],
-    progress: &Progress,
-    done: &AtomicUsize,
-    total: usize,
-    f: impl Fn(&T) -> Result<R, SceneError> + Sync + Send,
-) -> Result<Vec<R>, SceneError> {
-    items
-        .par_iter()
-        .map(|x| {
-            progress.check()?;
-            let r = f(x)?;
-            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-            progress.set(n as f64 / total as f64);
-            Ok(r)
-        })
-        .collect()
-}
-
-/// Computes the scene, reusing panels of `cache` whose inputs did not change.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut Cache) -> Result<SceneOutput, SceneError> {
-    p.check_ranges()?;
-    let key_c = without_velocity(&p.collision);
-    let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
-    let radii = logspace(p.r_min, p.r_max, p.n_radii);
-    let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
-        .into_iter()
-        .take(p.n_t_vis)
-        .collect();
-    let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
-    let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
-    // The v_s(R) panel draws its own T_vis family: the current T_vis is not
-    // among its inputs.
-    let key_s: RangeKey = (CollisionParams { t_vis: 0.0, ..key_c.clone() }, p.r_min, p.r_max, p.n_radii);
-    let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
-    let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
-    let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
-    let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
-    // Rough work units: a bisection costs ~20 collisions.
-    let total = usize::from(need_v) * (velocities.len() + 20)
-        + usize::from(need_r) * radii.len()
-        + usize::from(need_s) * radii.len() * t_vis.len() * 20;
-    let done = AtomicUsize::new(0);
-    let total = total.max(1);
-
-    if need_v {
-        let panel = velocity_panel(p, &velocities, progress, &done, total)?;
-        cache.velocity = Some((key_v, panel));
-    }
-    if need_r {
-        let panel = radius_panel(p, &radii, progress, &done, total)?;
-        cache.radius = Some((key_r, panel));
-    }
-    if need_s {
-        let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
-        cache.sticking = Some((key_s, family, panel));
-    }
-    let mut out = SceneOutput::default();
-    let panels = [
-        cache.velocity.as_ref().map(|x| &x.1),
-        cache.radius.as_ref().map(|x| &x.1),
-        cache.sticking.as_ref().map(|x| &x.2),
-    ];
-    for panel in panels.into_iter().flatten() {
-        out.figures.push(panel.figure.clone());
-        out.scalars.extend(panel.scalars.iter().cloned());
-        out.notes.extend(panel.notes.iter().cloned());
-    }
-    if p.collision.plasticity {
-        out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
-    }
-    Ok(out)
 }
 
 /// Largest interpolation error of e(v) between adaptive samples: a sample is

@@ -15,11 +15,71 @@ use crate::scene::timeline;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-/// The scene (see [`Scene`]).
-pub struct GrowthTracks;
+/// Parameters of the growth-track scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The growth model (its v_frag applies to porous tracks).
+    pub growth: GrowthParams,
+    /// Fragmentation velocity of the compact tracks, m s⁻¹ (default 10).
+    pub v_frag_compact: f64,
+    /// Innermost starting radius, AU.
+    pub r_min_au: f64,
+    /// Outermost starting radius, AU.
+    pub r_max_au: f64,
+    /// Number of starting radii (default 30).
+    pub tracks: usize,
+    /// Duration, yr (default 10⁶).
+    pub duration_yr: f64,
+    /// Include the compact tracks.
+    pub compact: bool,
+    /// Time cursor, as a fraction of the run in log time (styling only).
+    pub cursor: f64,
+}
 
-impl Scene for GrowthTracks {
-    type Params = Params;
+impl Default for Params {
+    fn default() -> Self {
+        Params {
+            growth: GrowthParams::default(),
+            v_frag_compact: 10.0,
+            r_min_au: 3.0,
+            r_max_au: 300.0,
+            tracks: 30,
+            duration_yr: 1e6,
+            compact: true,
+            cursor: 0.0,
+        }
+    }
+}
+
+impl Params {
+    /// All tracks: (compact, porous), computed in parallel.
+    pub fn run(&self, progress: &Progress) -> Result<(Vec<Track>, Vec<Track>), SceneError> {
+        let starts = if self.tracks <= 1 {
+            vec![self.r_min_au]
+        } else {
+            logspace(self.r_min_au, self.r_max_au.max(self.r_min_au * 1.000001), self.tracks)
+        };
+        let porous = self.growth.model(Porosity::Full);
+        let mut compact = self.growth.model(Porosity::Compact);
+        compact.thresholds.v_frag = self.v_frag_compact;
+        let t_end = self.duration_yr * YEAR;
+        let run = |model: &crate::physics::growth::GrowthModel| -> Result<Vec<Track>, SceneError> {
+            starts
+                .par_iter()
+                .map(|&r| {
+                    progress.check()?;
+                    Ok(model.run(r * AU, t_end))
+                })
+                .collect()
+        };
+        let c = if self.compact { run(&compact)? } else { Vec::new() };
+        let p = run(&porous)?;
+        Ok((c, p))
+    }
+}
+
+impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "growth-tracks",
         title: "Growth and drift tracks",
@@ -33,15 +93,58 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
         heavy: true,
     };
 
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.growth.controls(&d.growth);
+        c.push(
+            Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact)
+                .default(d.v_frag_compact)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(0.1, 1e3)
+                .log()
+                .doc("fragmentation velocity of compact grains"),
+        );
+        c.push(
+            Control::number("r_min_au", "innermost start", &mut self.r_min_au)
+                .default(d.r_min_au)
+                .unit("AU")
+                .range(1.1, 300.0)
+                .log()
+                .doc("first starting radius"),
+        );
+        c.push(
+            Control::number("r_max_au", "outermost start", &mut self.r_max_au)
+                .default(d.r_max_au)
+                .unit("AU")
+                .range(1.1, 1000.0)
+                .log()
+                .doc("last starting radius"),
+        );
+        c.push(
+            Control::count("tracks", "tracks", &mut self.tracks)
+                .default(d.tracks)
+                .range(1.0, 200.0)
+                .doc("starting radii, log-spaced"),
+        );
+        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
+        c.push(
+            Control::toggle("compact", "compact tracks", &mut self.compact)
+                .default(d.compact)
+                .doc("also run compact growth"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time at which every track is marked, as a fraction of the run in log time")
+                .style_only(),
+        );
+        c
     }
 
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-
-    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+    fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let p = self;
         let Extra::Paths(paths) = &out.extra else { return None };
         let fig = inspect::figure(&out.figures, figure)?;
         // The nearest point of any track on the clicked figure.
@@ -98,237 +201,125 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
         })
     }
 
-    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+    fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+        let p = self;
         let Extra::Paths(paths) = &out.extra else { return None };
         let t = timeline::time_at(timeline::span(paths)?, p.cursor, crate::figure::Scale::Log);
         let marks = timeline::along_paths(paths, t);
         Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
     }
-}
 
-/// Parameters of the growth-track scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Params {
-    /// The growth model (its v_frag applies to porous tracks).
-    pub growth: GrowthParams,
-    /// Fragmentation velocity of the compact tracks, m s⁻¹ (default 10).
-    pub v_frag_compact: f64,
-    /// Innermost starting radius, AU.
-    pub r_min_au: f64,
-    /// Outermost starting radius, AU.
-    pub r_max_au: f64,
-    /// Number of starting radii (default 30).
-    pub tracks: usize,
-    /// Duration, yr (default 10⁶).
-    pub duration_yr: f64,
-    /// Include the compact tracks.
-    pub compact: bool,
-    /// Time cursor, as a fraction of the run in log time (styling only).
-    pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            growth: GrowthParams::default(),
-            v_frag_compact: 10.0,
-            r_min_au: 3.0,
-            r_max_au: 300.0,
-            tracks: 30,
-            duration_yr: 1e6,
-            compact: true,
-            cursor: 0.0,
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        if p.tracks > 1 {
+            LogRange::new("r_min_au/r_max_au", p.r_min_au, p.r_max_au, p.tracks)?;
         }
-    }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.growth.controls(&d.growth);
-        c.push(
-            Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact)
-                .default(d.v_frag_compact)
-                .unit("m s^-1")
-                .shown("m/s", 1.0)
-                .range(0.1, 1e3)
-                .log()
-                .doc("fragmentation velocity of compact grains"),
+        let (compact, porous) = p.run(progress)?;
+        let mut fig_m = Figure::new(
+            "growth-tracks-mass",
+            "Peak mass against radius (Fig. 4.13)",
+            Axis::log("radius R", "AU"),
+            Axis::log("mass m_p", "g"),
         );
-        c.push(
-            Control::number("r_min_au", "innermost start", &mut self.r_min_au)
-                .default(d.r_min_au)
-                .unit("AU")
-                .range(1.1, 300.0)
-                .log()
-                .doc("first starting radius"),
+        let mut fig_a = Figure::new(
+            "growth-tracks-size",
+            "Particle radius against radius (Fig. 4.14)",
+            Axis::log("radius R", "AU"),
+            Axis::log("particle radius a", "cm"),
         );
-        c.push(
-            Control::number("r_max_au", "outermost start", &mut self.r_max_au)
-                .default(d.r_max_au)
-                .unit("AU")
-                .range(1.1, 1000.0)
-                .log()
-                .doc("last starting radius"),
-        );
-        c.push(
-            Control::count("tracks", "tracks", &mut self.tracks)
-                .default(d.tracks)
-                .range(1.0, 200.0)
-                .doc("starting radii, log-spaced"),
-        );
-        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
-        c.push(
-            Control::toggle("compact", "compact tracks", &mut self.compact)
-                .default(d.compact)
-                .doc("also run compact growth"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time at which every track is marked, as a fraction of the run in log time")
-                .style_only(),
-        );
-        c
-    }
-
-    /// All tracks: (compact, porous), computed in parallel.
-    pub fn run(&self, progress: &Progress) -> Result<(Vec<Track>, Vec<Track>), SceneError> {
-        let starts = if self.tracks <= 1 {
-            vec![self.r_min_au]
-        } else {
-            logspace(self.r_min_au, self.r_max_au.max(self.r_min_au * 1.000001), self.tracks)
+        let add = |fig: Figure,
+                   tracks: &[Track],
+                   name: &str,
+                   color: usize,
+                   f: &dyn Fn(&crate::physics::growth::TrackPoint) -> f64| {
+            let mut fig = fig;
+            for (i, t) in tracks.iter().enumerate() {
+                let pts = t.points.iter().map(|q| [q.r / AU, f(q)]).collect();
+                fig = fig.with(Series::new(
+                    if i == 0 { name.to_string() } else { String::new() },
+                    pts,
+                    if color == 1 { Style::Dashed } else { Style::Line },
+                    color,
+                ));
+            }
+            fig
         };
-        let porous = self.growth.model(Porosity::Full);
-        let mut compact = self.growth.model(Porosity::Compact);
-        compact.thresholds.v_frag = self.v_frag_compact;
-        let t_end = self.duration_yr * YEAR;
-        let run = |model: &crate::physics::growth::GrowthModel| -> Result<Vec<Track>, SceneError> {
-            starts
-                .par_iter()
-                .map(|&r| {
-                    progress.check()?;
-                    Ok(model.run(r * AU, t_end))
-                })
-                .collect()
-        };
-        let c = if self.compact { run(&compact)? } else { Vec::new() };
-        let p = run(&porous)?;
-        Ok((c, p))
-    }
-}
-
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    if p.tracks > 1 {
-        LogRange::new("r_min_au/r_max_au", p.r_min_au, p.r_max_au, p.tracks)?;
-    }
-    let (compact, porous) = p.run(progress)?;
-    let mut fig_m = Figure::new(
-        "growth-tracks-mass",
-        "Peak mass against radius (Fig. 4.13)",
-        Axis::log("radius R", "AU"),
-        Axis::log("mass m_p", "g"),
-    );
-    let mut fig_a = Figure::new(
-        "growth-tracks-size",
-        "Particle radius against radius (Fig. 4.14)",
-        Axis::log("radius R", "AU"),
-        Axis::log("particle radius a", "cm"),
-    );
-    let add = |fig: Figure,
-               tracks: &[Track],
-               name: &str,
-               color: usize,
-               f: &dyn Fn(&crate::physics::growth::TrackPoint) -> f64| {
-        let mut fig = fig;
-        for (i, t) in tracks.iter().enumerate() {
-            let pts = t.points.iter().map(|q| [q.r / AU, f(q)]).collect();
-            fig = fig.with(Series::new(
-                if i == 0 { name.to_string() } else { String::new() },
-                pts,
-                if color == 1 { Style::Dashed } else { Style::Line },
+        fig_m = add(fig_m, &compact, "compact", 1, &|q| q.mass * 1e3);
+        fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
+        fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
+        fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
+        // Where planetesimals form (the last point of a track that reaches the
+        // planetesimal mass) and where their material started.
+        let formed: Vec<[f64; 3]> = porous
+            .iter()
+            .filter(|t| t.stop == Stop::Planetesimal)
+            .filter_map(|t| {
+                let end = t.points.last()?;
+                Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
+            })
+            .collect();
+        let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
+        let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
+        if !formed.is_empty() {
+            let points = formed.iter().map(|f| [f[1], f[2]]).collect();
+            fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
+        }
+        let max_st_eroded = porous
+            .iter()
+            .filter(|t| t.halted_by == Some("erosion"))
+            .flat_map(|t| t.points.iter().map(|q| q.stokes))
+            .fold(0.0, f64::max);
+        let scalars = vec![
+            Scalar {
+                key: "porous_planetesimal_tracks",
+                label: "porous tracks reaching 10¹⁶ g",
+                value: formed.len() as f64,
+                unit: "",
+            },
+            Scalar {
+                key: "outermost_planetesimal_formation",
+                label: "outermost radius where a planetesimal forms",
+                value: outermost_formation,
+                unit: "AU",
+            },
+            Scalar {
+                key: "outermost_planetesimal_start",
+                label: "outermost start forming a planetesimal",
+                value: outermost,
+                unit: "AU",
+            },
+            Scalar {
+                key: "max_stokes_eroded",
+                label: "largest Ωt_s of tracks halted by erosion",
+                value: max_st_eroded,
+                unit: "",
+            },
+        ];
+        // Every track with the time of each point, for the time cursor.
+        let mut paths = Vec::new();
+        for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
+            let color = Some(color);
+            let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
+            paths.push(TimedPath {
+                figure: "growth-tracks-mass".into(),
                 color,
-            ));
+                times: times.clone(),
+                points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect(),
+            });
+            paths.push(TimedPath {
+                figure: "growth-tracks-size".into(),
+                color,
+                times,
+                points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect(),
+            });
         }
-        fig
-    };
-    fig_m = add(fig_m, &compact, "compact", 1, &|q| q.mass * 1e3);
-    fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
-    fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
-    fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
-    // Where planetesimals form (the last point of a track that reaches the
-    // planetesimal mass) and where their material started.
-    let formed: Vec<[f64; 3]> = porous
-        .iter()
-        .filter(|t| t.stop == Stop::Planetesimal)
-        .filter_map(|t| {
-            let end = t.points.last()?;
-            Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig_m, fig_a],
+            notes: Vec::new(),
+            extra: Extra::Paths(std::sync::Arc::new(paths)),
         })
-        .collect();
-    let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
-    let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
-    if !formed.is_empty() {
-        let points = formed.iter().map(|f| [f[1], f[2]]).collect();
-        fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
     }
-    let max_st_eroded = porous
-        .iter()
-        .filter(|t| t.halted_by == Some("erosion"))
-        .flat_map(|t| t.points.iter().map(|q| q.stokes))
-        .fold(0.0, f64::max);
-    let scalars = vec![
-        Scalar {
-            key: "porous_planetesimal_tracks",
-            label: "porous tracks reaching 10¹⁶ g",
-            value: formed.len() as f64,
-            unit: "",
-        },
-        Scalar {
-            key: "outermost_planetesimal_formation",
-            label: "outermost radius where a planetesimal forms",
-            value: outermost_formation,
-            unit: "AU",
-        },
-        Scalar {
-            key: "outermost_planetesimal_start",
-            label: "outermost start forming a planetesimal",
-            value: outermost,
-            unit: "AU",
-        },
-        Scalar {
-            key: "max_stokes_eroded",
-            label: "largest Ωt_s of tracks halted by erosion",
-            value: max_st_eroded,
-            unit: "",
-        },
-    ];
-    // Every track with the time of each point, for the time cursor.
-    let mut paths = Vec::new();
-    for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
-        let color = Some(color);
-        let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
-        paths.push(TimedPath {
-            figure: "growth-tracks-mass".into(),
-            color,
-            times: times.clone(),
-            points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect(),
-        });
-        paths.push(TimedPath {
-            figure: "growth-tracks-size".into(),
-            color,
-            times,
-            points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect(),
-        });
-    }
-    Ok(SceneOutput {
-        warnings: Vec::new(),
-        scalars,
-        figures: vec![fig_m, fig_a],
-        notes: Vec::new(),
-        extra: Extra::Paths(std::sync::Arc::new(paths)),
-    })
 }

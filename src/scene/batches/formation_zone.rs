@@ -180,12 +180,6 @@ disks run in parallel.",
         let widest = edges.iter().copied().fold(0.0, f64::max);
         scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
         scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

@@ -143,12 +143,6 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
             },
             Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
         ];
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

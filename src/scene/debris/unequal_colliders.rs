@@ -138,12 +138,6 @@ catastrophic collisions; in the erosive regime the value depends on κ alone (κ
                 unit: "",
             },
         ];
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

@@ -106,12 +106,6 @@ collisional, gas and self-gravity compaction. Local growth at fixed R (no drift)
                 unit: "s",
             });
         }
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

@@ -174,12 +174,6 @@ Epstein and Stokes drag only. The projected area is πa² (compact form).",
             unit: "m",
         });
         scalars.push(Scalar { key: "monomer_mass", label: "monomer mass m₀", value: m0, unit: "kg" });
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

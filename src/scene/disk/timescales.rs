@@ -74,12 +74,6 @@ t_grow << t_drift and outgrow the drift barrier. The dotted line is t_drift/30."
                 unit: "s",
             },
         ];
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

@@ -143,12 +143,6 @@ case (Sect. 3.3.1).",
                 unit: "",
             },
         ];
-        Ok(SceneOutput {
-            warnings: Vec::new(),
-            scalars,
-            figures: vec![fig],
-            notes: Vec::new(),
-            extra: crate::scene::core::Extra::None,
-        })
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

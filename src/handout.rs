@@ -33,7 +33,7 @@ pub fn deck(deck: &LoadedDeck, dir: &Path, progress: &dyn Fn(usize, &str)) -> Re
             .with_context(|| format!("slide {} ('{}')", i + 1, slide.title))?;
         let folder = slide_folder(i, slide);
         let preset = Preset { title: slide.title.clone(), description: slide.notes.clone(), scene: params.clone() };
-        let files = crate::cli::write_outputs(&out, Some(&preset), &dir.join(&folder))?;
+        let files = crate::export::write_outputs(&out, Some(&preset), &dir.join(&folder))?;
         written.extend(files);
         let info = params.info();
         let _ = writeln!(index, "## {}. {}\n", i + 1, slide.title);
@@ -235,6 +235,9 @@ mod tests {
         let apng = std::fs::read(dir.path().join("rocking-displacement.png")).expect("apng");
         let reader = png::Decoder::new(std::io::Cursor::new(apng)).read_info().expect("decodes");
         assert_eq!(reader.info().animation_control().map(|a| a.num_frames), Some(4));
-        assert_eq!(crate::provenance::read(&dir.path().join("rocking-displacement-0002.png")).expect("state"), preset);
+        assert_eq!(
+            crate::preset::read_embedded(&dir.path().join("rocking-displacement-0002.png")).expect("state"),
+            preset
+        );
     }
 }

@@ -11,6 +11,7 @@
 pub mod app;
 pub mod cli;
 pub mod deck;
+pub mod export;
 pub mod figure;
 pub mod files;
 pub mod handout;

@@ -13,6 +13,7 @@
 //! are reported with their line and column. All values are SI.
 
 use crate::files::{WriteError, write_atomically};
+use crate::provenance::{ProvenanceError, Stamp};
 use crate::scene::{ParamError, SceneParams};
 use serde::{Deserialize, Serialize};
 use std::path::{Path, PathBuf};
@@ -70,7 +71,33 @@ pub enum PresetError {
     Serialise(String),
     /// An exported figure or data file carries no usable state.
     #[error(transparent)]
-    Embedded(Box<crate::provenance::ProvenanceError>),
+    Embedded(Box<ProvenanceError>),
+    /// The state embedded in an exported file does not load.
+    #[error("the state embedded in {origin} does not load: {error}")]
+    EmbeddedInvalid {
+        /// File.
+        origin: String,
+        /// Why.
+        error: Box<PresetError>,
+    },
+}
+
+impl Stamp {
+    /// The stamp of a preset, with this program's version.
+    pub fn of(preset: &Preset) -> Result<Stamp, PresetError> {
+        let text = ron::ser::to_string_pretty(preset, ron::ser::PrettyConfig::default().struct_names(false))
+            .map_err(|e| PresetError::Serialise(e.to_string()))?;
+        Ok(Stamp { program: crate::provenance::program(), preset: text })
+    }
+}
+
+/// The preset embedded in an exported PNG, SVG or CSV file (see
+/// [`crate::provenance`]).
+pub fn read_embedded(path: &Path) -> Result<Preset, PresetError> {
+    let text = crate::provenance::read(path).map_err(|e| PresetError::Embedded(Box::new(e)))?;
+    let origin = path.display().to_string();
+    Preset::from_ron(&text, &format!("{origin} (embedded state)"))
+        .map_err(|error| PresetError::EmbeddedInvalid { origin, error: Box::new(error) })
 }
 
 impl Preset {
@@ -220,7 +247,7 @@ pub fn resolve(name: &str) -> Result<Preset, PresetError> {
     let path = Path::new(name);
     if path.exists() {
         if crate::provenance::may_carry_state(path) {
-            return crate::provenance::read(path).map_err(|e| PresetError::Embedded(Box::new(e)));
+            return read_embedded(path);
         }
         return Preset::load(path);
     }
@@ -232,5 +259,44 @@ pub fn resolve(name: &str) -> Result<Preset, PresetError> {
             path: path.into(),
             cause: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file and no shipped preset of that name"),
         }),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn preset() -> Preset {
+        resolve("ice-bounce-8ms").expect("shipped")
+    }
+
+    /// The embedded preset reads back equal from all three kinds of file.
+    #[test]
+    fn state_survives_every_export_format() {
+        let preset = preset();
+        let stamp = Stamp::of(&preset).expect("stamp");
+        let dir = tempfile::tempdir().expect("tempdir");
+        let out = crate::scene::compute(&preset.scene, &crate::scene::Progress::default()).expect("computes");
+        let fig = &out.figures[0];
+        let png = crate::figure::png_bytes_with_text(fig, (320, 240), &stamp.png_text()).expect("png");
+        let svg = stamp.svg(&crate::figure::svg_string(fig, (320, 240)).expect("svg"));
+        let csv = stamp.csv(&crate::figure::csv_bytes(fig).expect("csv"));
+        for (name, bytes) in [("f.png", png), ("f.svg", svg.into_bytes()), ("f.csv", csv)] {
+            let path = dir.path().join(name);
+            std::fs::write(&path, bytes).expect("write");
+            assert_eq!(read_embedded(&path).expect(name), preset, "{name}");
+        }
+    }
+
+    /// A preset whose text contains the CDATA terminator still round-trips.
+    #[test]
+    fn cdata_terminators_are_split() {
+        let mut preset = preset();
+        preset.description = "a ]]> b".into();
+        let stamp = Stamp::of(&preset).expect("stamp");
+        let dir = tempfile::tempdir().expect("tempdir");
+        let path = dir.path().join("f.svg");
+        std::fs::write(&path, stamp.svg("<svg width=\"1\">\n</svg>")).expect("write");
+        assert_eq!(read_embedded(&path).expect("loads"), preset);
     }
 }

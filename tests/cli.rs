@@ -250,7 +250,7 @@ fn a_deck_handout_lists_every_slide() {
             .map(|e| e.path())
             .find(|p| p.extension().is_some_and(|e| e == "png"))
             .expect("a figure");
-        assert_eq!(&grainscope::provenance::read(&png).expect("state").scene, params, "{}", slide.title);
+        assert_eq!(&grainscope::preset::read_embedded(&png).expect("state").scene, params, "{}", slide.title);
     }
     let movie = grainscope(&["movie", "restitution-ice", "--out", d]);
     assert_eq!(movie.status.code(), Some(2), "a scene without time has no movie");

@@ -362,6 +362,58 @@ fn snapshot(engine: &Engine<Column>) -> Snapshot {
     Snapshot { t: engine.time(), families, sample: s, projectiles }
 }
 
+/// When a run hands its state so far to an observer (live views only: the
+/// result never depends on it). Where the platform has a clock the first view
+/// comes after 0.05 s and later ones every 0.5 s. WebAssembly in a browser
+/// has no clock in the standard library (`Instant::now` panics there), so
+/// there views come every [`Pace::STEPS`] steps of the run instead.
+struct Pace {
+    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    shown: std::time::Instant,
+    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    interval: f64,
+    #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+    steps: u32,
+}
+
+impl Pace {
+    /// Steps between two views where there is no clock.
+    #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+    const STEPS: u32 = 2000;
+
+    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    fn start() -> Pace {
+        Pace { shown: std::time::Instant::now(), interval: 0.05 }
+    }
+
+    #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+    fn start() -> Pace {
+        Pace { steps: 0 }
+    }
+
+    /// Called once a step: whether to show the run now.
+    #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+    fn due(&mut self) -> bool {
+        let due = self.shown.elapsed().as_secs_f64() > self.interval;
+        if due {
+            self.interval = 0.5;
+            self.shown = std::time::Instant::now();
+        }
+        due
+    }
+
+    /// Called once a step: whether to show the run now.
+    #[cfg(all(target_family = "wasm", target_os = "unknown"))]
+    fn due(&mut self) -> bool {
+        self.steps += 1;
+        let due = self.steps >= Self::STEPS;
+        if due {
+            self.steps = 0;
+        }
+        due
+    }
+}
+
 impl RunConfig {
     /// Checks the configuration.
     pub fn check(&self) -> Result<(), PhysicsError> {
@@ -425,9 +477,7 @@ impl RunConfig {
         let mut history = Vec::new();
         let mut ended = "end time";
         let ln_span = (t_end / t0).ln().max(1e-9);
-        let mut shown = std::time::Instant::now();
-        // The first view comes after 0.05 s, later ones every 0.5 s.
-        let mut interval = 0.05;
+        let mut pace = Pace::start();
         let so_far = |engine: &Engine<Column>, snapshots: &[Snapshot], history: &[Sample]| {
             let mut snaps = snapshots.to_vec();
             snaps.push(snapshot(engine));
@@ -463,10 +513,8 @@ impl RunConfig {
                     ended = "cancelled";
                     break 'outer;
                 }
-                if shown.elapsed().as_secs_f64() > interval {
-                    interval = 0.5;
+                if pace.due() {
                     observe(&so_far(&engine, &snapshots, &history));
-                    shown = std::time::Instant::now();
                 }
                 if engine.moments().1 >= self.stop_mass {
                     ended = "peak mass reached";

@@ -481,6 +481,6 @@ impl LogRange {
 
     /// The `n` values, evenly spaced in log space.
     pub fn values(&self) -> Vec<f64> {
-        super::core::logspace(self.min, self.max, self.n)
+        super::grid::logspace(self.min, self.max, self.n)
     }
 }

@@ -3,6 +3,7 @@
 //! without a cycle; the registry in [`crate::scene`] sits on top of both.
 
 use super::controls::Control;
+pub use super::grid::logspace;
 pub use super::timeline::Cursor;
 use crate::figure::Figure;
 use crate::physics::fit::Measurement;
@@ -28,15 +29,15 @@ pub struct SceneInfo {
     pub heavy: bool,
 }
 
-/// One scene of the explorer: its description, its parameters, its controls
-/// and its pure computation. Each scene implements it in its own file; the
-/// window, the command line and the tests reach scenes only through it (by
-/// way of [`crate::scene::SceneParams`]).
-pub trait Scene {
-    /// The scene's parameters, as stored in presets (every field defaults,
-    /// so old presets keep loading).
-    type Params: Clone + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static;
-
+/// One scene of the explorer, implemented by the scene's parameter type:
+/// its description, its controls and its pure computation. Each scene
+/// implements it in its own file; the window, the command line and the tests
+/// reach scenes only through it (by way of [`crate::scene::SceneParams`]).
+/// The parameters are stored in presets (every field defaults, so old presets
+/// keep loading).
+pub trait Scene:
+    Clone + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static
+{
     /// Identifier, title, thesis reference and explanation.
     const INFO: SceneInfo;
 
@@ -44,43 +45,38 @@ pub trait Scene {
     const PAUSABLE: bool = false;
 
     /// The documented parameters, with mutable access for the window and `--set`.
-    fn controls(p: &mut Self::Params) -> Vec<Control<'_>>;
+    fn controls(&mut self) -> Vec<Control<'_>>;
 
     /// Computes the scene. Pure: the same parameters give the same output;
     /// the caches only save work.
-    fn compute(p: &Self::Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError>;
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError>;
 
     /// After a material was picked: re-derives what depends on it (e.g. the
     /// combined surface energy). Does nothing by default.
-    fn material_changed(_p: &mut Self::Params) {}
+    fn material_changed(&mut self) {}
 
     /// A time cursor over the computed history: where it stands and the
     /// points it marks on the figures. None by default.
-    fn cursor(_p: &Self::Params, _out: &SceneOutput) -> Option<Cursor> {
+    fn cursor(&self, _out: &SceneOutput) -> Option<Cursor> {
         None
     }
 
     /// What a click at `at` (axis units) on figure `figure` of `out` shows:
     /// the model's numbers at that point and where to go from there. None
     /// by default (the point is not inspectable).
-    fn inspect(
-        _p: &Self::Params,
-        _out: &SceneOutput,
-        _figure: &str,
-        _at: [f64; 2],
-    ) -> Option<super::inspect::Inspection> {
+    fn inspect(&self, _out: &SceneOutput, _figure: &str, _at: [f64; 2]) -> Option<super::inspect::Inspection> {
         None
     }
 
     /// Imported measurements the scene works on, if it takes any.
-    fn measurements(_p: &mut Self::Params) -> Option<&mut Vec<Measurement>> {
+    fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
         None
     }
 
     /// A cheaper version of the parameters (fewer batches, fewer Monte Carlo
     /// groups, coarser grids) whose result a heavy scene shows first, within
     /// about 0.1 s, while the full one computes. None (the default): no preview.
-    fn coarse(_p: &Self::Params) -> Option<Self::Params> {
+    fn coarse(&self) -> Option<Self> {
         None
     }
 }
@@ -267,8 +263,12 @@ impl Progress {
     pub fn paused(&self) -> bool {
         self.pause.load(Ordering::Relaxed)
     }
-    /// Blocks while paused (and not cancelled).
+    /// Blocks while paused (and not cancelled), looking again every 50 ms.
+    /// Only another thread can lift a pause; WebAssembly in a browser has no
+    /// threads to sleep (nor to lift it), so there this returns at once and
+    /// the computation runs on.
     pub fn wait_while_paused(&self) {
+        #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
         while self.paused() && !self.cancelled() {
             std::thread::sleep(std::time::Duration::from_millis(50));
         }
@@ -321,11 +321,4 @@ impl Caches {
             None => unreachable!("cache slot holds another type"),
         }
     }
-}
-
-/// Evenly spaced values in log space, `n ≥ 2` points from `lo` to `hi`.
-pub fn logspace(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    let n = n.max(2);
-    let (a, b) = (lo.ln(), hi.ln());
-    (0..n).map(|i| (a + (b - a) * i as f64 / (n - 1) as f64).exp()).collect()
 }

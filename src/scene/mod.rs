@@ -3,21 +3,23 @@
 //!
 //! Each scene lives in its own file under the folder of its thesis chapter and
 //! implements [`Scene`]; what a chapter's scenes share sits in the chapter's
-//! `common.rs`, and what all scenes share in [`core`] (which imports no scene)
-//! and [`controls`]. This module is the registry on top: the one list below
-//! declares the scene modules and generates [`SceneParams`] (the preset format)
-//! and [`SCENES`] (the scene list's order).
+//! `common.rs`, and what all scenes share in [`core`] (which imports no scene),
+//! [`controls`], [`grid`] and [`monomer`]. The [`registry`] on top lists the
+//! scenes and generates [`SceneParams`] (the preset format) and [`SCENES`]
+//! (the scene list's order).
 //!
 //! Adding a scene: write `src/scene/CHAPTER/my_scene.rs` with its `Params`
-//! (serde, `#[serde(default)]` so old presets keep loading) and a marker type
-//! `MyScene` implementing [`Scene`], then add the line `my_scene::MyScene,` to
-//! its chapter in the list below.
+//! (serde, `#[serde(default)]` so old presets keep loading) implementing
+//! [`Scene`], declare `pub mod my_scene;` in its chapter below, and add it to
+//! its chapter in the registry's list.
 
 pub mod controls;
 pub mod core;
+pub mod grid;
 pub mod inspect;
 pub mod monomer;
 pub mod quantities;
+pub mod registry;
 pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
@@ -25,358 +27,70 @@ pub use core::{
     Caches, Context, Extra, Progress, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, Trajectory,
     logspace,
 };
+pub use registry::{Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, scenes_by_chapter};
 pub use timeline::{Cursor, Mark};
 
-use crate::physics::fit::Measurement;
-use serde::{Deserialize, Serialize};
-
-/// Declares the chapter modules and their scenes, and generates the enum of
-/// scene parameters and the dispatch from it to each scene's [`Scene`] impl.
-macro_rules! scenes {
-    ($( $(#[$chapter_doc:meta])* $chapter:ident { $( $module:ident :: $scene:ident ),* $(,)? } )*) => {
-        $(
-            $(#[$chapter_doc])*
-            pub mod $chapter {
-                pub mod common;
-                $( pub mod $module; )*
-            }
-        )*
-
-        /// The parameters of one scene, tagged by scene: the `scene` of a preset.
-        #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-        pub enum SceneParams {
-            $($(
-                #[doc = concat!("Parameters of [`", stringify!($chapter), "::", stringify!($module), "`].")]
-                $scene(<$chapter::$module::$scene as Scene>::Params),
-            )*)*
-        }
-
-        /// All scenes, in the order of the scene list (by thesis chapter).
-        pub const SCENES: &[SceneInfo] = &[$($(<$chapter::$module::$scene as Scene>::INFO,)*)*];
-
-        /// The chapter folder of every scene, in the order of [`SCENES`].
-        const CHAPTER_OF: &[&str] = &[$($(first(stringify!($chapter), stringify!($module)),)*)*];
-
-        impl SceneParams {
-            /// Default parameters of the scene with identifier `id`.
-            pub fn default_for(id: &str) -> Option<SceneParams> {
-                $($(
-                    if id == <$chapter::$module::$scene as Scene>::INFO.id {
-                        return Some(SceneParams::$scene(Default::default()));
-                    }
-                )*)*
-                None
-            }
-
-            /// The scene's static description.
-            pub fn info(&self) -> &'static SceneInfo {
-                match self {
-                    $($( SceneParams::$scene(_) => &<$chapter::$module::$scene as Scene>::INFO, )*)*
-                }
-            }
-
-            /// Whether the scene's computation can be paused.
-            pub fn pausable(&self) -> bool {
-                match self {
-                    $($( SceneParams::$scene(_) => <$chapter::$module::$scene as Scene>::PAUSABLE, )*)*
-                }
-            }
-
-            /// The documented parameters, with mutable access for the UI and `--set`.
-            pub fn controls(&mut self) -> Vec<Control<'_>> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::controls(p), )*)*
-                }
-            }
-
-            /// After a material was picked: re-derives what depends on it.
-            pub fn material_changed(&mut self) {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::material_changed(p), )*)*
-                }
-            }
-
-            /// The scene's time cursor over `out`, if it has one.
-            pub fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::cursor(p, out), )*)*
-                }
-            }
-
-            /// What a click at `at` (axis units) on figure `figure` of `out` shows, if anything.
-            pub fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<inspect::Inspection> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::inspect(p, out, figure, at), )*)*
-                }
-            }
-
-            /// The cheaper parameters of the scene's preview, if it has one.
-            pub fn coarse(&self) -> Option<SceneParams> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::coarse(p).map(SceneParams::$scene), )*)*
-                }
-            }
-
-            /// The imported measurements the scene works on, if it takes any.
-            pub fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::measurements(p), )*)*
-                }
-            }
-
-            /// Computes the scene without validating first.
-            fn dispatch(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-                match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::$scene as Scene>::compute(p, ctx), )*)*
-                }
-            }
-        }
-    };
+/// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).
+pub mod collisions {
+    pub mod adhesion;
+    pub mod common;
+    pub mod experiments;
+    pub mod fit;
+    pub mod hysteresis;
+    pub mod material_parameters;
+    pub mod restitution;
 }
 
-scenes! {
-    /// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).
-    collisions {
-        hysteresis::Hysteresis,
-        restitution::Restitution,
-        adhesion::Adhesion,
-        experiments::Experiments,
-        material_parameters::MaterialParameters,
-        fit::Fit,
-    }
-    /// Rolling friction from adhesion hysteresis (thesis ch. 3).
-    rolling {
-        contact_torque::ContactTorque,
-        rolling_force::RollingForce,
-        critical_displacement::CriticalDisplacement,
-        rocking::Rocking,
-    }
-    /// The smallest fragments of debris-disk collisions (thesis ch. 6).
-    debris {
-        smallest_fragment::SmallestFragment,
-        critical_energies::CriticalEnergies,
-        debris_disks::DebrisDisks,
-        unequal_colliders::UnequalColliders,
-    }
-    /// Porous aggregates in a disk: drag, speeds, compaction, growth (thesis ch. 4).
-    disk {
-        stokes_number::StokesNumber,
-        collision_speeds::CollisionSpeeds,
-        porosity_track::PorosityTrack,
-        timescales::Timescales,
-        growth_tracks::GrowthTracks,
-    }
-    /// The Monte Carlo coagulation column (thesis Sects. 4.3–4.4).
-    monte_carlo {
-        mass_distribution::MassDistribution,
-        families::Families,
-        erosion_balance::ErosionBalance,
-        analytic_kernels::KernelTests,
-    }
-    /// The global dust-batch model over a whole disk (thesis ch. 5).
-    batches {
-        surface_density::SurfaceDensity,
-        batch_lifelines::BatchLifelines,
-        disk_map::DiskMap,
-        planetesimal_yield::PlanetesimalYield,
-        formation_zone::FormationZone,
-        midplane_loading::MidplaneLoading,
-    }
-    /// The argument across scales, on one screen.
-    overview {
-        scale_ladder::ScaleLadder,
-    }
+/// Rolling friction from adhesion hysteresis (thesis ch. 3).
+pub mod rolling {
+    pub mod common;
+    pub mod contact_torque;
+    pub mod critical_displacement;
+    pub mod rocking;
+    pub mod rolling_force;
 }
 
-impl SceneParams {
-    /// Checks every parameter against its documented range.
-    pub fn validate(&self) -> Result<(), ParamError> {
-        let mut copy = self.clone();
-        for c in copy.controls() {
-            c.check()?;
-        }
-        Ok(())
-    }
-
-    /// Sets the parameter `key` from its textual value (as on the command
-    /// line), checking its range. On error nothing changes.
-    pub fn set(&mut self, key: &str, value: &str) -> Result<(), ParamError> {
-        let mut trial = self.clone();
-        {
-            let mut controls = trial.controls();
-            let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
-            let c = controls
-                .iter_mut()
-                .find(|c| c.key == key)
-                .ok_or_else(|| ParamError::UnknownKey { key: key.into(), known: known.join(", ") })?;
-            c.set_text(value)?;
-        }
-        trial.validate()?;
-        *self = trial;
-        Ok(())
-    }
-
-    /// The time cursor's value (fraction of the run, 0–1) of a scene whose
-    /// result is a history, for playing it.
-    pub fn cursor_mut(&mut self) -> Option<&mut f64> {
-        self.controls().into_iter().find_map(|c| match (c.key, c.kind) {
-            ("cursor", ControlKind::Number { value, .. }) => Some(value),
-            _ => None,
-        })
-    }
-
-    /// The figures of `out` as they are exported: with the time cursor's
-    /// marks where the scene always shows them.
-    pub fn exported_figures(&self, out: &SceneOutput) -> Vec<crate::figure::Figure> {
-        let mut figures = out.figures.clone();
-        if let Some(c) = self.cursor(out).filter(|c| !c.optional) {
-            c.apply(&mut figures);
-        }
-        figures
-    }
-
-    /// The scene's monomer card (see [`monomer`]), if it builds aggregates.
-    pub fn monomer_card(&self) -> Option<monomer::Card> {
-        let mut copy = self.clone();
-        let controls = copy.controls();
-        monomer::MONOMER_KEYS.iter().map(|k| controls.iter().find(|c| c.key == *k).map(|c| c.value())).collect()
-    }
-
-    /// Gives the scene the monomer `card`. False, and nothing changes, if the
-    /// scene has no card or a value is refused.
-    pub fn set_monomer_card(&mut self, card: &monomer::Card) -> bool {
-        let mut trial = self.clone();
-        {
-            let mut controls = trial.controls();
-            for (key, value) in monomer::MONOMER_KEYS.iter().zip(card) {
-                let taken = controls.iter_mut().find(|c| c.key == *key).is_some_and(|c| c.assign(value));
-                if !taken {
-                    return false;
-                }
-            }
-        }
-        if trial.validate().is_err() {
-            return false;
-        }
-        *self = trial;
-        true
-    }
-
-    /// Whether the scene keeps its own monomer instead of the shared one.
-    pub fn own_monomer(&self) -> bool {
-        let mut copy = self.clone();
-        copy.controls().iter().any(|c| c.key == "own_monomer" && c.value() == DefaultValue::Toggle(true))
-    }
-
-    /// The monomer of the scene's card, if it has one.
-    pub fn monomer(&self) -> Option<crate::physics::monomer::Monomer> {
-        self.monomer_card().map(|card| monomer::monomer_of(&card))
-    }
-
-    /// The parameters with every styling-only value reset: two parameter sets
-    /// with equal keys give the same computed output.
-    pub fn compute_key(&self) -> SceneParams {
-        let mut key = self.clone();
-        for c in key.controls() {
-            if !c.style_only {
-                continue;
-            }
-            match c.kind {
-                ControlKind::Number { value, .. } => *value = 0.0,
-                ControlKind::Toggle(value) => *value = false,
-                _ => {}
-            }
-        }
-        key
-    }
-
-    /// Keys whose values differ between `self` and `other` (same scene), with
-    /// the values of `self` as text: used to label pinned curves.
-    pub fn differences(&self, other: &SceneParams) -> Vec<String> {
-        let mut a = self.clone();
-        let mut b = other.clone();
-        let ca = a.controls();
-        let cb = b.controls();
-        if ca.len() != cb.len() {
-            return Vec::new();
-        }
-        ca.iter()
-            .zip(cb.iter())
-            .filter(|(x, y)| x.key == y.key && x.display_value() != y.display_value() && !x.style_only)
-            .map(|(x, _)| format!("{} = {}", x.label, x.display_value()))
-            .collect()
-    }
+/// The smallest fragments of debris-disk collisions (thesis ch. 6).
+pub mod debris {
+    pub mod common;
+    pub mod critical_energies;
+    pub mod debris_disks;
+    pub mod smallest_fragment;
+    pub mod unequal_colliders;
 }
 
-/// Computes a scene. Pure: the same parameters give the same output.
-pub fn compute(params: &SceneParams, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    compute_cached(params, progress, &mut Caches::default())
+/// Porous aggregates in a disk: drag, speeds, compaction, growth (thesis ch. 4).
+pub mod disk {
+    pub mod collision_speeds;
+    pub mod common;
+    pub mod growth_tracks;
+    pub mod porosity_track;
+    pub mod stokes_number;
+    pub mod timescales;
 }
 
-/// Computes a scene, reusing parts of earlier results held in `caches`.
-pub fn compute_cached(
-    params: &SceneParams,
-    progress: &Progress,
-    caches: &mut Caches,
-) -> Result<SceneOutput, SceneError> {
-    params.validate()?;
-    let mut out = params.dispatch(&mut Context { progress, caches })?;
-    // What the monomer sets, for every scene that builds aggregates of it.
-    if let Some(m) = params.monomer() {
-        out.scalars.extend(monomer::scalars(&m, false));
-    }
-    Ok(out)
+/// The Monte Carlo coagulation column (thesis Sects. 4.3–4.4).
+pub mod monte_carlo {
+    pub mod analytic_kernels;
+    pub mod common;
+    pub mod erosion_balance;
+    pub mod families;
+    pub mod mass_distribution;
 }
 
-/// The first of two names (lets the registry repeat a chapter per scene).
-const fn first(a: &'static str, _b: &'static str) -> &'static str {
-    a
+/// The global dust-batch model over a whole disk (thesis ch. 5).
+pub mod batches {
+    pub mod batch_lifelines;
+    pub mod common;
+    pub mod disk_map;
+    pub mod formation_zone;
+    pub mod midplane_loading;
+    pub mod planetesimal_yield;
+    pub mod surface_density;
 }
 
-/// A thesis chapter as the scene navigator and the presets menu group it.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub struct Chapter {
-    /// Heading, e.g. "Ch. 2 · Sticking collisions of adhesive spheres".
-    pub heading: &'static str,
-    /// Order in the thesis.
-    pub order: u8,
-}
-
-/// The chapter of scene `i` of [`SCENES`].
-pub fn chapter(i: usize) -> Chapter {
-    let (order, heading) = match CHAPTER_OF.get(i).copied().unwrap_or("") {
-        "overview" => (1, "Overview · From grains to planetesimals"),
-        "collisions" => (2, "Ch. 2 · Collisions of adhesive spheres"),
-        "rolling" => (3, "Ch. 3 · Rolling friction"),
-        "disk" => (4, "Ch. 4 · Porous aggregates in a disk"),
-        "monte_carlo" => (4, "Ch. 4 · Monte Carlo growth in a column"),
-        "batches" => (5, "Ch. 5 · Dust batches and planetesimals"),
-        "debris" => (6, "Ch. 6 · Smallest fragments in debris disks"),
-        _ => (9, "Other"),
-    };
-    Chapter { heading, order }
-}
-
-/// The scenes in navigator order: by chapter as in the thesis, each chapter
-/// in registry order.
-pub fn scenes_by_chapter() -> Vec<(Chapter, Vec<usize>)> {
-    let mut groups: Vec<(Chapter, Vec<usize>)> = Vec::new();
-    for i in 0..SCENES.len() {
-        let c = chapter(i);
-        match groups.iter_mut().find(|(g, _)| *g == c) {
-            Some((_, v)) => v.push(i),
-            None => groups.push((c, vec![i])),
-        }
-    }
-    groups.sort_by_key(|(c, _)| c.order);
-    groups
-}
-
-/// The figures a scene reproduces, from its thesis reference ("Figs. 2.2,
-/// 2.3"); empty if it reproduces none.
-pub fn figures_of(info: &SceneInfo) -> &'static str {
-    match info.source.find("Fig") {
-        Some(k) => &info.source[k..],
-        None => "",
-    }
+/// The argument across scales, on one screen.
+pub mod overview {
+    pub mod common;
+    pub mod scale_ladder;
 }

@@ -1,31 +1,114 @@
 //! The monomer card: the monomer every aggregate scene shares (radius,
 //! material, surface energy, rolling law) and what it sets at every scale.
-//! Scenes hold the card's values in their [`DiskParams`]; the registry reads
-//! and writes them by key ([`MONOMER_KEYS`]) so that the window can link the
-//! card across scenes and the command line can set it with `--set`.
+//! Scenes hold the card's values in their disk parameters
+//! ([`DiskParams`](super::disk::common::DiskParams)); the registry reads and
+//! writes them by key ([`MONOMER_KEYS`]) so that the window can link the card
+//! across scenes and the command line can set it with `--set`. This module
+//! imports no scene: the disk parameters build their monomer through it.
 
 use super::controls::DefaultValue;
 use super::core::Scalar;
-use super::disk::common::DiskParams;
-pub use super::disk::common::{MONOMER_KEYS, ROLLING_LAWS};
-use crate::physics::monomer::Monomer;
+use crate::physics::monomer::{ICE_SURFACE_ENERGY, Monomer, RollingLaw, SILICATE_SURFACE_ENERGY};
+
+/// The rolling-energy laws (key, label).
+pub const ROLLING_LAWS: [(&str, &str); 3] = [
+    ("calibrated", "calibrated (5.26)"),
+    ("contact", "ch. 3 contact (3.16)"),
+    ("dominik-tielens", "Dominik & Tielens"),
+];
+
+/// The keys of the monomer card: the parameters every aggregate scene shares.
+pub const MONOMER_KEYS: [&str; 7] =
+    ["monomer_radius", "icy", "surface_energy_ice", "surface_energy_silicate", "rolling_law", "hysteresis", "xi_crit"];
 
 /// The values of a scene's monomer card, in the order of [`MONOMER_KEYS`].
 pub type Card = Vec<DefaultValue>;
 
-/// The monomer the card describes.
-pub fn monomer_of(card: &Card) -> Monomer {
-    let mut disk = DiskParams::default();
-    {
-        let d = DiskParams::default();
-        let mut controls = disk.controls(&d);
-        for (key, value) in MONOMER_KEYS.iter().zip(card) {
-            if let Some(c) = controls.iter_mut().find(|c| c.key == *key) {
-                c.assign(value);
-            }
+/// The card's values, one field per key of [`MONOMER_KEYS`] (in that
+/// order; the meaning and default of each is documented on
+/// [`DiskParams`](super::disk::common::DiskParams)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Spec {
+    /// `monomer_radius`: a₀, m.
+    pub radius: f64,
+    /// `icy`: ice rather than silicate.
+    pub icy: bool,
+    /// `surface_energy_ice`: γ of two icy monomers, J m⁻².
+    pub surface_energy_ice: f64,
+    /// `surface_energy_silicate`: γ of two silicate monomers, J m⁻².
+    pub surface_energy_silicate: f64,
+    /// `rolling_law`: a key of [`ROLLING_LAWS`].
+    pub rolling_law: String,
+    /// `hysteresis`: Δγ/γ of the ch. 3 law.
+    pub hysteresis: f64,
+    /// `xi_crit`: ξ_crit of the Dominik & Tielens law, m.
+    pub xi_crit: f64,
+}
+
+impl Default for Spec {
+    fn default() -> Self {
+        Spec {
+            radius: 1e-7,
+            icy: true,
+            surface_energy_ice: ICE_SURFACE_ENERGY,
+            surface_energy_silicate: SILICATE_SURFACE_ENERGY,
+            rolling_law: "calibrated".into(),
+            hysteresis: 0.5,
+            xi_crit: 3e-10,
         }
     }
-    disk.monomer()
+}
+
+impl Spec {
+    /// The values of `card` over the defaults; a value of the wrong kind is
+    /// left at its default.
+    pub fn of_card(card: &Card) -> Spec {
+        let mut s = Spec::default();
+        for (key, value) in MONOMER_KEYS.iter().zip(card) {
+            match (*key, value) {
+                ("monomer_radius", DefaultValue::Number(x)) => s.radius = *x,
+                ("icy", DefaultValue::Toggle(x)) => s.icy = *x,
+                ("surface_energy_ice", DefaultValue::Number(x)) => s.surface_energy_ice = *x,
+                ("surface_energy_silicate", DefaultValue::Number(x)) => s.surface_energy_silicate = *x,
+                ("rolling_law", DefaultValue::Text(x)) => s.rolling_law = x.clone(),
+                ("hysteresis", DefaultValue::Number(x)) => s.hysteresis = *x,
+                ("xi_crit", DefaultValue::Number(x)) => s.xi_crit = *x,
+                _ => {}
+            }
+        }
+        s
+    }
+
+    /// The monomer.
+    pub fn monomer(&self) -> Monomer {
+        let surface_energy = if self.icy { self.surface_energy_ice } else { self.surface_energy_silicate };
+        monomer(self.radius, self.icy, surface_energy, &self.rolling_law, self.hysteresis, self.xi_crit)
+    }
+}
+
+/// The monomer of radius `radius` (m), icy or silicate, with the combined
+/// `surface_energy` (J m⁻²) and the rolling law `rolling_law` (a key of
+/// [`ROLLING_LAWS`]; the calibrated law for any other) with its `hysteresis`
+/// or `xi_crit`.
+pub fn monomer(
+    radius: f64,
+    icy: bool,
+    surface_energy: f64,
+    rolling_law: &str,
+    hysteresis: f64,
+    xi_crit: f64,
+) -> Monomer {
+    let rolling = match rolling_law {
+        "contact" => RollingLaw::Contact { hysteresis },
+        "dominik-tielens" => RollingLaw::DominikTielens { xi: xi_crit },
+        _ => RollingLaw::Calibrated,
+    };
+    Monomer { radius, density: if icy { 1400.0 } else { 2600.0 }, icy, surface_energy, rolling }
+}
+
+/// The monomer the card describes.
+pub fn monomer_of(card: &Card) -> Monomer {
+    Spec::of_card(card).monomer()
 }
 
 /// What the monomer sets, as scalars: the rolling energy and force, the

@@ -1,12 +1,12 @@
 //! Parameters shared by the global dust-batch scenes (thesis ch. 5).
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::disk::common::DiskParams;
-use crate::scene::core::{Progress, SceneError};
 use crate::physics::batches::{BatchConfig, BatchRun, MIN_HALF_WIDTH, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
+use crate::scene::controls::Control;
+use crate::scene::core::{Progress, SceneError};
+use crate::scene::disk::common::DiskParams;
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -62,14 +62,59 @@ impl BatchParams {
     /// The documented parameters.
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         let mut c = self.disk.controls(&d.disk);
-        c.push(Control::choice("growth", "growth", &mut self.growth, vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")]).default(d.growth.clone()).doc("porosity treatment"));
-        c.push(Control::toggle("coagulation", "coagulation", &mut self.coagulation).default(d.coagulation).doc("off: drift only (Fig. 5.1)"));
-        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).labelled("fragmentation/bouncing threshold").doc("same-size collisions above it stop growth (1e4: none)"));
-        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
-        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it stop growth (1e4: none)"));
-        c.push(Control::number("r_in_au", "innermost batch", &mut self.r_in_au).default(d.r_in_au).unit("AU").range(1.1, 100.0).log().doc("initial radius of the first batch"));
-        c.push(Control::number("r_out_au", "outermost batch", &mut self.r_out_au).default(d.r_out_au).unit("AU").range(2.0, 1000.0).log().doc("initial radius of the last batch"));
-        c.push(Control::count("batches", "batches", &mut self.batches).default(d.batches).range(10.0, 2000.0).doc("number of batches (10²–10³ in the thesis)"));
+        c.push(
+            Control::choice(
+                "growth",
+                "growth",
+                &mut self.growth,
+                vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")],
+            )
+            .default(d.growth.clone())
+            .doc("porosity treatment"),
+        );
+        c.push(
+            Control::toggle("coagulation", "coagulation", &mut self.coagulation)
+                .default(d.coagulation)
+                .doc("off: drift only (Fig. 5.1)"),
+        );
+        c.push(
+            quantities::v_frag(&mut self.v_frag)
+                .default(d.v_frag)
+                .labelled("fragmentation/bouncing threshold")
+                .doc("same-size collisions above it stop growth (1e4: none)"),
+        );
+        c.push(
+            Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)
+                .default(d.v_frag_from_monomer)
+                .doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"),
+        );
+        c.push(
+            quantities::v_eros(&mut self.v_eros)
+                .default(d.v_eros)
+                .doc("collisions with monomers above it stop growth (1e4: none)"),
+        );
+        c.push(
+            Control::number("r_in_au", "innermost batch", &mut self.r_in_au)
+                .default(d.r_in_au)
+                .unit("AU")
+                .range(1.1, 100.0)
+                .log()
+                .doc("initial radius of the first batch"),
+        );
+        c.push(
+            Control::number("r_out_au", "outermost batch", &mut self.r_out_au)
+                .default(d.r_out_au)
+                .unit("AU")
+                .range(2.0, 1000.0)
+                .log()
+                .doc("initial radius of the last batch"),
+        );
+        c.push(
+            Control::count("batches", "batches", &mut self.batches)
+                .default(d.batches)
+                .range(10.0, 2000.0)
+                .doc("number of batches (10²–10³ in the thesis)"),
+        );
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c
     }
@@ -156,11 +201,33 @@ pub fn sweep_controls<'a>(
     let msun = ("M_sun", 1.0);
     let unit = ("", 1.0);
     vec![
-        Control::number("mass_min", "smallest disk mass", mass.0).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.0).doc("first disk mass"),
-        Control::number("mass_max", "largest disk mass", mass.1).unit("M_sun").shown(msun.0, msun.1).range(1e-3, 0.5).log().default(dm.1).doc("last disk mass"),
+        Control::number("mass_min", "smallest disk mass", mass.0)
+            .unit("M_sun")
+            .shown(msun.0, msun.1)
+            .range(1e-3, 0.5)
+            .log()
+            .default(dm.0)
+            .doc("first disk mass"),
+        Control::number("mass_max", "largest disk mass", mass.1)
+            .unit("M_sun")
+            .shown(msun.0, msun.1)
+            .range(1e-3, 0.5)
+            .log()
+            .default(dm.1)
+            .doc("last disk mass"),
         Control::count("n_mass", "disk masses", mass.2).range(1.0, 12.0).default(dm.2).doc("log-spaced"),
-        Control::number("z_min", "smallest Z₀", metallicity.0).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.0).doc("first metallicity"),
-        Control::number("z_max", "largest Z₀", metallicity.1).shown(unit.0, unit.1).range(1e-3, 0.1).log().default(dz.1).doc("last metallicity"),
+        Control::number("z_min", "smallest Z₀", metallicity.0)
+            .shown(unit.0, unit.1)
+            .range(1e-3, 0.1)
+            .log()
+            .default(dz.0)
+            .doc("first metallicity"),
+        Control::number("z_max", "largest Z₀", metallicity.1)
+            .shown(unit.0, unit.1)
+            .range(1e-3, 0.1)
+            .log()
+            .default(dz.1)
+            .doc("last metallicity"),
         Control::count("n_z", "metallicities", metallicity.2).range(1.0, 6.0).default(dz.2).doc("log-spaced"),
     ]
 }
@@ -204,7 +271,10 @@ pub fn inspect_batch(
     let (k, _) = inspect::nearest(fig, candidates.iter().map(|(t, _, s)| place(*t, s)), at, 0.05)?;
     let (t, b, s) = candidates[k];
     let mut rows = vec![
-        inspect::row("batch", format!("{} of {}, from {} AU", b + 1, run.masses.len(), crate::figure::human(run.initial_radii[b] / AU))),
+        inspect::row(
+            "batch",
+            format!("{} of {}, from {} AU", b + 1, run.masses.len(), crate::figure::human(run.initial_radii[b] / AU)),
+        ),
         inspect::row("time t", inspect::value(t / YEAR, "yr")),
     ];
     rows.extend(crate::scene::disk::common::aggregate_rows(&p.disk, s.r, s.mass, s.filling, s.t_grow));
@@ -228,7 +298,7 @@ pub fn inspect_batch(
         rows,
         bars: None,
         outcome: Some(fate),
-        actions: vec![crate::scene::disk::common::column_action(&p.disk, s.r / AU)],
+        actions: vec![crate::scene::registry::column_action(&p.disk, s.r / AU)],
         point: place(t, s),
     })
 }

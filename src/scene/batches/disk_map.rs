@@ -3,58 +3,14 @@
 //! midplane mass loading.
 
 use super::common::{BatchParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct DiskMap;
-
-impl Scene for DiskMap {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "disk-map",
-        title: "Disk map",
-        source: "Sects. 5.3–5.4; Eq. 5.13; Figs. 5.4, 5.6, 5.12–5.14",
-        explanation: "Each batch's radius against time (grey paths). Green points: the mass-dominating \
-particles have 10⁻³ ≤ Ωt_s ≤ 1. Orange, red, dark red: the midplane dust-to-gas ratio of particles \
-with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Stars: planetesimal \
-formation. Streaming instability needs i) 10⁻² ≤ Ωt_s ≤ 1, ii) a loading near unity and iv) \
-t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is reported. Dashed lines mark \
-the present orbits of Jupiter, Saturn, Uranus and Neptune.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
-        let run = out.extra.model::<crate::physics::batches::BatchRun>()?;
-        let fig = crate::scene::inspect::figure(&out.figures, figure)?;
-        super::common::inspect_batch(&p.run, run, fig, at, &|t, s| [t / YEAR, s.r / AU])
-    }
-
-    fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { run: p.run.coarse(), ..p.clone() })
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
-        let range = timeline::x_range(out, "disk-map")?;
-        let t = timeline::time_at(range, p.cursor, Scale::Log);
-        let marks = timeline::along_x(out, "disk-map", t);
-        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
-    }
-}
 
 /// Parameters of the disk-map scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -74,82 +30,136 @@ impl Default for Params {
     }
 }
 
-impl Params {
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "disk-map",
+        title: "Disk map",
+        source: "Sects. 5.3–5.4; Eq. 5.13; Figs. 5.4, 5.6, 5.12–5.14",
+        explanation: "Each batch's radius against time (grey paths). Green points: the mass-dominating \
+particles have 10⁻³ ≤ Ωt_s ≤ 1. Orange, red, dark red: the midplane dust-to-gas ratio of particles \
+with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Stars: planetesimal \
+formation. Streaming instability needs i) 10⁻² ≤ Ωt_s ≤ 1, ii) a loading near unity and iv) \
+t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is reported. Dashed lines mark \
+the present orbits of Jupiter, Saturn, Uranus and Neptune.",
+        heavy: true,
+    };
+
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
-        c.push(Control::count("every", "draw every n-th batch", &mut self.every).default(d.every).range(1.0, 100.0).doc("thins the paths"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the batch paths, as a fraction of the run in log time").style_only());
+        c.push(
+            Control::count("every", "draw every n-th batch", &mut self.every)
+                .default(d.every)
+                .range(1.0, 100.0)
+                .doc("thins the paths"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time marked on the batch paths, as a fraction of the run in log time")
+                .style_only(),
+        );
         c
     }
-}
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let run = cache.get(&p.run, progress)?;
-    let mut fig =
-        Figure::new("disk-map", "Batch radius against time", Axis::log("time", "yr"), Axis::log("radius R", "AU"));
-    let n = run.masses.len();
-    for i in (0..n).step_by(p.every.max(1)) {
-        let pts: Vec<[f64; 2]> =
-            run.frames.iter().filter(|f| f.batches[i].dust).map(|f| [f.t / YEAR, f.batches[i].r / AU]).collect();
-        fig = fig.with(Series::new("", pts, Style::Line, 6));
+    fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
+        let p = self;
+        let run = out.extra.model::<crate::physics::batches::BatchRun>()?;
+        let fig = crate::scene::inspect::figure(&out.figures, figure)?;
+        super::common::inspect_batch(&p.run, run, fig, at, &|t, s| [t / YEAR, s.r / AU])
     }
-    let mut window = Vec::new();
-    let mut levels: [Vec<[f64; 2]>; 3] = [Vec::new(), Vec::new(), Vec::new()];
-    let mut si = 0usize;
-    let mut max_loading: f64 = 0.0;
-    for f in &run.frames {
-        for b in f.batches.iter().filter(|b| b.dust) {
-            let pt = [f.t / YEAR, b.r / AU];
-            if (1e-3..=1.0).contains(&b.stokes) {
-                window.push(pt);
-            }
-            for (k, lvl) in [0.1, 0.5, 1.0].iter().enumerate() {
-                if b.loading >= *lvl {
-                    levels[k].push(pt);
-                }
-            }
-            max_loading = max_loading.max(b.loading);
-            si += usize::from(b.si);
+
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse(), ..self.clone() })
+    }
+
+    fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+        let p = self;
+        let range = timeline::x_range(out, "disk-map")?;
+        let t = timeline::time_at(range, p.cursor, Scale::Log);
+        let marks = timeline::along_x(out, "disk-map", t);
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut RunCache = ctx.caches.get();
+        let run = cache.get(&p.run, progress)?;
+        let mut fig =
+            Figure::new("disk-map", "Batch radius against time", Axis::log("time", "yr"), Axis::log("radius R", "AU"));
+        let n = run.masses.len();
+        for i in (0..n).step_by(p.every.max(1)) {
+            let pts: Vec<[f64; 2]> =
+                run.frames.iter().filter(|f| f.batches[i].dust).map(|f| [f.t / YEAR, f.batches[i].r / AU]).collect();
+            fig = fig.with(Series::new("", pts, Style::Line, 6));
         }
+        let mut window = Vec::new();
+        let mut levels: [Vec<[f64; 2]>; 3] = [Vec::new(), Vec::new(), Vec::new()];
+        let mut si = 0usize;
+        let mut max_loading: f64 = 0.0;
+        for f in &run.frames {
+            for b in f.batches.iter().filter(|b| b.dust) {
+                let pt = [f.t / YEAR, b.r / AU];
+                if (1e-3..=1.0).contains(&b.stokes) {
+                    window.push(pt);
+                }
+                for (k, lvl) in [0.1, 0.5, 1.0].iter().enumerate() {
+                    if b.loading >= *lvl {
+                        levels[k].push(pt);
+                    }
+                }
+                max_loading = max_loading.max(b.loading);
+                si += usize::from(b.si);
+            }
+        }
+        fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2));
+        for (k, (pts, name)) in levels.into_iter().zip(["ρ*/ρ_g ≥ 0.1", "ρ*/ρ_g ≥ 0.5", "ρ*/ρ_g ≥ 1"]).enumerate()
+        {
+            fig = fig.with(Series::new(name, pts, Style::Points, [3, 0, 5][k]));
+        }
+        let formed: Vec<[f64; 2]> = run
+            .fates
+            .iter()
+            .filter_map(|f| if let Fate::Planetesimals { t, r } = f { Some([t / YEAR, r / AU]) } else { None })
+            .collect();
+        fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 4));
+        let t0 = run.frames.first().map_or(1.0, |f| f.t / YEAR);
+        let t1 = p.run.duration_yr;
+        for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
+            // One legend entry for the four reference orbits.
+            fig = fig.with(
+                Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7).keyed("Jupiter, Saturn, Uranus, Neptune"),
+            );
+        }
+        let scalars = vec![
+            Scalar {
+                key: "outermost_planetesimals",
+                label: "outermost planetesimal formation",
+                value: run.outermost_planetesimals() / AU,
+                unit: "AU",
+            },
+            Scalar { key: "max_loading", label: "largest midplane ρ*_d/ρ_g", value: max_loading, unit: "" },
+            Scalar {
+                key: "si_samples",
+                label: "batch samples meeting SI conditions i, ii, iv",
+                value: si as f64,
+                unit: "",
+            },
+            Scalar {
+                key: "converted",
+                label: "converted into planetesimals",
+                value: run.converted_fraction(),
+                unit: "",
+            },
+        ];
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig],
+            notes: Vec::new(),
+            extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())),
+        })
     }
-    fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2));
-    for (k, (pts, name)) in levels.into_iter().zip(["ρ*/ρ_g ≥ 0.1", "ρ*/ρ_g ≥ 0.5", "ρ*/ρ_g ≥ 1"]).enumerate()
-    {
-        fig = fig.with(Series::new(name, pts, Style::Points, [3, 0, 5][k]));
-    }
-    let formed: Vec<[f64; 2]> = run
-        .fates
-        .iter()
-        .filter_map(|f| if let Fate::Planetesimals { t, r } = f { Some([t / YEAR, r / AU]) } else { None })
-        .collect();
-    fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 4));
-    let t0 = run.frames.first().map_or(1.0, |f| f.t / YEAR);
-    let t1 = p.run.duration_yr;
-    for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
-        // One legend entry for the four reference orbits.
-        fig = fig.with(
-            Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7)
-                .keyed("Jupiter, Saturn, Uranus, Neptune"),
-        );
-    }
-    let scalars = vec![
-        Scalar {
-            key: "outermost_planetesimals",
-            label: "outermost planetesimal formation",
-            value: run.outermost_planetesimals() / AU,
-            unit: "AU",
-        },
-        Scalar { key: "max_loading", label: "largest midplane ρ*_d/ρ_g", value: max_loading, unit: "" },
-        Scalar {
-            key: "si_samples",
-            label: "batch samples meeting SI conditions i, ii, iv",
-            value: si as f64,
-            unit: "",
-        },
-        Scalar { key: "converted", label: "converted into planetesimals", value: run.converted_fraction(), unit: "" },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::Model(crate::scene::core::ModelData(run.clone())) })
 }

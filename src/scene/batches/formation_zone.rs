@@ -2,43 +2,12 @@
 //! region where planetesimals form directly, against disk mass and metallicity.
 
 use super::common::{BatchParams, log_grid, sweep_controls};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct FormationZone;
-
-impl Scene for FormationZone {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "formation-zone",
-        title: "Formation zone",
-        source: "Sect. 5.3.2; Figs. 5.9, 5.10",
-        explanation: "The outermost radius at which batches become planetesimals within the run, against \
-disk mass, for several metallicities. Solid lines use R_c; the dashed set changes one thing: a second \
-R_c (Fig. 5.9), a cold disk with the temperature halved, the slope 3/2 or α = 1e-5 (Fig. 5.10). \
-Massive, dust-rich disks form planetesimals further out; a cold disk nearly doubles the zone. All \
-disks run in parallel.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn coarse(p: &Params) -> Option<Params> {
-        let n_mass = p.n_mass.min(3);
-        Some(Params { run: p.run.coarse_over(2 * n_mass * p.n_z), n_mass, ..p.clone() })
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-}
 
 /// Parameters of the formation-zone scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -85,9 +54,21 @@ impl Default for Params {
     }
 }
 
-impl Params {
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "formation-zone",
+        title: "Formation zone",
+        source: "Sect. 5.3.2; Figs. 5.9, 5.10",
+        explanation: "The outermost radius at which batches become planetesimals within the run, against \
+disk mass, for several metallicities. Solid lines use R_c; the dashed set changes one thing: a second \
+R_c (Fig. 5.9), a cold disk with the temperature halved, the slope 3/2 or α = 1e-5 (Fig. 5.10). \
+Massive, dust-rich disks form planetesimals further out; a cold disk nearly doubles the zone. All \
+disks run in parallel.",
+        heavy: true,
+    };
+
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.run.controls(&d.run);
         // The sweep sets these for every disk.
@@ -97,75 +78,108 @@ impl Params {
             (&mut self.z_min, &mut self.z_max, &mut self.n_z),
             [(d.mass_min, d.mass_max, d.n_mass), (d.z_min, d.z_max, d.n_z)],
         ));
-        c.push(Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1).default(d.r_c_1).unit("AU").range(5.0, 300.0).log().doc("first characteristic radius"));
-        c.push(Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2).default(d.r_c_2).unit("AU").range(5.0, 300.0).log().doc("second characteristic radius"));
-        c.push(Control::choice("contrast", "dashed lines", &mut self.contrast, vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")]).default(d.contrast.clone()).doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"));
+        c.push(
+            Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1)
+                .default(d.r_c_1)
+                .unit("AU")
+                .range(5.0, 300.0)
+                .log()
+                .doc("first characteristic radius"),
+        );
+        c.push(
+            Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2)
+                .default(d.r_c_2)
+                .unit("AU")
+                .range(5.0, 300.0)
+                .log()
+                .doc("second characteristic radius"),
+        );
+        c.push(
+            Control::choice(
+                "contrast",
+                "dashed lines",
+                &mut self.contrast,
+                vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")],
+            )
+            .default(d.contrast.clone())
+            .doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"),
+        );
         c
     }
-}
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
-    let zs = log_grid(p.z_min, p.z_max, p.n_z);
-    let (nz, nm) = (zs.len(), masses.len());
-    let combos: Vec<(usize, usize, usize)> =
-        (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
-    let done = std::sync::atomic::AtomicUsize::new(0);
-    let total = combos.len();
-    let edges: Vec<f64> = combos
-        .par_iter()
-        .map(|&(c, zi, mi)| {
-            let mut b = p.run.clone();
-            b.disk.profile = "power-law".into();
-            b.disk.disk_mass = masses[mi];
-            b.disk.metallicity = zs[zi];
-            b.disk.r_c = p.r_c_1;
-            if c == 1 {
-                match p.contrast.as_str() {
-                    "cold" => b.disk.cold = !b.disk.cold,
-                    "slope" => b.disk.slope = 1.5,
-                    "alpha" => b.disk.alpha = 1e-5,
-                    _ => b.disk.r_c = p.r_c_2,
-                }
-            }
-            b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
-        })
-        .collect::<Result<_, _>>()?;
-    let mut fig = Figure::new(
-        "formation-zone",
-        "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
-        Axis::log("disk mass", "M_sun"),
-        Axis::linear("outer edge", "AU"),
-    )
-    // Metallicity is the colour (a colour bar), the disk set the line style.
-    .family("metallicity Z₀", "", Scale::Log);
-    let mut scalars = Vec::new();
-    for c in 0..2 {
-        for (zi, z) in zs.iter().enumerate() {
-            let pts: Vec<[f64; 2]> =
-                masses.iter().enumerate().map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]]).collect();
-            let label = match (c, p.contrast.as_str()) {
-                (1, "cold") => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
-                (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
-                (1, "alpha") => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
-                (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
-                _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
-            };
-            fig = fig.with(
-                Series::new(
-                    format!("Z₀ = {}, {label}", crate::figure::human(*z)),
-                    pts,
-                    if c == 0 { Style::Line } else { Style::Dashed },
-                    zi,
-                )
-                .at(*z)
-                .keyed(label),
-            );
-        }
+    fn coarse(&self) -> Option<Self> {
+        let p = self;
+        let n_mass = p.n_mass.min(3);
+        Some(Params { run: p.run.coarse_over(2 * n_mass * p.n_z), n_mass, ..p.clone() })
     }
-    let widest = edges.iter().copied().fold(0.0, f64::max);
-    scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
-    scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
+        let zs = log_grid(p.z_min, p.z_max, p.n_z);
+        let (nz, nm) = (zs.len(), masses.len());
+        let combos: Vec<(usize, usize, usize)> =
+            (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
+        let done = std::sync::atomic::AtomicUsize::new(0);
+        let total = combos.len();
+        let edges: Vec<f64> = combos
+            .par_iter()
+            .map(|&(c, zi, mi)| {
+                let mut b = p.run.clone();
+                b.disk.profile = "power-law".into();
+                b.disk.disk_mass = masses[mi];
+                b.disk.metallicity = zs[zi];
+                b.disk.r_c = p.r_c_1;
+                if c == 1 {
+                    match p.contrast.as_str() {
+                        "cold" => b.disk.cold = !b.disk.cold,
+                        "slope" => b.disk.slope = 1.5,
+                        "alpha" => b.disk.alpha = 1e-5,
+                        _ => b.disk.r_c = p.r_c_2,
+                    }
+                }
+                b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
+            })
+            .collect::<Result<_, _>>()?;
+        let mut fig = Figure::new(
+            "formation-zone",
+            "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
+            Axis::log("disk mass", "M_sun"),
+            Axis::linear("outer edge", "AU"),
+        )
+        // Metallicity is the colour (a colour bar), the disk set the line style.
+        .family("metallicity Z₀", "", Scale::Log);
+        let mut scalars = Vec::new();
+        for c in 0..2 {
+            for (zi, z) in zs.iter().enumerate() {
+                let pts: Vec<[f64; 2]> = masses
+                    .iter()
+                    .enumerate()
+                    .map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]])
+                    .collect();
+                let label = match (c, p.contrast.as_str()) {
+                    (1, "cold") => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
+                    (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
+                    (1, "alpha") => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
+                    (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
+                    _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
+                };
+                fig = fig.with(
+                    Series::new(
+                        format!("Z₀ = {}, {label}", crate::figure::human(*z)),
+                        pts,
+                        if c == 0 { Style::Line } else { Style::Dashed },
+                        zi,
+                    )
+                    .at(*z)
+                    .keyed(label),
+                );
+            }
+        }
+        let widest = edges.iter().copied().fold(0.0, f64::max);
+        scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
+        scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
+    }
 }

@@ -2,20 +2,27 @@
 //! dust and planetesimal surface densities of the batch model at chosen times.
 
 use super::common::{BatchParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
 use crate::physics::constants::{AU, YEAR};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
-/// The scene (see [`Scene`]).
-pub struct SurfaceDensity;
+/// Parameters of the surface-density scene.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The run.
+    pub run: BatchParams,
+    /// Time cursor over the dust snapshots, as a fraction of their span in
+    /// log time (styling only).
+    pub cursor: f64,
+}
 
-impl Scene for SurfaceDensity {
-    type Params = Params;
+impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "surface-density",
         title: "Surface density",
@@ -31,19 +38,25 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         heavy: true,
     };
 
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("the dust snapshot to highlight, as a fraction of their span in log time")
+                .style_only(),
+        );
+        c
     }
 
-    fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { run: p.run.coarse(), ..p.clone() })
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse(), ..self.clone() })
     }
 
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
+    fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+        let p = self;
         let fig = out.figures.iter().find(|f| f.id == "surface-density")?;
         let (lo, hi) = fig.family_range()?;
         let t = timeline::time_at((lo, hi), p.cursor, Scale::Log);
@@ -51,104 +64,85 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         let label = format!("t = {} yr (nearest snapshot)", crate::figure::human(shown));
         Some(Cursor { fraction: p.cursor, label, marks: vec![mark], optional: true })
     }
-}
 
-/// Parameters of the surface-density scene.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Params {
-    /// The run.
-    pub run: BatchParams,
-    /// Time cursor over the dust snapshots, as a fraction of their span in
-    /// log time (styling only).
-    pub cursor: f64,
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("the dust snapshot to highlight, as a fraction of their span in log time").style_only());
-        c
-    }
-}
-
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let run = cache.get(&p.run, progress)?;
-    let disk = p.run.config().model.disk;
-    let rs = logspace(1.0, p.run.r_out_au * 1.5, 120);
-    let mut fig = Figure::new(
-        "surface-density",
-        "Surface densities",
-        Axis::log("radius R", "AU"),
-        Axis::log("surface density", "g/cm²"),
-    )
-    .family("time of the dust curve", "yr", Scale::Log)
-    .with(Series::new(
-        "gas Σ_g",
-        rs.iter().map(|&r| [r, disk.surface_density(r * AU) * 0.1]).collect(),
-        Style::Dashed,
-        6,
-    ))
-    .with(Series::new(
-        "initial dust Z₀Σ_g",
-        rs.iter().map(|&r| [r, disk.dust_surface_density(r * AU) * 0.1]).collect(),
-        Style::Dashed,
-        7,
-    ));
-    // Frames at roughly each decade of time.
-    let mut shown = Vec::new();
-    for (k, decade) in [1e3, 1e4, 1e5, 1e6, 1e7].iter().enumerate() {
-        let Some(f) = run.frames.iter().rfind(|f| f.t <= decade * YEAR * 1.0001) else { continue };
-        if shown.contains(&f.t) {
-            continue;
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut RunCache = ctx.caches.get();
+        let run = cache.get(&p.run, progress)?;
+        let disk = p.run.config().model.disk;
+        let rs = logspace(1.0, p.run.r_out_au * 1.5, 120);
+        let mut fig = Figure::new(
+            "surface-density",
+            "Surface densities",
+            Axis::log("radius R", "AU"),
+            Axis::log("surface density", "g/cm²"),
+        )
+        .family("time of the dust curve", "yr", Scale::Log)
+        .with(Series::new(
+            "gas Σ_g",
+            rs.iter().map(|&r| [r, disk.surface_density(r * AU) * 0.1]).collect(),
+            Style::Dashed,
+            6,
+        ))
+        .with(Series::new(
+            "initial dust Z₀Σ_g",
+            rs.iter().map(|&r| [r, disk.dust_surface_density(r * AU) * 0.1]).collect(),
+            Style::Dashed,
+            7,
+        ));
+        // Frames at roughly each decade of time.
+        let mut shown = Vec::new();
+        for (k, decade) in [1e3, 1e4, 1e5, 1e6, 1e7].iter().enumerate() {
+            let Some(f) = run.frames.iter().rfind(|f| f.t <= decade * YEAR * 1.0001) else { continue };
+            if shown.contains(&f.t) {
+                continue;
+            }
+            shown.push(f.t);
+            let dust: Vec<(f64, f64)> =
+                f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
+            let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
+            let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
+            pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            let t = f.t / YEAR;
+            fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::human(t)), pts, Style::Line, k).at(t));
         }
-        shown.push(f.t);
-        let dust: Vec<(f64, f64)> =
-            f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
-        let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
-        let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
-        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
-        let t = f.t / YEAR;
-        fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::human(t)), pts, Style::Line, k).at(t));
+        // Planetesimals where they formed.
+        let formed: Vec<(f64, f64)> = run
+            .fates
+            .iter()
+            .zip(&run.masses)
+            .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
+            .collect();
+        if !formed.is_empty() {
+            let sp = surface_density(&formed, 2, MIN_HALF_WIDTH);
+            let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
+            pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));
+        }
+        let last = run.frames.last().map(|f| f.budget).unwrap_or([0.0; 3]);
+        let scalars = vec![
+            Scalar { key: "dust_fraction", label: "dust left at the end", value: last[0] / run.total_mass, unit: "" },
+            Scalar {
+                key: "planetesimal_fraction",
+                label: "converted into planetesimals",
+                value: last[1] / run.total_mass,
+                unit: "",
+            },
+            Scalar {
+                key: "lost_fraction",
+                label: "drifted inside the inner edge",
+                value: last[2] / run.total_mass,
+                unit: "",
+            },
+            Scalar {
+                key: "outermost_planetesimals",
+                label: "outermost planetesimal formation",
+                value: run.outermost_planetesimals() / AU,
+                unit: "AU",
+            },
+            Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
+        ];
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
-    // Planetesimals where they formed.
-    let formed: Vec<(f64, f64)> = run
-        .fates
-        .iter()
-        .zip(&run.masses)
-        .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
-        .collect();
-    if !formed.is_empty() {
-        let sp = surface_density(&formed, 2, MIN_HALF_WIDTH);
-        let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
-        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
-        fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));
-    }
-    let last = run.frames.last().map(|f| f.budget).unwrap_or([0.0; 3]);
-    let scalars = vec![
-        Scalar { key: "dust_fraction", label: "dust left at the end", value: last[0] / run.total_mass, unit: "" },
-        Scalar {
-            key: "planetesimal_fraction",
-            label: "converted into planetesimals",
-            value: last[1] / run.total_mass,
-            unit: "",
-        },
-        Scalar {
-            key: "lost_fraction",
-            label: "drifted inside the inner edge",
-            value: last[2] / run.total_mass,
-            unit: "",
-        },
-        Scalar {
-            key: "outermost_planetesimals",
-            label: "outermost planetesimal formation",
-            value: run.outermost_planetesimals() / AU,
-            unit: "AU",
-        },
-        Scalar { key: "total_dust_mass", label: "initial dust mass", value: run.total_mass, unit: "kg" },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -2,47 +2,14 @@
 //! contact of two equal monomers, its characteristic energies, and the
 //! collision regimes of aggregates.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::contact::Pair;
-use crate::physics::material::{Material, combined_modulus};
 use crate::physics::material::combined_surface_energy;
+use crate::physics::material::{Material, combined_modulus};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct Adhesion;
-
-impl Scene for Adhesion {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "adhesion",
-        title: "Adhesive contact basics",
-        source: "Sect. 1.3.3, Table 1.1",
-        explanation: "Two equal monomers of radius r₀ (reduced radius R = r₀/2) in JKR contact: \
-equilibrium radius a_eq = (9πγR²/(2E*))^{1/3}, pull-off force F_c = (3/2)πγR, the energy to break \
-a contact E_break ~ (γ⁵R⁴/E*²)^{1/3} (the thesis prints E*³ in (1.24), which is not an energy) \
-and to roll over 90°, E_roll = 6πγRξ (1.25). Head-on monomers stick when ½m*v² < E_break, so \
-v_stick ~ R^{-5/6}; (2.25) gives the JKR sticking velocity with its prefactor. The Tabor \
-parameter μ = (Rγ²/(E*²z₀³))^{1/3} > 5 puts the contact in the JKR limit. For aggregates with \
-n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energy with \
-    5E_roll, n_cE_roll, n_cE_break and 10n_cE_break.",
-        heavy: false,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-
-    fn material_changed(p: &mut Params) {
-        p.surface_energy = combined_surface_energy(&p.material, &p.material);
-    }
-}
 
 /// Parameters of the adhesion scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -82,21 +49,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::material("material", "material", &mut self.material).default(d.material.name.clone()).doc("monomer material (Table 2.2)"),
-            Control::number("radius", "monomer radius r₀", &mut self.radius).default(d.radius).unit("m").shown("µm", 1e6).range(1e-8, 1e-2).log().doc("radius of one monomer (default 0.1 µm)"),
-            quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy (2γ_L; default 0.74)"),
-            quantities::force_range(&mut self.z0).default(d.z0).doc("range of surface forces (default 0.3 nm)"),
-            Control::number("xi", "rolling displacement ξ", &mut self.xi).default(d.xi).unit("m").shown("nm", 1e9).range(1e-11, 1e-8).log().doc("critical rolling displacement (default 0.1 nm)"),
-            Control::number("monomers", "monomers per aggregate N", &mut self.monomers).default(d.monomers).range(1.0, 1e9).log().doc("monomers in each of two equal aggregates"),
-            Control::number("contacts", "contacts n_c", &mut self.contacts).default(d.contacts).range(1.0, 1e9).log().doc("contacts in the colliding pair"),
-            Control::number("velocity", "aggregate velocity v", &mut self.velocity).default(d.velocity).unit("m s^-1").shown("m/s", 1.0).range(1e-4, 1e3).log().doc("relative velocity of the aggregates"),
-        ]
-    }
-
     /// The monomer pair (two equal spheres).
     pub fn pair(&self, radius: f64) -> Pair {
         let m = crate::physics::sphere_mass(self.material.density, radius);
@@ -124,96 +76,181 @@ pub fn regime(e_k: f64, e_roll: f64, e_break: f64, n_c: f64) -> &'static str {
     }
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let pair = p.pair(p.radius);
-    let e_break = pair.break_energy();
-    let e_roll = pair.roll_energy(p.xi);
-    let v_break = (2.0 * e_break / pair.mass).sqrt();
-    let m0 = 2.0 * pair.mass;
-    // Two equal aggregates of N monomers: reduced mass N m₀ / 2.
-    let e_k = 0.5 * (p.monomers * m0 / 2.0) * p.velocity.powi(2);
-    let regime = regime(e_k, e_roll, e_break, p.contacts);
-
-    let radii = logspace(1e-8, 1e-2, 61);
-    let fig_v = Figure::new(
-        "monomer-sticking-velocity",
-        "Monomer sticking velocity",
-        Axis::log("monomer radius r₀", "µm"),
-        Axis::log("sticking velocity", "m/s"),
-    )
-    .with(Series::new(
-        "v_c, JKR (2.25)",
-        radii.iter().map(|&r| [r * 1e6, p.pair(r).jkr_sticking_velocity()]).collect(),
-        Style::Line,
-        0,
-    ))
-    .with(Series::new(
-        "√(2E_break/m*)",
-        radii
-            .iter()
-            .map(|&r| {
-                let q = p.pair(r);
-                [r * 1e6, (2.0 * q.break_energy() / q.mass).sqrt()]
-            })
-            .collect(),
-        Style::Dashed,
-        1,
-    ))
-    .with(Series::new("this monomer", vec![[p.radius * 1e6, pair.jkr_sticking_velocity()]], Style::Marker, 3));
-
-    let nc = logspace(1.0, 1e9, 73);
-    let line = |name: &str, f: &dyn Fn(f64) -> f64, color| {
-        Series::new(name, nc.iter().map(|&n| [n, f(n)]).collect(), Style::Line, color)
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "adhesion",
+        title: "Adhesive contact basics",
+        source: "Sect. 1.3.3, Table 1.1",
+        explanation: "Two equal monomers of radius r₀ (reduced radius R = r₀/2) in JKR contact: \
+equilibrium radius a_eq = (9πγR²/(2E*))^{1/3}, pull-off force F_c = (3/2)πγR, the energy to break \
+a contact E_break ~ (γ⁵R⁴/E*²)^{1/3} (the thesis prints E*³ in (1.24), which is not an energy) \
+and to roll over 90°, E_roll = 6πγRξ (1.25). Head-on monomers stick when ½m*v² < E_break, so \
+v_stick ~ R^{-5/6}; (2.25) gives the JKR sticking velocity with its prefactor. The Tabor \
+parameter μ = (Rγ²/(E*²z₀³))^{1/3} > 5 puts the contact in the JKR limit. For aggregates with \
+n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energy with \
+    5E_roll, n_cE_roll, n_cE_break and 10n_cE_break.",
+        heavy: false,
     };
-    let fig_r = Figure::new(
-        "collision-regimes",
-        "Collision regimes (Table 1.1)",
-        Axis::log("contacts n_c", ""),
-        Axis::log("collision energy", "J"),
-    )
-    .with(line("5 E_roll: onset of compaction", &|_| 5.0 * e_roll, 2))
-    .with(line("n_c E_roll: maximum compression", &|n| n * e_roll, 1))
-    .with(line("n_c E_break: loss of monomers", &|n| n * e_break, 3))
-    .with(line("10 n_c E_break: disruption", &|n| 10.0 * n * e_break, 0))
-    .with(Series::new("this collision", vec![[p.contacts, e_k]], Style::Marker, 4));
 
-    let a_max = 1.6 * pair.jkr_equilibrium_radius();
-    let [_, _, hertz_f, jkr_f] = super::common::reference_curves(&pair, a_max);
-    let fig_f = Figure::new(
-        "jkr-force",
-        "JKR and Hertz force",
-        Axis::linear("mutual approach δ", "nm"),
-        Axis::linear("force", "µN"),
-    )
-    .with(hertz_f)
-    .with(jkr_f)
-    .with(Series::new(
-        "pull-off −F_c",
-        vec![[pair.jkr_approach(pair.jkr_equilibrium_radius() / 4f64.cbrt()) * 1e9, -pair.pull_off_force() * 1e6]],
-        Style::Marker,
-        3,
-    ));
-
-    let scalars = vec![
-        Scalar { key: "a_eq", label: "JKR equilibrium radius a_eq", value: pair.jkr_equilibrium_radius(), unit: "m" },
-        Scalar { key: "F_c", label: "pull-off force F_c", value: pair.pull_off_force(), unit: "N" },
-        Scalar { key: "E_break", label: "break energy E_break", value: e_break, unit: "J" },
-        Scalar { key: "E_roll", label: "rolling energy E_roll", value: e_roll, unit: "J" },
-        Scalar {
-            key: "v_c",
-            label: "JKR sticking velocity v_c (2.25)",
-            value: pair.jkr_sticking_velocity(),
-            unit: "m s^-1",
-        },
-        Scalar { key: "v_break", label: "√(2E_break/m*)", value: v_break, unit: "m s^-1" },
-        Scalar { key: "tabor", label: "Tabor parameter μ", value: pair.tabor(p.z0), unit: "" },
-        Scalar { key: "E_K", label: "aggregate collision energy", value: e_k, unit: "J" },
-    ];
-    let mut notes = vec![format!("Regime of this aggregate collision (Table 1.1): {regime}.")];
-    let mu = pair.tabor(p.z0);
-    if mu < 5.0 {
-        notes.push(format!("Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."));
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        vec![
+            Control::material("material", "material", &mut self.material)
+                .default(d.material.name.clone())
+                .doc("monomer material (Table 2.2)"),
+            Control::number("radius", "monomer radius r₀", &mut self.radius)
+                .default(d.radius)
+                .unit("m")
+                .shown("µm", 1e6)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("radius of one monomer (default 0.1 µm)"),
+            quantities::surface_energy(&mut self.surface_energy)
+                .default(d.surface_energy)
+                .doc("combined surface energy (2γ_L; default 0.74)"),
+            quantities::force_range(&mut self.z0).default(d.z0).doc("range of surface forces (default 0.3 nm)"),
+            Control::number("xi", "rolling displacement ξ", &mut self.xi)
+                .default(d.xi)
+                .unit("m")
+                .shown("nm", 1e9)
+                .range(1e-11, 1e-8)
+                .log()
+                .doc("critical rolling displacement (default 0.1 nm)"),
+            Control::number("monomers", "monomers per aggregate N", &mut self.monomers)
+                .default(d.monomers)
+                .range(1.0, 1e9)
+                .log()
+                .doc("monomers in each of two equal aggregates"),
+            Control::number("contacts", "contacts n_c", &mut self.contacts)
+                .default(d.contacts)
+                .range(1.0, 1e9)
+                .log()
+                .doc("contacts in the colliding pair"),
+            Control::number("velocity", "aggregate velocity v", &mut self.velocity)
+                .default(d.velocity)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(1e-4, 1e3)
+                .log()
+                .doc("relative velocity of the aggregates"),
+        ]
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_v, fig_r, fig_f], notes, extra: crate::scene::core::Extra::None })
+
+    fn material_changed(&mut self) {
+        self.surface_energy = combined_surface_energy(&self.material, &self.material);
+    }
+
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let pair = p.pair(p.radius);
+        let e_break = pair.break_energy();
+        let e_roll = pair.roll_energy(p.xi);
+        let v_break = (2.0 * e_break / pair.mass).sqrt();
+        let m0 = 2.0 * pair.mass;
+        // Two equal aggregates of N monomers: reduced mass N m₀ / 2.
+        let e_k = 0.5 * (p.monomers * m0 / 2.0) * p.velocity.powi(2);
+        let regime = regime(e_k, e_roll, e_break, p.contacts);
+
+        let radii = logspace(1e-8, 1e-2, 61);
+        let fig_v = Figure::new(
+            "monomer-sticking-velocity",
+            "Monomer sticking velocity",
+            Axis::log("monomer radius r₀", "µm"),
+            Axis::log("sticking velocity", "m/s"),
+        )
+        .with(Series::new(
+            "v_c, JKR (2.25)",
+            radii.iter().map(|&r| [r * 1e6, p.pair(r).jkr_sticking_velocity()]).collect(),
+            Style::Line,
+            0,
+        ))
+        .with(Series::new(
+            "√(2E_break/m*)",
+            radii
+                .iter()
+                .map(|&r| {
+                    let q = p.pair(r);
+                    [r * 1e6, (2.0 * q.break_energy() / q.mass).sqrt()]
+                })
+                .collect(),
+            Style::Dashed,
+            1,
+        ))
+        .with(Series::new(
+            "this monomer",
+            vec![[p.radius * 1e6, pair.jkr_sticking_velocity()]],
+            Style::Marker,
+            3,
+        ));
+
+        let nc = logspace(1.0, 1e9, 73);
+        let line = |name: &str, f: &dyn Fn(f64) -> f64, color| {
+            Series::new(name, nc.iter().map(|&n| [n, f(n)]).collect(), Style::Line, color)
+        };
+        let fig_r = Figure::new(
+            "collision-regimes",
+            "Collision regimes (Table 1.1)",
+            Axis::log("contacts n_c", ""),
+            Axis::log("collision energy", "J"),
+        )
+        .with(line("5 E_roll: onset of compaction", &|_| 5.0 * e_roll, 2))
+        .with(line("n_c E_roll: maximum compression", &|n| n * e_roll, 1))
+        .with(line("n_c E_break: loss of monomers", &|n| n * e_break, 3))
+        .with(line("10 n_c E_break: disruption", &|n| 10.0 * n * e_break, 0))
+        .with(Series::new("this collision", vec![[p.contacts, e_k]], Style::Marker, 4));
+
+        let a_max = 1.6 * pair.jkr_equilibrium_radius();
+        let [_, _, hertz_f, jkr_f] = super::common::reference_curves(&pair, a_max);
+        let fig_f = Figure::new(
+            "jkr-force",
+            "JKR and Hertz force",
+            Axis::linear("mutual approach δ", "nm"),
+            Axis::linear("force", "µN"),
+        )
+        .with(hertz_f)
+        .with(jkr_f)
+        .with(Series::new(
+            "pull-off −F_c",
+            vec![[pair.jkr_approach(pair.jkr_equilibrium_radius() / 4f64.cbrt()) * 1e9, -pair.pull_off_force() * 1e6]],
+            Style::Marker,
+            3,
+        ));
+
+        let scalars = vec![
+            Scalar {
+                key: "a_eq",
+                label: "JKR equilibrium radius a_eq",
+                value: pair.jkr_equilibrium_radius(),
+                unit: "m",
+            },
+            Scalar { key: "F_c", label: "pull-off force F_c", value: pair.pull_off_force(), unit: "N" },
+            Scalar { key: "E_break", label: "break energy E_break", value: e_break, unit: "J" },
+            Scalar { key: "E_roll", label: "rolling energy E_roll", value: e_roll, unit: "J" },
+            Scalar {
+                key: "v_c",
+                label: "JKR sticking velocity v_c (2.25)",
+                value: pair.jkr_sticking_velocity(),
+                unit: "m s^-1",
+            },
+            Scalar { key: "v_break", label: "√(2E_break/m*)", value: v_break, unit: "m s^-1" },
+            Scalar { key: "tabor", label: "Tabor parameter μ", value: pair.tabor(p.z0), unit: "" },
+            Scalar { key: "E_K", label: "aggregate collision energy", value: e_k, unit: "J" },
+        ];
+        let mut notes = vec![format!("Regime of this aggregate collision (Table 1.1): {regime}.")];
+        let mu = pair.tabor(p.z0);
+        if mu < 5.0 {
+            notes.push(format!(
+                "Tabor parameter μ = {mu:.2} < 5: JKR theory is not strictly valid (DMT/Maugis regime)."
+            ));
+        }
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig_v, fig_r, fig_f],
+            notes,
+            extra: crate::scene::core::Extra::None,
+        })
+    }
 }

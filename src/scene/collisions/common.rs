@@ -1,14 +1,14 @@
 //! Parameters shared by the collision scenes: the two bodies, the contact and
 //! the numerics.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
+use crate::figure::{Series, Style};
 use crate::physics::collision::{Options, Setup};
 use crate::physics::contact::Pair;
 use crate::physics::crack::CrackLaw;
-use crate::physics::material::{Bodies, Material, TwoBodies};
-use crate::figure::{Series, Style};
 use crate::physics::experiments::Bounded;
+use crate::physics::material::{Bodies, Material, TwoBodies};
+use crate::scene::controls::Control;
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// A head-on collision between a sphere and a sphere or a wall. SI units.
@@ -77,27 +77,79 @@ impl CollisionParams {
     /// The documented parameters.
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         vec![
-            Control::material("projectile", "material 1", &mut self.projectile).default(d.projectile.name.clone()).doc("material of sphere 1 (Table 2.2)"),
-            Control::material("target", "material 2", &mut self.target).default(d.target.name.clone()).doc("material of sphere 2 or of the wall"),
-            Control::toggle("wall", "sphere on wall", &mut self.wall).default(d.wall).doc("sphere 1 hits a flat wall of material 2"),
-            Control::number("radius_1", "radius 1", &mut self.radius_1).default(d.radius_1).unit("m").shown("µm", 1e6).range(2e-8, 2e-2).log().doc("radius of sphere 1 (default 2 µm)"),
-            Control::number("radius_2", "radius 2", &mut self.radius_2).default(d.radius_2).unit("m").shown("µm", 1e6).range(2e-8, 2e-2).log().doc("radius of sphere 2 (default 2 µm; unused for a wall)"),
-            quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy of the contact (2γ_L for like materials; default 0.74)"),
-            Control::number("t_vis", "relaxation time T_vis", &mut self.t_vis).default(d.t_vis).unit("s").range(1e-15, 1e-8).log().doc("viscous relaxation time (default 1e-11 s)"),
-            quantities::force_range(&mut self.z0).default(d.z0).doc("range of the surface forces, σ₀ = γ/z₀ (default 0.3 nm)"),
-            Control::number("k", "modulus ratio k", &mut self.k).default(d.k).range(0.005, 0.3).log().doc("relaxed to instantaneous modulus (default 0.02)"),
-            Control::toggle("low_speed_fit", "low-speed crack fit", &mut self.low_speed_fit).default(d.low_speed_fit).doc("use Greenwood's fits (2.17) near β = 1 (made for k = 0.02; applied for k = 0.018–0.022)"),
-            Control::toggle("plasticity", "plasticity", &mut self.plasticity).default(d.plasticity).doc("Thornton–Ning plastic yield (2.29)"),
-            Control::number("yield_strength", "yield strength Y", &mut self.yield_strength).default(d.yield_strength).unit("Pa").shown("MPa", 1e-6).range(1e5, 1e11).log().doc("yield strength in simple tension (default 100 MPa)"),
-            Control::number("velocity", "impact velocity v", &mut self.velocity).default(d.velocity).unit("m s^-1").shown("m/s", 1.0).range(1e-3, 1e3).log().doc("relative velocity at first contact (default 8 m/s)"),
-            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("relative tolerance of the integrator (default 1e-6)"),
+            Control::material("projectile", "material 1", &mut self.projectile)
+                .default(d.projectile.name.clone())
+                .doc("material of sphere 1 (Table 2.2)"),
+            Control::material("target", "material 2", &mut self.target)
+                .default(d.target.name.clone())
+                .doc("material of sphere 2 or of the wall"),
+            Control::toggle("wall", "sphere on wall", &mut self.wall)
+                .default(d.wall)
+                .doc("sphere 1 hits a flat wall of material 2"),
+            Control::number("radius_1", "radius 1", &mut self.radius_1)
+                .default(d.radius_1)
+                .unit("m")
+                .shown("µm", 1e6)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("radius of sphere 1 (default 2 µm)"),
+            Control::number("radius_2", "radius 2", &mut self.radius_2)
+                .default(d.radius_2)
+                .unit("m")
+                .shown("µm", 1e6)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("radius of sphere 2 (default 2 µm; unused for a wall)"),
+            quantities::surface_energy(&mut self.surface_energy)
+                .default(d.surface_energy)
+                .doc("combined surface energy of the contact (2γ_L for like materials; default 0.74)"),
+            Control::number("t_vis", "relaxation time T_vis", &mut self.t_vis)
+                .default(d.t_vis)
+                .unit("s")
+                .range(1e-15, 1e-8)
+                .log()
+                .doc("viscous relaxation time (default 1e-11 s)"),
+            quantities::force_range(&mut self.z0)
+                .default(d.z0)
+                .doc("range of the surface forces, σ₀ = γ/z₀ (default 0.3 nm)"),
+            Control::number("k", "modulus ratio k", &mut self.k)
+                .default(d.k)
+                .range(0.005, 0.3)
+                .log()
+                .doc("relaxed to instantaneous modulus (default 0.02)"),
+            Control::toggle("low_speed_fit", "low-speed crack fit", &mut self.low_speed_fit)
+                .default(d.low_speed_fit)
+                .doc("use Greenwood's fits (2.17) near β = 1 (made for k = 0.02; applied for k = 0.018–0.022)"),
+            Control::toggle("plasticity", "plasticity", &mut self.plasticity)
+                .default(d.plasticity)
+                .doc("Thornton–Ning plastic yield (2.29)"),
+            Control::number("yield_strength", "yield strength Y", &mut self.yield_strength)
+                .default(d.yield_strength)
+                .unit("Pa")
+                .shown("MPa", 1e-6)
+                .range(1e5, 1e11)
+                .log()
+                .doc("yield strength in simple tension (default 100 MPa)"),
+            Control::number("velocity", "impact velocity v", &mut self.velocity)
+                .default(d.velocity)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(1e-3, 1e3)
+                .log()
+                .doc("relative velocity at first contact (default 8 m/s)"),
+            quantities::solver_tolerance(&mut self.rtol)
+                .default(d.rtol)
+                .doc("relative tolerance of the integrator (default 1e-6)"),
         ]
     }
 
     /// The two bodies: sphere 1 against sphere 2 or the wall.
     pub fn bodies(&self) -> TwoBodies {
-        let bodies =
-            if self.wall { Bodies::Wall { radius: self.radius_1 } } else { Bodies::Spheres { r1: self.radius_1, r2: self.radius_2 } };
+        let bodies = if self.wall {
+            Bodies::Wall { radius: self.radius_1 }
+        } else {
+            Bodies::Spheres { r1: self.radius_1, r2: self.radius_2 }
+        };
         TwoBodies::new(&self.projectile, &self.target, bodies)
     }
 
@@ -116,7 +168,12 @@ impl CollisionParams {
     pub fn setup(&self) -> Setup {
         let two = self.bodies();
         Setup {
-            pair: Pair { modulus: two.modulus, radius: two.radius, mass: two.mass, surface_energy: self.surface_energy },
+            pair: Pair {
+                modulus: two.modulus,
+                radius: two.radius,
+                mass: two.mass,
+                surface_energy: self.surface_energy,
+            },
             t_vis: self.t_vis,
             poisson_ratio: two.poisson_ratio,
             z0: self.z0,

@@ -1,46 +1,16 @@
 //! Scene "Experiments" (thesis Sect. 2.4, Figs. 2.6 and 2.11): the best-fit
 //! restitution curves of the 17 collision experiments of Table 2.1.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
 use super::common::describe;
+use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::collision::{Options, Outcome, Setup, collide, sticking_velocity};
 use crate::physics::experiments::{Experiment, experiment, experiments};
 use crate::physics::plasticity::{e_combined, e_plastic};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct Experiments;
-
-impl Scene for Experiments {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "experiments",
-        title: "Experiments",
-        source: "Sect. 2.4, App. 2.D; Tables 2.1–2.3, Figs. 2.6, 2.11",
-        explanation: "Seventeen published collision experiments (Table 2.1: micrometre spheres on flat \
-targets, millimetre spheres on equal spheres) with the best-fit surface energy γ, relaxation time \
-T_vis and yield strength Y of Table 2.3. The model restitution e = (e_A² + e_P² − 1)^{1/2} (2.30) \
-combines adhesion with viscoelasticity (e_A, from the full contact model) and plastic yield (e_P, \
-Thornton & Ning). The dashed curve is elastic JKR theory (2.24) with the same γ and plasticity: \
-without viscoelasticity it cannot produce the plateau below unity that the experiments show. The \
-Tabor parameter μ (2.11, with the literature γ_L) above each plot checks the JKR limit (μ > 5). \
-A yield strength known only as a lower limit (\"> 67 MPa\") means no yield in the measured \
-range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-}
 
 /// The experiments as (key, label) options.
 fn options() -> Vec<(&'static str, &'static str)> {
@@ -64,19 +34,6 @@ pub struct Params {
 impl Default for Params {
     fn default() -> Self {
         Params { experiment: "wall-mica".into(), all: true, n_velocities: 40, rtol: 1e-5 }
-    }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::choice("experiment", "experiment", &mut self.experiment, options()).default(d.experiment.clone()).doc("experiment of Table 2.1"),
-            Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all).default(d.all).doc("also show every experiment as a small plot"),
-            Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(4.0, 400.0).doc("points per curve"),
-            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("relative tolerance of the integrator (default 1e-5)"),
-        ]
     }
 }
 
@@ -109,97 +66,143 @@ fn tabor(e: &Experiment, setup: &Setup) -> f64 {
     pair.tabor(setup.z0)
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let e = experiment(&p.experiment)
-        .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("unknown experiment '{}'", p.experiment)))?;
-    let setup =
-        e.best_fit_setup().ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", e.key)))?;
-    let opts = Options { rtol: p.rtol, ..Options::default() };
-    let rows = curves(e, &setup, p.n_velocities, &opts, progress)?;
-    let mu = tabor(e, &setup);
-    let title = format!("{} (μ = {mu:.1})", e.label);
-    let col = |k: usize| rows.iter().map(|r| [r[0], r[k]]).collect::<Vec<_>>();
-    let mut main = Figure::new(
-        "experiment",
-        &title,
-        Axis::log("impact velocity v", "m/s"),
-        Axis::linear("coefficient of restitution", ""),
-    )
-    .with(Series::new("e_A adhesion + viscoelasticity", col(1), Style::Dashed, 1))
-    .with(Series::new("e combined (2.30)", col(3), Style::Line, 0))
-    .with(Series::new("JKR (2.24) + plasticity", col(4), Style::Dashed, 6));
-    if setup.yield_strength.is_some() {
-        main.series.insert(1, Series::new("e_P plasticity (2.29)", col(2), Style::Dashed, 3));
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "experiments",
+        title: "Experiments",
+        source: "Sect. 2.4, App. 2.D; Tables 2.1–2.3, Figs. 2.6, 2.11",
+        explanation: "Seventeen published collision experiments (Table 2.1: micrometre spheres on flat \
+targets, millimetre spheres on equal spheres) with the best-fit surface energy γ, relaxation time \
+T_vis and yield strength Y of Table 2.3. The model restitution e = (e_A² + e_P² − 1)^{1/2} (2.30) \
+combines adhesion with viscoelasticity (e_A, from the full contact model) and plastic yield (e_P, \
+Thornton & Ning). The dashed curve is elastic JKR theory (2.24) with the same γ and plasticity: \
+without viscoelasticity it cannot produce the plateau below unity that the experiments show. The \
+Tabor parameter μ (2.11, with the literature γ_L) above each plot checks the JKR limit (μ > 5). \
+A yield strength known only as a lower limit (\"> 67 MPa\") means no yield in the measured \
+range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
+        heavy: true,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        vec![
+            Control::choice("experiment", "experiment", &mut self.experiment, options())
+                .default(d.experiment.clone())
+                .doc("experiment of Table 2.1"),
+            Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all)
+                .default(d.all)
+                .doc("also show every experiment as a small plot"),
+            Control::count("n_velocities", "velocities", &mut self.n_velocities)
+                .default(d.n_velocities)
+                .range(4.0, 400.0)
+                .doc("points per curve"),
+            quantities::solver_tolerance(&mut self.rtol)
+                .default(d.rtol)
+                .doc("relative tolerance of the integrator (default 1e-5)"),
+        ]
     }
-    let v_s = sticking_velocity(&setup, &opts, 1e-3)?;
-    let mut figures = vec![main];
-    if p.all {
-        let small: Vec<Figure> = experiments()
-            .iter()
-            .enumerate()
-            .map(|(i, x)| {
-                progress.set(i as f64 / experiments().len() as f64);
-                let s = x
-                    .best_fit_setup()
-                    .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", x.key)))?;
-                let r = curves(x, &s, p.n_velocities.min(30), &opts, progress)?;
-                let fig = Figure::new(
-                    &format!("fig-2-11-{}", x.key),
-                    &format!("{} (μ = {:.1})", x.label, tabor(x, &s)),
-                    Axis::log("v", "m/s"),
-                    Axis::linear("e", ""),
-                )
-                .with(Series::new("model", r.iter().map(|q| [q[0], q[3]]).collect(), Style::Line, 0))
-                .with(Series::new("JKR", r.iter().map(|q| [q[0], q[4]]).collect(), Style::Dashed, 6));
-                Ok(fig)
-            })
-            .collect::<Result<_, SceneError>>()?;
-        figures.extend(small);
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let e = experiment(&p.experiment).ok_or_else(|| {
+            crate::scene::controls::ParamError::Inconsistent(format!("unknown experiment '{}'", p.experiment))
+        })?;
+        let setup = e
+            .best_fit_setup()
+            .ok_or_else(|| crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", e.key)))?;
+        let opts = Options { rtol: p.rtol, ..Options::default() };
+        let rows = curves(e, &setup, p.n_velocities, &opts, progress)?;
+        let mu = tabor(e, &setup);
+        let title = format!("{} (μ = {mu:.1})", e.label);
+        let col = |k: usize| rows.iter().map(|r| [r[0], r[k]]).collect::<Vec<_>>();
+        let mut main = Figure::new(
+            "experiment",
+            &title,
+            Axis::log("impact velocity v", "m/s"),
+            Axis::linear("coefficient of restitution", ""),
+        )
+        .with(Series::new("e_A adhesion + viscoelasticity", col(1), Style::Dashed, 1))
+        .with(Series::new("e combined (2.30)", col(3), Style::Line, 0))
+        .with(Series::new("JKR (2.24) + plasticity", col(4), Style::Dashed, 6));
+        if setup.yield_strength.is_some() {
+            main.series.insert(1, Series::new("e_P plasticity (2.29)", col(2), Style::Dashed, 3));
+        }
+        let v_s = sticking_velocity(&setup, &opts, 1e-3)?;
+        let mut figures = vec![main];
+        if p.all {
+            let small: Vec<Figure> = experiments()
+                .iter()
+                .enumerate()
+                .map(|(i, x)| {
+                    progress.set(i as f64 / experiments().len() as f64);
+                    let s = x.best_fit_setup().ok_or_else(|| {
+                        crate::scene::controls::ParamError::Inconsistent(format!("{}: unknown material", x.key))
+                    })?;
+                    let r = curves(x, &s, p.n_velocities.min(30), &opts, progress)?;
+                    let fig = Figure::new(
+                        &format!("fig-2-11-{}", x.key),
+                        &format!("{} (μ = {:.1})", x.label, tabor(x, &s)),
+                        Axis::log("v", "m/s"),
+                        Axis::linear("e", ""),
+                    )
+                    .with(Series::new("model", r.iter().map(|q| [q[0], q[3]]).collect(), Style::Line, 0))
+                    .with(Series::new(
+                        "JKR",
+                        r.iter().map(|q| [q[0], q[4]]).collect(),
+                        Style::Dashed,
+                        6,
+                    ));
+                    Ok(fig)
+                })
+                .collect::<Result<_, SceneError>>()?;
+            figures.extend(small);
+        }
+        let scalars = vec![
+            Scalar { key: "gamma", label: "surface energy γ (fit)", value: e.gamma.representative(), unit: "J m^-2" },
+            Scalar {
+                key: "gamma_L",
+                label: "literature γ_L = 2(γ₁γ₂)^½",
+                value: e.literature_surface_energy().unwrap_or(f64::NAN),
+                unit: "J m^-2",
+            },
+            Scalar { key: "t_vis", label: "relaxation time T_vis (fit)", value: e.t_vis.representative(), unit: "s" },
+            Scalar {
+                key: "yield_strength",
+                label: "yield strength Y (fit or limit)",
+                value: e.yield_strength.representative(),
+                unit: "Pa",
+            },
+            Scalar { key: "reduced_radius", label: "reduced radius R", value: e.reduced_radius(), unit: "m" },
+            Scalar { key: "tabor", label: "Tabor parameter μ (γ_L)", value: mu, unit: "" },
+            Scalar { key: "v_stick", label: "sticking velocity (model)", value: v_s, unit: "m s^-1" },
+            Scalar {
+                key: "v_y",
+                label: "yield velocity v_y (inf: no yield)",
+                value: setup.yield_velocity(),
+                unit: "m s^-1",
+            },
+        ];
+        let notes = vec![
+            format!(
+                "{} — {} on {}, {} µm diameter, {}, {}–{} m/s.",
+                e.reference,
+                e.projectile,
+                e.target,
+                crate::figure::human(e.diameter * 1e6),
+                if e.wall { "sphere on flat target" } else { "equal spheres" },
+                e.v_min,
+                e.v_max
+            ),
+            format!(
+                "Table 2.3: γ = {}, Y = {}, T_vis = {}.",
+                describe(&e.gamma, "J/m²", 1.0),
+                describe(&e.yield_strength, "MPa", 1e-6),
+                describe(&e.t_vis, "s", 1.0)
+            ),
+            "The measured points are not printed in the thesis; the curves are the published best fits.".into(),
+        ];
+        Ok(SceneOutput { warnings: Vec::new(), scalars, figures, notes, extra: crate::scene::core::Extra::None })
     }
-    let scalars = vec![
-        Scalar { key: "gamma", label: "surface energy γ (fit)", value: e.gamma.representative(), unit: "J m^-2" },
-        Scalar {
-            key: "gamma_L",
-            label: "literature γ_L = 2(γ₁γ₂)^½",
-            value: e.literature_surface_energy().unwrap_or(f64::NAN),
-            unit: "J m^-2",
-        },
-        Scalar { key: "t_vis", label: "relaxation time T_vis (fit)", value: e.t_vis.representative(), unit: "s" },
-        Scalar {
-            key: "yield_strength",
-            label: "yield strength Y (fit or limit)",
-            value: e.yield_strength.representative(),
-            unit: "Pa",
-        },
-        Scalar { key: "reduced_radius", label: "reduced radius R", value: e.reduced_radius(), unit: "m" },
-        Scalar { key: "tabor", label: "Tabor parameter μ (γ_L)", value: mu, unit: "" },
-        Scalar { key: "v_stick", label: "sticking velocity (model)", value: v_s, unit: "m s^-1" },
-        Scalar {
-            key: "v_y",
-            label: "yield velocity v_y (inf: no yield)",
-            value: setup.yield_velocity(),
-            unit: "m s^-1",
-        },
-    ];
-    let notes = vec![
-        format!(
-            "{} — {} on {}, {} µm diameter, {}, {}–{} m/s.",
-            e.reference,
-            e.projectile,
-            e.target,
-            crate::figure::human(e.diameter * 1e6),
-            if e.wall { "sphere on flat target" } else { "equal spheres" },
-            e.v_min,
-            e.v_max
-        ),
-        format!(
-            "Table 2.3: γ = {}, Y = {}, T_vis = {}.",
-            describe(&e.gamma, "J/m²", 1.0),
-            describe(&e.yield_strength, "MPa", 1e-6),
-            describe(&e.t_vis, "s", 1.0)
-        ),
-        "The measured points are not printed in the thesis; the curves are the published best fits.".into(),
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures, notes, extra: crate::scene::core::Extra::None })
 }

@@ -2,51 +2,17 @@
 //! restitution model to measured coefficients of restitution.
 
 use super::common::CollisionParams;
-use crate::scene::quantities;
-use crate::scene::controls::{Control, LogRange, ParamError};
 use super::common::describe;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Heatmap, Series, Style};
 use crate::physics::collision::{Options, Setup};
 use crate::physics::experiments::experiment;
 use crate::physics::fit::{Fit as FitResult, FitError, Measurement, Search, fit, model_restitution};
 use crate::physics::material::Material;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use rand::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct Fit;
-
-impl Scene for Fit {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "fit",
-        title: "Fit measurements",
-        source: "Sect. 2.4.1, Eq. 2.31",
-        explanation: "Fits the surface energy γ, the relaxation time T_vis and the yield strength Y to \
-measured coefficients of restitution, with E, ν, ρ and the radii fixed by the chosen materials. \
-χ² = (1/N) Σ [e_exp(v_n) − e(v_n)]² (2.31) is computed on a logarithmic grid (in parallel); the \
-uncertainty of each parameter is the range over which χ² stays below twice its minimum, and the \
-best grid point is refined with a Nelder–Mead search. A range that reaches the edge of the grid is a \
-one-sided limit (e.g. no plastic yield in the measured range gives Y > …). Any parameter can be held \
-fixed. Import measurements from CSV (columns 'velocity [m/s]', 'restitution', optional 'uncertainty') \
-with Import data… or by dropping the file on the window; without data the scene fits a synthetic \
-example drawn from the Wall et al. mica fit with noise 0.01.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-
-    fn measurements(p: &mut Params) -> Option<&mut Vec<Measurement>> {
-        Some(&mut p.data)
-    }
-}
 
 /// Parameters of the fit scene. SI units.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -130,38 +96,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let um = ("µm", 1e6);
-        let j = ("J/m²", 1.0);
-        let s = ("s", 1.0);
-        let mpa = ("MPa", 1e-6);
-        vec![
-            Control::material("projectile", "material 1", &mut self.projectile).default(d.projectile.name.clone()).doc("projectile material"),
-            Control::material("target", "material 2", &mut self.target).default(d.target.name.clone()).doc("target material"),
-            Control::toggle("wall", "sphere on wall", &mut self.wall).default(d.wall).doc("projectile hits a flat target"),
-            Control::number("radius_1", "radius 1", &mut self.radius_1).default(d.radius_1).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("projectile radius"),
-            Control::number("radius_2", "radius 2", &mut self.radius_2).default(d.radius_2).unit("m").shown(um.0, um.1).range(2e-8, 2e-2).log().doc("target radius (spheres)"),
-            Control::number("gamma_min", "γ from", &mut self.gamma_min).default(d.gamma_min).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("smallest γ of the grid"),
-            Control::number("gamma_max", "γ to", &mut self.gamma_max).default(d.gamma_max).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("largest γ of the grid"),
-            Control::count("n_gamma", "γ points", &mut self.n_gamma).default(d.n_gamma).range(2.0, 100.0).doc("grid points in γ"),
-            Control::toggle("fix_gamma", "hold γ fixed", &mut self.fix_gamma).default(d.fix_gamma).doc("do not fit γ"),
-            Control::number("gamma", "fixed γ", &mut self.gamma).default(d.gamma).unit("J m^-2").shown(j.0, j.1).range(1e-3, 100.0).log().doc("γ when held fixed"),
-            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("smallest T_vis of the grid"),
-            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("largest T_vis of the grid"),
-            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis).default(d.n_t_vis).range(2.0, 100.0).doc("grid points in T_vis"),
-            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis).default(d.fix_t_vis).doc("do not fit T_vis"),
-            Control::number("t_vis", "fixed T_vis", &mut self.t_vis).default(d.t_vis).unit("s").shown(s.0, s.1).range(1e-15, 1e-6).log().doc("T_vis when held fixed"),
-            Control::number("y_min", "Y from", &mut self.y_min).default(d.y_min).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("smallest Y of the grid"),
-            Control::number("y_max", "Y to", &mut self.y_max).default(d.y_max).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("largest Y of the grid"),
-            Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2.0, 100.0).doc("grid points in Y"),
-            Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
-            Control::number("yield_strength", "fixed Y", &mut self.yield_strength).default(d.yield_strength).unit("Pa").shown(mpa.0, mpa.1).range(1e5, 1e12).log().doc("Y when held fixed"),
-            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("integrator tolerance (default 1e-4)"),
-        ]
-    }
-
     fn searches(&self) -> Result<[Search; 3], ParamError> {
         let check = |name: &str, lo: f64, hi: f64| LogRange::new(name, lo, hi, 2).map(|_| ());
         check("gamma_min/gamma_max", self.gamma_min, self.gamma_max)?;
@@ -273,12 +207,147 @@ fn slice(f: &FitResult, a: usize, b: usize, fixed: usize) -> Heatmap {
     Heatmap::new(f.grids[a].clone(), f.grids[b].clone(), values, "log₁₀ χ²", "")
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let synthetic = p.data.is_empty();
-    let data = if synthetic { example_data(0.01)? } else { p.data.clone() };
-    let result = run_fit(p, &data, progress)?;
-    output(p, &data, &result)
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "fit",
+        title: "Fit measurements",
+        source: "Sect. 2.4.1, Eq. 2.31",
+        explanation: "Fits the surface energy γ, the relaxation time T_vis and the yield strength Y to \
+measured coefficients of restitution, with E, ν, ρ and the radii fixed by the chosen materials. \
+χ² = (1/N) Σ [e_exp(v_n) − e(v_n)]² (2.31) is computed on a logarithmic grid (in parallel); the \
+uncertainty of each parameter is the range over which χ² stays below twice its minimum, and the \
+best grid point is refined with a Nelder–Mead search. A range that reaches the edge of the grid is a \
+one-sided limit (e.g. no plastic yield in the measured range gives Y > …). Any parameter can be held \
+fixed. Import measurements from CSV (columns 'velocity [m/s]', 'restitution', optional 'uncertainty') \
+with Import data… or by dropping the file on the window; without data the scene fits a synthetic \
+example drawn from the Wall et al. mica fit with noise 0.01.",
+        heavy: true,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let um = ("µm", 1e6);
+        let j = ("J/m²", 1.0);
+        let s = ("s", 1.0);
+        let mpa = ("MPa", 1e-6);
+        vec![
+            Control::material("projectile", "material 1", &mut self.projectile)
+                .default(d.projectile.name.clone())
+                .doc("projectile material"),
+            Control::material("target", "material 2", &mut self.target)
+                .default(d.target.name.clone())
+                .doc("target material"),
+            Control::toggle("wall", "sphere on wall", &mut self.wall)
+                .default(d.wall)
+                .doc("projectile hits a flat target"),
+            Control::number("radius_1", "radius 1", &mut self.radius_1)
+                .default(d.radius_1)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("projectile radius"),
+            Control::number("radius_2", "radius 2", &mut self.radius_2)
+                .default(d.radius_2)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(2e-8, 2e-2)
+                .log()
+                .doc("target radius (spheres)"),
+            Control::number("gamma_min", "γ from", &mut self.gamma_min)
+                .default(d.gamma_min)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("smallest γ of the grid"),
+            Control::number("gamma_max", "γ to", &mut self.gamma_max)
+                .default(d.gamma_max)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("largest γ of the grid"),
+            Control::count("n_gamma", "γ points", &mut self.n_gamma)
+                .default(d.n_gamma)
+                .range(2.0, 100.0)
+                .doc("grid points in γ"),
+            Control::toggle("fix_gamma", "hold γ fixed", &mut self.fix_gamma).default(d.fix_gamma).doc("do not fit γ"),
+            Control::number("gamma", "fixed γ", &mut self.gamma)
+                .default(d.gamma)
+                .unit("J m^-2")
+                .shown(j.0, j.1)
+                .range(1e-3, 100.0)
+                .log()
+                .doc("γ when held fixed"),
+            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min)
+                .default(d.t_vis_min)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("smallest T_vis of the grid"),
+            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max)
+                .default(d.t_vis_max)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("largest T_vis of the grid"),
+            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis)
+                .default(d.n_t_vis)
+                .range(2.0, 100.0)
+                .doc("grid points in T_vis"),
+            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis)
+                .default(d.fix_t_vis)
+                .doc("do not fit T_vis"),
+            Control::number("t_vis", "fixed T_vis", &mut self.t_vis)
+                .default(d.t_vis)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-6)
+                .log()
+                .doc("T_vis when held fixed"),
+            Control::number("y_min", "Y from", &mut self.y_min)
+                .default(d.y_min)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("smallest Y of the grid"),
+            Control::number("y_max", "Y to", &mut self.y_max)
+                .default(d.y_max)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("largest Y of the grid"),
+            Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2.0, 100.0).doc("grid points in Y"),
+            Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
+            Control::number("yield_strength", "fixed Y", &mut self.yield_strength)
+                .default(d.yield_strength)
+                .unit("Pa")
+                .shown(mpa.0, mpa.1)
+                .range(1e5, 1e12)
+                .log()
+                .doc("Y when held fixed"),
+            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("integrator tolerance (default 1e-4)"),
+        ]
+    }
+
+    fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
+        Some(&mut self.data)
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let synthetic = p.data.is_empty();
+        let data = if synthetic { example_data(0.01)? } else { p.data.clone() };
+        let result = run_fit(p, &data, progress)?;
+        output(p, &data, &result)
+    }
 }
 
 /// The scene's output for a fit already made of `data` (also used by the

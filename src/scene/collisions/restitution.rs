@@ -3,55 +3,18 @@
 //! velocity against radius for several relaxation times.
 
 use super::common::CollisionParams;
-use crate::scene::controls::{Control, LogRange, ParamError};
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Scale, Series, Style, human};
-use crate::physics::collision::{Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_velocity};
-use crate::solver::sampling::{Refined, interpolate, refine};
+use crate::physics::collision::{
+    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_velocity,
+};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
+use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::solver::sampling::{Refined, interpolate, refine};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
-
-/// The scene (see [`Scene`]).
-pub struct Restitution;
-
-impl Scene for Restitution {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "restitution",
-        title: "Restitution",
-        source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
-        explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
-compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
-v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
-e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
-Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
-combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
-sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
-bounces to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
-e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    /// Six radii for e(R) and v_s(R) (the costly panels).
-    fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { n_radii: p.n_radii.min(6), ..p.clone() })
-    }
-
-    fn material_changed(p: &mut Params) {
-        p.collision.material_changed();
-    }
-}
 
 /// Parameters of the restitution scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -97,25 +60,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.collision.controls(&d.collision);
-        let v = ("m/s", 1.0);
-        c.push(Control::number("v_min", "lowest velocity", &mut self.v_min).default(d.v_min).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("start of e(v)"));
-        c.push(Control::number("v_max", "highest velocity", &mut self.v_max).default(d.v_max).unit("m s^-1").shown(v.0, v.1).range(1e-3, 1e3).log().doc("end of e(v)"));
-        c.push(Control::count("n_velocities", "velocities", &mut self.n_velocities).default(d.n_velocities).range(2.0, 2000.0).doc("points of e(v)"));
-        let um = ("µm", 1e6);
-        c.push(Control::number("r_min", "smallest reduced radius", &mut self.r_min).default(d.r_min).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("start of e(R), v_s(R)"));
-        c.push(Control::number("r_max", "largest reduced radius", &mut self.r_max).default(d.r_max).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().doc("end of e(R), v_s(R)"));
-        c.push(Control::count("n_radii", "radii", &mut self.n_radii).default(d.n_radii).range(2.0, 200.0).doc("points of e(R) and v_s(R)"));
-        let s = ("s", 1.0);
-        c.push(Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min).default(d.t_vis_min).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("first v_s(R) curve"));
-        c.push(Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max).default(d.t_vis_max).unit("s").shown(s.0, s.1).range(1e-15, 1e-8).log().doc("last v_s(R) curve"));
-        c.push(Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis).default(d.n_t_vis).range(1.0, 8.0).doc("curves of v_s(R)"));
-        c
-    }
-
     fn check_ranges(&self) -> Result<(), ParamError> {
         LogRange::new("v_min/v_max", self.v_min, self.v_max, 2)?;
         LogRange::new("r_min/r_max", self.r_min, self.r_max, 2)?;
@@ -185,59 +129,170 @@ fn par_map<T: Sync, R: Send>(
         .collect()
 }
 
-/// Computes the scene, reusing panels of `cache` whose inputs did not change.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut Cache) -> Result<SceneOutput, SceneError> {
-    p.check_ranges()?;
-    let key_c = without_velocity(&p.collision);
-    let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
-    let radii = logspace(p.r_min, p.r_max, p.n_radii);
-    let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
-        .into_iter()
-        .take(p.n_t_vis)
-        .collect();
-    let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
-    let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
-    // The v_s(R) panel draws its own T_vis family: the current T_vis is not
-    // among its inputs.
-    let key_s: RangeKey = (CollisionParams { t_vis: 0.0, ..key_c.clone() }, p.r_min, p.r_max, p.n_radii);
-    let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
-    let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
-    let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
-    let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
-    // Rough work units: a bisection costs ~20 collisions.
-    let total = usize::from(need_v) * (velocities.len() + 20)
-        + usize::from(need_r) * radii.len()
-        + usize::from(need_s) * radii.len() * t_vis.len() * 20;
-    let done = AtomicUsize::new(0);
-    let total = total.max(1);
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "restitution",
+        title: "Restitution",
+        source: "Sects. 2.3.3–2.3.4; Figs. 2.4, 2.5",
+        explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
+compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
+v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
+e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
+Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
+combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
+sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
+bounces to zero; viscosity at the crack raises it far above v_c for small grains. Above v_s \
+e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
+        heavy: true,
+    };
 
-    if need_v {
-        let panel = velocity_panel(p, &velocities, progress, &done, total)?;
-        cache.velocity = Some((key_v, panel));
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.collision.controls(&d.collision);
+        let v = ("m/s", 1.0);
+        c.push(
+            Control::number("v_min", "lowest velocity", &mut self.v_min)
+                .default(d.v_min)
+                .unit("m s^-1")
+                .shown(v.0, v.1)
+                .range(1e-3, 1e3)
+                .log()
+                .doc("start of e(v)"),
+        );
+        c.push(
+            Control::number("v_max", "highest velocity", &mut self.v_max)
+                .default(d.v_max)
+                .unit("m s^-1")
+                .shown(v.0, v.1)
+                .range(1e-3, 1e3)
+                .log()
+                .doc("end of e(v)"),
+        );
+        c.push(
+            Control::count("n_velocities", "velocities", &mut self.n_velocities)
+                .default(d.n_velocities)
+                .range(2.0, 2000.0)
+                .doc("points of e(v)"),
+        );
+        let um = ("µm", 1e6);
+        c.push(
+            Control::number("r_min", "smallest reduced radius", &mut self.r_min)
+                .default(d.r_min)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("start of e(R), v_s(R)"),
+        );
+        c.push(
+            Control::number("r_max", "largest reduced radius", &mut self.r_max)
+                .default(d.r_max)
+                .unit("m")
+                .shown(um.0, um.1)
+                .range(1e-8, 1e-2)
+                .log()
+                .doc("end of e(R), v_s(R)"),
+        );
+        c.push(
+            Control::count("n_radii", "radii", &mut self.n_radii)
+                .default(d.n_radii)
+                .range(2.0, 200.0)
+                .doc("points of e(R) and v_s(R)"),
+        );
+        let s = ("s", 1.0);
+        c.push(
+            Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min)
+                .default(d.t_vis_min)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-8)
+                .log()
+                .doc("first v_s(R) curve"),
+        );
+        c.push(
+            Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max)
+                .default(d.t_vis_max)
+                .unit("s")
+                .shown(s.0, s.1)
+                .range(1e-15, 1e-8)
+                .log()
+                .doc("last v_s(R) curve"),
+        );
+        c.push(
+            Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis)
+                .default(d.n_t_vis)
+                .range(1.0, 8.0)
+                .doc("curves of v_s(R)"),
+        );
+        c
     }
-    if need_r {
-        let panel = radius_panel(p, &radii, progress, &done, total)?;
-        cache.radius = Some((key_r, panel));
+
+    /// Six radii for e(R) and v_s(R) (the costly panels).
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { n_radii: self.n_radii.min(6), ..self.clone() })
     }
-    if need_s {
-        let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
-        cache.sticking = Some((key_s, family, panel));
+
+    fn material_changed(&mut self) {
+        self.collision.material_changed();
     }
-    let mut out = SceneOutput::default();
-    let panels = [
-        cache.velocity.as_ref().map(|x| &x.1),
-        cache.radius.as_ref().map(|x| &x.1),
-        cache.sticking.as_ref().map(|x| &x.2),
-    ];
-    for panel in panels.into_iter().flatten() {
-        out.figures.push(panel.figure.clone());
-        out.scalars.extend(panel.scalars.iter().cloned());
-        out.notes.extend(panel.notes.iter().cloned());
+
+    /// Computes the scene, reusing panels of `cache` whose inputs did not change.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut Cache = ctx.caches.get();
+        p.check_ranges()?;
+        let key_c = without_velocity(&p.collision);
+        let velocities = logspace(p.v_min, p.v_max, p.n_velocities);
+        let radii = logspace(p.r_min, p.r_max, p.n_radii);
+        let t_vis: Vec<f64> = logspace(p.t_vis_min, p.t_vis_max.max(p.t_vis_min * 1.000001), p.n_t_vis.max(2))
+            .into_iter()
+            .take(p.n_t_vis)
+            .collect();
+        let key_v: RangeKey = (key_c.clone(), p.v_min, p.v_max, p.n_velocities);
+        let key_r: RangeKey = (p.collision.clone(), p.r_min, p.r_max, p.n_radii);
+        // The v_s(R) panel draws its own T_vis family: the current T_vis is not
+        // among its inputs.
+        let key_s: RangeKey = (CollisionParams { t_vis: 0.0, ..key_c.clone() }, p.r_min, p.r_max, p.n_radii);
+        let family = (p.t_vis_min, p.t_vis_max, p.n_t_vis);
+        let need_v = cache.velocity.as_ref().is_none_or(|(k, _)| *k != key_v);
+        let need_r = cache.radius.as_ref().is_none_or(|(k, _)| *k != key_r);
+        let need_s = cache.sticking.as_ref().is_none_or(|(k, f, _)| *k != key_s || *f != family);
+        // Rough work units: a bisection costs ~20 collisions.
+        let total = usize::from(need_v) * (velocities.len() + 20)
+            + usize::from(need_r) * radii.len()
+            + usize::from(need_s) * radii.len() * t_vis.len() * 20;
+        let done = AtomicUsize::new(0);
+        let total = total.max(1);
+
+        if need_v {
+            let panel = velocity_panel(p, &velocities, progress, &done, total)?;
+            cache.velocity = Some((key_v, panel));
+        }
+        if need_r {
+            let panel = radius_panel(p, &radii, progress, &done, total)?;
+            cache.radius = Some((key_r, panel));
+        }
+        if need_s {
+            let panel = sticking_panel(p, &radii, &t_vis, progress, &done, total)?;
+            cache.sticking = Some((key_s, family, panel));
+        }
+        let mut out = SceneOutput::default();
+        let panels = [
+            cache.velocity.as_ref().map(|x| &x.1),
+            cache.radius.as_ref().map(|x| &x.1),
+            cache.sticking.as_ref().map(|x| &x.2),
+        ];
+        for panel in panels.into_iter().flatten() {
+            out.figures.push(panel.figure.clone());
+            out.scalars.extend(panel.scalars.iter().cloned());
+            out.notes.extend(panel.notes.iter().cloned());
+        }
+        if p.collision.plasticity {
+            out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+        }
+        Ok(out)
     }
-    if p.collision.plasticity {
-        out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
-    }
-    Ok(out)
 }
 
 /// Largest interpolation error of e(v) between adaptive samples: a sample is

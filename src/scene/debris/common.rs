@@ -1,8 +1,8 @@
 //! Parameters shared by the debris-disk scenes (thesis ch. 6).
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
 use crate::physics::debris::{DebrisMaterial, TABLE_6_1};
+use crate::scene::controls::Control;
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// Collision parameters of the fragment model. SI units.
@@ -30,10 +30,25 @@ impl FragmentParams {
     /// The documented parameters.
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         vec![
-            Control::number("velocity", "relative velocity", &mut self.velocity).default(d.velocity).unit("m s^-1").shown("m/s", 1.0).range(1e-2, 1e4).log().doc("collision velocity"),
-            quantities::efficiency(&mut self.eta).default(d.eta).doc("fraction of the kinetic energy that makes surface"),
-            Control::number("alpha", "slope α", &mut self.alpha).default(d.alpha).range(3.01, 3.99).doc("fragment distribution n(s) ~ s^-α, 3 < α < 4"),
-            Control::number("largest_fraction", "largest fragment / collider mass", &mut self.largest_fraction).default(d.largest_fraction).range(1e-3, 1.0).log().doc("s_max = (fraction)^{1/3} s₀ (default 1/2)"),
+            Control::number("velocity", "relative velocity", &mut self.velocity)
+                .default(d.velocity)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(1e-2, 1e4)
+                .log()
+                .doc("collision velocity"),
+            quantities::efficiency(&mut self.eta)
+                .default(d.eta)
+                .doc("fraction of the kinetic energy that makes surface"),
+            Control::number("alpha", "slope α", &mut self.alpha)
+                .default(d.alpha)
+                .range(3.01, 3.99)
+                .doc("fragment distribution n(s) ~ s^-α, 3 < α < 4"),
+            Control::number("largest_fraction", "largest fragment / collider mass", &mut self.largest_fraction)
+                .default(d.largest_fraction)
+                .range(1e-3, 1.0)
+                .log()
+                .doc("s_max = (fraction)^{1/3} s₀ (default 1/2)"),
         ]
     }
 

@@ -1,39 +1,12 @@
 //! Scene "Critical energies" (thesis Fig. 6.1 bottom): the specific energy to
 //! split a body against size, beside catastrophic-disruption fits.
 
-use crate::scene::controls::{Control, LogRange};
 use super::common::materials;
-use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{BENZ_ASPHAUG_3KMS, splitting_energy};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct CriticalEnergies;
-
-impl Scene for CriticalEnergies {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "critical-energies",
-        title: "Critical energies",
-        source: "Sect. 6.2; Fig. 6.1 (bottom)",
-        explanation: "The specific energy to split a body of radius s in two, Q = 3γ/(8ηρs) from (6.5) with \
-the convention v_f² = 8Q*, for a low η (dashed; 1e-3 in the thesis) and a high η (solid; 1), against catastrophic-disruption \
-thresholds Q*_D = Q₀(s/1 cm)^a + Bρ(s/1 cm)^b with a strength regime (small sizes) and a gravity regime \
-    (large sizes). Shown: Benz & Asphaug (1999) basalt and ice at 3 km/s (their Table III). Not shown: the \
-Beitz et al. (2011) aggregate curve, whose fit is not given in the thesis. Destroying a body takes \
-far more energy than splitting it.",
-        heavy: false,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
 
 /// Parameters of the critical-energies scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -57,74 +30,108 @@ impl Default for Params {
     }
 }
 
-impl Params {
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "critical-energies",
+        title: "Critical energies",
+        source: "Sect. 6.2; Fig. 6.1 (bottom)",
+        explanation: "The specific energy to split a body of radius s in two, Q = 3γ/(8ηρs) from (6.5) with \
+the convention v_f² = 8Q*, for a low η (dashed; 1e-3 in the thesis) and a high η (solid; 1), against catastrophic-disruption \
+thresholds Q*_D = Q₀(s/1 cm)^a + Bρ(s/1 cm)^b with a strength regime (small sizes) and a gravity regime \
+    (large sizes). Shown: Benz & Asphaug (1999) basalt and ice at 3 km/s (their Table III). Not shown: the \
+Beitz et al. (2011) aggregate curve, whose fit is not given in the thesis. Destroying a body takes \
+far more energy than splitting it.",
+        heavy: false,
+    };
+
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         vec![
-            Control::number("eta_low", "low efficiency η", &mut self.eta_low).default(d.eta_low).range(1e-6, 1.0).log().doc("dotted curves"),
-            Control::number("eta_high", "high efficiency η", &mut self.eta_high).default(d.eta_high).range(1e-6, 1.0).log().doc("dashed curves"),
-            Control::number("s_min", "smallest size", &mut self.s_min).default(d.s_min).unit("m").range(1e-9, 1e6).log().doc("start of the size axis"),
-            Control::number("s_max", "largest size", &mut self.s_max).default(d.s_max).unit("m").range(1e-9, 1e7).log().doc("end of the size axis"),
-            Control::toggle("disruption_fits", "disruption fits", &mut self.disruption_fits).default(d.disruption_fits).doc("Benz & Asphaug (1999), 3 km/s"),
+            Control::number("eta_low", "low efficiency η", &mut self.eta_low)
+                .default(d.eta_low)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("dotted curves"),
+            Control::number("eta_high", "high efficiency η", &mut self.eta_high)
+                .default(d.eta_high)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("dashed curves"),
+            Control::number("s_min", "smallest size", &mut self.s_min)
+                .default(d.s_min)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("start of the size axis"),
+            Control::number("s_max", "largest size", &mut self.s_max)
+                .default(d.s_max)
+                .unit("m")
+                .range(1e-9, 1e7)
+                .log()
+                .doc("end of the size axis"),
+            Control::toggle("disruption_fits", "disruption fits", &mut self.disruption_fits)
+                .default(d.disruption_fits)
+                .doc("Benz & Asphaug (1999), 3 km/s"),
         ]
     }
-}
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let sizes = LogRange::new("s_min/s_max", p.s_min, p.s_max, 120)?.values();
-    let mut fig = Figure::new(
-        "critical-energies",
-        "Critical energies (Fig. 6.1, bottom)",
-        Axis::log("size s", "m"),
-        Axis::log("specific energy Q", "J/kg"),
-    );
-    for (i, m) in materials().iter().enumerate() {
-        // As in the thesis: the low efficiency dotted, the high one dashed,
-        // the disruption fits solid.
-        for (eta, style, tag) in [(p.eta_low, Style::Dotted, "η low"), (p.eta_high, Style::Dashed, "η high")] {
-            let pts = sizes.iter().map(|&s| [s, splitting_energy(m, eta, s)]).collect();
-            fig = fig.with(Series::new(
-                format!("split {}, {tag} = {}", m.name, crate::figure::human(eta)),
-                pts,
-                style,
-                i,
-            ));
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let sizes = LogRange::new("s_min/s_max", p.s_min, p.s_max, 120)?.values();
+        let mut fig = Figure::new(
+            "critical-energies",
+            "Critical energies (Fig. 6.1, bottom)",
+            Axis::log("size s", "m"),
+            Axis::log("specific energy Q", "J/kg"),
+        );
+        for (i, m) in materials().iter().enumerate() {
+            // As in the thesis: the low efficiency dotted, the high one dashed,
+            // the disruption fits solid.
+            for (eta, style, tag) in [(p.eta_low, Style::Dotted, "η low"), (p.eta_high, Style::Dashed, "η high")] {
+                let pts = sizes.iter().map(|&s| [s, splitting_energy(m, eta, s)]).collect();
+                fig = fig.with(Series::new(
+                    format!("split {}, {tag} = {}", m.name, crate::figure::human(eta)),
+                    pts,
+                    style,
+                    i,
+                ));
+            }
         }
-    }
-    if p.disruption_fits {
-        for (k, fit) in BENZ_ASPHAUG_3KMS.iter().enumerate() {
-            fig = fig.with(Series::new(
-                fit.name,
-                sizes.iter().map(|&s| [s, fit.q_star(s)]).collect(),
-                Style::Line,
-                4 + k,
-            ));
+        if p.disruption_fits {
+            for (k, fit) in BENZ_ASPHAUG_3KMS.iter().enumerate() {
+                fig = fig.with(Series::new(
+                    fit.name,
+                    sizes.iter().map(|&s| [s, fit.q_star(s)]).collect(),
+                    Style::Line,
+                    4 + k,
+                ));
+            }
         }
+        let silicate = &materials()[0];
+        let q_split = splitting_energy(silicate, p.eta_high, 1.0);
+        let q_basalt = BENZ_ASPHAUG_3KMS[0].q_star(1.0);
+        let scalars = vec![
+            crate::scene::core::Scalar {
+                key: "q_split_1m",
+                label: "splitting energy, 1 m silicate, high η",
+                value: q_split,
+                unit: "J kg^-1",
+            },
+            crate::scene::core::Scalar {
+                key: "q_basalt_1m",
+                label: "basalt Q*_D at 1 m (Benz & Asphaug)",
+                value: q_basalt,
+                unit: "J kg^-1",
+            },
+            crate::scene::core::Scalar {
+                key: "disruption_over_split",
+                label: "Q*_D / splitting energy at 1 m",
+                value: q_basalt / q_split,
+                unit: "",
+            },
+        ];
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
-    let silicate = &materials()[0];
-    let q_split = splitting_energy(silicate, p.eta_high, 1.0);
-    let q_basalt = BENZ_ASPHAUG_3KMS[0].q_star(1.0);
-    let scalars = vec![
-        crate::scene::core::Scalar {
-            key: "q_split_1m",
-            label: "splitting energy, 1 m silicate, high η",
-            value: q_split,
-            unit: "J kg^-1",
-        },
-        crate::scene::core::Scalar {
-            key: "q_basalt_1m",
-            label: "basalt Q*_D at 1 m (Benz & Asphaug)",
-            value: q_basalt,
-            unit: "J kg^-1",
-        },
-        crate::scene::core::Scalar {
-            key: "disruption_over_split",
-            label: "Q*_D / splitting energy at 1 m",
-            value: q_basalt / q_split,
-            unit: "",
-        },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -1,40 +1,12 @@
 //! Scene "Smallest fragment" (thesis Fig. 6.1 top): the energy-limited
 //! smallest fragment against collider size.
 
-use crate::scene::controls::{Control, LogRange};
 use super::common::{FragmentParams, materials};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{smallest_fragment, splitting_limit};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct SmallestFragment;
-
-impl Scene for SmallestFragment {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "smallest-fragment",
-        title: "Smallest fragment",
-        source: "Sect. 6.2; Eqs. 6.1–6.6; Fig. 6.1 (top)",
-        explanation: "Fragments follow n(s) = C s^{-α} (6.1) with 3 < α < 4, so the mass sits in the largest \
-and the surface in the smallest. Mass conservation, M_frag = 2M₀, fixes C (6.3); if a fraction η of \
-the kinetic energy ½μv² (μ = M₀/2) makes the new surface γ(A_frag − 8πs₀²), the smallest fragment \
-is bounded: for α = 3.5, s_min = (24γs₀/(ηρs₀v² + 24γ))² / s_max (6.4). Slow collisions can only \
-split the colliders, s_min ≈ 5γ/(ηρv²) (6.6, dotted), close to the smallest body that can be split, \
-    3γ/(ηρv²) (6.5). Above the mass-conservation line s_min would exceed s_max; beyond ~100 m self-gravity \
-holds bodies together (shaded in the thesis, drawn here as limit lines).",
-        heavy: false,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
 
 /// Parameters of the smallest-fragment scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -53,18 +25,6 @@ pub struct Params {
 impl Default for Params {
     fn default() -> Self {
         Params { collision: FragmentParams::default(), s0_min: 1e-6, s0_max: 1e4, gravity_size: 100.0 }
-    }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.collision.controls(&d.collision);
-        c.push(Control::number("s0_min", "smallest collider", &mut self.s0_min).default(d.s0_min).unit("m").range(1e-9, 1e6).log().doc("start of the collider-size axis"));
-        c.push(Control::number("s0_max", "largest collider", &mut self.s0_max).default(d.s0_max).unit("m").range(1e-9, 1e6).log().doc("end of the collider-size axis"));
-        c.push(Control::number("gravity_size", "self-gravity size", &mut self.gravity_size).default(d.gravity_size).unit("m").range(1.0, 1e5).log().doc("bodies above this are held by gravity"));
-        c
     }
 }
 
@@ -87,64 +47,115 @@ pub fn collider_for(p: &FragmentParams, material_index: usize, target: f64) -> O
     Some(hi)
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let sizes = LogRange::new("s0_min/s0_max", p.s0_min, p.s0_max, 200)?.values();
-    let c = &p.collision;
-    let mut fig = Figure::new(
-        "smallest-fragment",
-        "Smallest fragment (Fig. 6.1, top)",
-        Axis::log("collider size s₀", "m"),
-        Axis::log("smallest fragment s_min", "m"),
-    );
-    let mut scalars = Vec::new();
-    for (i, m) in materials().iter().enumerate() {
-        let pts: Vec<[f64; 2]> = sizes
-            .iter()
-            .filter_map(|&s0| smallest_fragment(m, c.alpha, c.eta, c.velocity, s0, c.s_max(s0)).ok().map(|s| [s0, s]))
-            .collect();
-        fig = fig.with(Series::new(m.name, pts, Style::Line, i));
-        let split = splitting_limit(m, c.eta, c.velocity);
-        fig = fig.with(Series::new(
-            format!("{} limit (6.6)", m.name),
-            vec![[p.s0_min, split], [p.s0_max, split]],
-            Style::Dotted,
-            i,
-        ));
-        scalars.push(Scalar {
-            key: ["split_silicate", "split_ice", "split_aggregate"][i],
-            label: [
-                "splitting limit (6.6), silicate",
-                "splitting limit (6.6), ice",
-                "splitting limit (6.6), aggregate",
-            ][i],
-            value: split,
-            unit: "m",
-        });
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "smallest-fragment",
+        title: "Smallest fragment",
+        source: "Sect. 6.2; Eqs. 6.1–6.6; Fig. 6.1 (top)",
+        explanation: "Fragments follow n(s) = C s^{-α} (6.1) with 3 < α < 4, so the mass sits in the largest \
+and the surface in the smallest. Mass conservation, M_frag = 2M₀, fixes C (6.3); if a fraction η of \
+the kinetic energy ½μv² (μ = M₀/2) makes the new surface γ(A_frag − 8πs₀²), the smallest fragment \
+is bounded: for α = 3.5, s_min = (24γs₀/(ηρs₀v² + 24γ))² / s_max (6.4). Slow collisions can only \
+split the colliders, s_min ≈ 5γ/(ηρv²) (6.6, dotted), close to the smallest body that can be split, \
+    3γ/(ηρv²) (6.5). Above the mass-conservation line s_min would exceed s_max; beyond ~100 m self-gravity \
+holds bodies together (shaded in the thesis, drawn here as limit lines).",
+        heavy: false,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.collision.controls(&d.collision);
+        c.push(
+            Control::number("s0_min", "smallest collider", &mut self.s0_min)
+                .default(d.s0_min)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("start of the collider-size axis"),
+        );
+        c.push(
+            Control::number("s0_max", "largest collider", &mut self.s0_max)
+                .default(d.s0_max)
+                .unit("m")
+                .range(1e-9, 1e6)
+                .log()
+                .doc("end of the collider-size axis"),
+        );
+        c.push(
+            Control::number("gravity_size", "self-gravity size", &mut self.gravity_size)
+                .default(d.gravity_size)
+                .unit("m")
+                .range(1.0, 1e5)
+                .log()
+                .doc("bodies above this are held by gravity"),
+        );
+        c
     }
-    fig = fig
-        .with(Series::new(
-            "mass conservation: s_min = s_max",
-            sizes.iter().map(|&s| [s, c.s_max(s)]).collect(),
-            Style::Line,
-            6,
-        ))
-        .with(Series::new("self-gravity", vec![[p.gravity_size, 1e-12], [p.gravity_size, 1e6]], Style::Dashed, 6));
-    if let Some(s0) = collider_for(c, 0, 1e-6) {
-        scalars.push(Scalar {
-            key: "collider_for_1um_silicate",
-            label: "collider making 1 µm silicate fragments",
-            value: s0,
-            unit: "m",
-        });
+
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let sizes = LogRange::new("s0_min/s0_max", p.s0_min, p.s0_max, 200)?.values();
+        let c = &p.collision;
+        let mut fig = Figure::new(
+            "smallest-fragment",
+            "Smallest fragment (Fig. 6.1, top)",
+            Axis::log("collider size s₀", "m"),
+            Axis::log("smallest fragment s_min", "m"),
+        );
+        let mut scalars = Vec::new();
+        for (i, m) in materials().iter().enumerate() {
+            let pts: Vec<[f64; 2]> = sizes
+                .iter()
+                .filter_map(|&s0| {
+                    smallest_fragment(m, c.alpha, c.eta, c.velocity, s0, c.s_max(s0)).ok().map(|s| [s0, s])
+                })
+                .collect();
+            fig = fig.with(Series::new(m.name, pts, Style::Line, i));
+            let split = splitting_limit(m, c.eta, c.velocity);
+            fig = fig.with(Series::new(
+                format!("{} limit (6.6)", m.name),
+                vec![[p.s0_min, split], [p.s0_max, split]],
+                Style::Dotted,
+                i,
+            ));
+            scalars.push(Scalar {
+                key: ["split_silicate", "split_ice", "split_aggregate"][i],
+                label: [
+                    "splitting limit (6.6), silicate",
+                    "splitting limit (6.6), ice",
+                    "splitting limit (6.6), aggregate",
+                ][i],
+                value: split,
+                unit: "m",
+            });
+        }
+        fig = fig
+            .with(Series::new(
+                "mass conservation: s_min = s_max",
+                sizes.iter().map(|&s| [s, c.s_max(s)]).collect(),
+                Style::Line,
+                6,
+            ))
+            .with(Series::new("self-gravity", vec![[p.gravity_size, 1e-12], [p.gravity_size, 1e6]], Style::Dashed, 6));
+        if let Some(s0) = collider_for(c, 0, 1e-6) {
+            scalars.push(Scalar {
+                key: "collider_for_1um_silicate",
+                label: "collider making 1 µm silicate fragments",
+                value: s0,
+                unit: "m",
+            });
+        }
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig],
+            notes: vec![
+                "Points where s_min would exceed s_max (too little energy for a fragment distribution) are not drawn."
+                    .into(),
+            ],
+            extra: crate::scene::core::Extra::None,
+        })
     }
-    Ok(SceneOutput { warnings: Vec::new(),
-        scalars,
-        figures: vec![fig],
-        notes: vec![
-            "Points where s_min would exceed s_max (too little energy for a fragment distribution) are not drawn."
-                .into(),
-        ],
-        extra: crate::scene::core::Extra::None,
-    })
 }

@@ -1,37 +1,10 @@
 //! Scene "Unequal colliders" (thesis Fig. 6.3, App. 6.B): the smallest
 //! fragment of a body s₀ hit by colliders of other sizes.
 
+use crate::figure::{Axis, Figure, Series, Style};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use crate::figure::{Axis, Figure, Series, Style};
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct UnequalColliders;
-
-impl Scene for UnequalColliders {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "unequal-colliders",
-        title: "Unequal colliders",
-        source: "App. 6.B; Eqs. 6.9–6.11; Fig. 6.3",
-        explanation: "A body of size s₀ meets colliders s_x. With μ from (6.9) and s_min << s_max, catastrophic \
-fragmentation gives s_min = [6γ(s_p³ + s_t³)²/(ηρv²(s_p s_t)³)]² / s_max (6.10); when the mass ratio \
-exceeds 10² the collision only erodes a mass κ m_p, s_min = (6γκ/(ηρv²))² / s_max (6.11). The largest \
-fragment is half the heavier collider's mass up to a mass ratio 10², and half of m₀ in the erosive \
-regime. Normalised to the equal-size collision, near-equal masses make the smallest fragments among \
-catastrophic collisions; in the erosive regime the value depends on κ alone (κ²/16).",
-        heavy: false,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
 
 /// Parameters of the unequal-collider scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -53,19 +26,6 @@ impl Default for Params {
     }
 }
 
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio).default(d.erosive_ratio).range(1.0, 1e6).log().doc("mass ratio above which collisions erode"),
-            Control::number("kappa_min", "smallest κ", &mut self.kappa_min).default(d.kappa_min).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
-            Control::number("kappa_max", "largest κ", &mut self.kappa_max).default(d.kappa_max).range(0.01, 100.0).log().doc("eroded mass / projectile mass"),
-            Control::count("n_kappa", "κ curves", &mut self.n_kappa).default(d.n_kappa).range(1.0, 6.0).doc("curves of the erosion family"),
-        ]
-    }
-}
-
 /// s_min(s_x)/s_min(s₀, s₀) for size ratio x = s_x/s₀ in the catastrophic regime.
 pub fn normalised_catastrophic(x: f64) -> f64 {
     let q = (1.0 + x.powi(3)).powi(2) / (4.0 * x.powi(3));
@@ -78,54 +38,106 @@ pub fn normalised_erosion(kappa: f64) -> f64 {
     (kappa / 4.0).powi(2)
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let ratios = logspace(1e-3, 1e9, 241);
-    let x_of = |ratio: f64| ratio.cbrt();
-    let cat: Vec<[f64; 2]> =
-        ratios.iter().filter(|&&r| r <= p.erosive_ratio).map(|&r| [r, normalised_catastrophic(x_of(r))]).collect();
-    let mut fig = Figure::new(
-        "unequal-colliders",
-        "Smallest fragment of unequal collisions (Fig. 6.3)",
-        Axis::log("mass ratio m_x / m₀", ""),
-        Axis::log("s_min / s_min(equal)", ""),
-    )
-    .with(Series::new("catastrophic (6.10)", cat, Style::Line, 0))
-    .with(Series::new("erosive above", vec![[p.erosive_ratio, 1e-3], [p.erosive_ratio, 1e6]], Style::Dashed, 6));
-    let kappas = if p.n_kappa <= 1 {
-        vec![p.kappa_min]
-    } else {
-        logspace(p.kappa_min, p.kappa_max.max(p.kappa_min * 1.000001), p.n_kappa)
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "unequal-colliders",
+        title: "Unequal colliders",
+        source: "App. 6.B; Eqs. 6.9–6.11; Fig. 6.3",
+        explanation: "A body of size s₀ meets colliders s_x. With μ from (6.9) and s_min << s_max, catastrophic \
+fragmentation gives s_min = [6γ(s_p³ + s_t³)²/(ηρv²(s_p s_t)³)]² / s_max (6.10); when the mass ratio \
+exceeds 10² the collision only erodes a mass κ m_p, s_min = (6γκ/(ηρv²))² / s_max (6.11). The largest \
+fragment is half the heavier collider's mass up to a mass ratio 10², and half of m₀ in the erosive \
+regime. Normalised to the equal-size collision, near-equal masses make the smallest fragments among \
+catastrophic collisions; in the erosive regime the value depends on κ alone (κ²/16).",
+        heavy: false,
     };
-    for (i, k) in kappas.iter().enumerate() {
-        let v = normalised_erosion(*k);
-        fig = fig.with(Series::new(
-            format!("erosion (6.11), κ = {}", crate::figure::human(*k)),
-            vec![[p.erosive_ratio, v], [1e9, v]],
-            Style::Line,
-            1 + i,
-        ));
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        vec![
+            Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio)
+                .default(d.erosive_ratio)
+                .range(1.0, 1e6)
+                .log()
+                .doc("mass ratio above which collisions erode"),
+            Control::number("kappa_min", "smallest κ", &mut self.kappa_min)
+                .default(d.kappa_min)
+                .range(0.01, 100.0)
+                .log()
+                .doc("eroded mass / projectile mass"),
+            Control::number("kappa_max", "largest κ", &mut self.kappa_max)
+                .default(d.kappa_max)
+                .range(0.01, 100.0)
+                .log()
+                .doc("eroded mass / projectile mass"),
+            Control::count("n_kappa", "κ curves", &mut self.n_kappa)
+                .default(d.n_kappa)
+                .range(1.0, 6.0)
+                .doc("curves of the erosion family"),
+        ]
     }
-    let (best_ratio, best) = ratios
-        .iter()
-        .filter(|&&r| r <= p.erosive_ratio)
-        .map(|&r| (r, normalised_catastrophic(x_of(r))))
-        .min_by(|a, b| a.1.total_cmp(&b.1))
-        .unwrap_or((1.0, 1.0));
-    let scalars = vec![
-        crate::scene::core::Scalar {
-            key: "best_mass_ratio",
-            label: "catastrophic mass ratio with the smallest s_min",
-            value: best_ratio,
-            unit: "",
-        },
-        crate::scene::core::Scalar { key: "best_normalised", label: "its s_min / s_min(equal)", value: best, unit: "" },
-        crate::scene::core::Scalar {
-            key: "erosion_kappa_min",
-            label: "erosive s_min / s_min(equal) at the smallest κ",
-            value: normalised_erosion(p.kappa_min),
-            unit: "",
-        },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let ratios = logspace(1e-3, 1e9, 241);
+        let x_of = |ratio: f64| ratio.cbrt();
+        let cat: Vec<[f64; 2]> =
+            ratios.iter().filter(|&&r| r <= p.erosive_ratio).map(|&r| [r, normalised_catastrophic(x_of(r))]).collect();
+        let mut fig = Figure::new(
+            "unequal-colliders",
+            "Smallest fragment of unequal collisions (Fig. 6.3)",
+            Axis::log("mass ratio m_x / m₀", ""),
+            Axis::log("s_min / s_min(equal)", ""),
+        )
+        .with(Series::new("catastrophic (6.10)", cat, Style::Line, 0))
+        .with(Series::new(
+            "erosive above",
+            vec![[p.erosive_ratio, 1e-3], [p.erosive_ratio, 1e6]],
+            Style::Dashed,
+            6,
+        ));
+        let kappas = if p.n_kappa <= 1 {
+            vec![p.kappa_min]
+        } else {
+            logspace(p.kappa_min, p.kappa_max.max(p.kappa_min * 1.000001), p.n_kappa)
+        };
+        for (i, k) in kappas.iter().enumerate() {
+            let v = normalised_erosion(*k);
+            fig = fig.with(Series::new(
+                format!("erosion (6.11), κ = {}", crate::figure::human(*k)),
+                vec![[p.erosive_ratio, v], [1e9, v]],
+                Style::Line,
+                1 + i,
+            ));
+        }
+        let (best_ratio, best) = ratios
+            .iter()
+            .filter(|&&r| r <= p.erosive_ratio)
+            .map(|&r| (r, normalised_catastrophic(x_of(r))))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .unwrap_or((1.0, 1.0));
+        let scalars = vec![
+            crate::scene::core::Scalar {
+                key: "best_mass_ratio",
+                label: "catastrophic mass ratio with the smallest s_min",
+                value: best_ratio,
+                unit: "",
+            },
+            crate::scene::core::Scalar {
+                key: "best_normalised",
+                label: "its s_min / s_min(equal)",
+                value: best,
+                unit: "",
+            },
+            crate::scene::core::Scalar {
+                key: "erosion_kappa_min",
+                label: "erosive s_min / s_min(equal) at the smallest κ",
+                value: normalised_erosion(p.kappa_min),
+                unit: "",
+            },
+        ];
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
+    }
 }

@@ -1,55 +1,21 @@
 //! Scene "Collision speeds" (thesis Fig. 4.2): the relative velocity of two
 //! particles over both masses, and its dominant source.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Heatmap, Scale, Series, Style};
-use crate::physics::aggregate::{Aggregate, Particle, R_CRIT, SOURCES, TurbulenceModel, relative_velocity, stopping_time};
+use crate::physics::aggregate::{
+    Aggregate, Particle, R_CRIT, SOURCES, TurbulenceModel, relative_velocity, stopping_time,
+};
+use crate::physics::constants::AU;
 use crate::physics::material::Material;
 use crate::scene::SceneParams;
 use crate::scene::collisions::common::CollisionParams;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::inspect::{self, Action, Inspection};
-use crate::physics::constants::AU;
+use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct CollisionSpeeds;
-
-impl Scene for CollisionSpeeds {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "collision-speeds",
-        title: "Collision speeds",
-        source: "Sect. 4.2.2, App. 5.B; Eqs. 4.11, 5.21–5.24; Fig. 4.2",
-        explanation: "The relative velocity of two particles at the midplane adds Brownian motion \
-    (8k_BT(m₁+m₂)/(πm₁m₂))^{1/2}, turbulence (the thesis's three regimes (4.11) or the full Ormel & Cuzzi \
-form), differential settling, radial drift 2Ωt_s ηv_K/(1 + (Ωt_s)²) and azimuthal drift \
-ηv_K/(1 + (Ωt_s)²) in quadrature (5.24). The first map shows log₁₀ Δv, the second the dominant source \
-    (0 Brownian, 1 turbulence, 2 settling, 3 radial drift, 4 azimuthal drift). Brownian motion dominates \
-for the smallest particles, turbulence for larger ones and drift near Ωt_s ~ 1; porosity shifts the \
-transitions by orders of magnitude in mass.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-
-    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
-        let fig = inspect::figure(&out.figures, figure)?;
-        let grid = &fig.heatmap.as_ref()?.x;
-        // The grid cell under the click.
-        let snap = |v: f64| grid.iter().copied().min_by(|a, b| (a / v).ln().abs().total_cmp(&(b / v).ln().abs()));
-        Some(cell(p, snap(at[0])?, snap(at[1])?))
-    }
-}
 
 /// What the collision of two particles of m_i and m_j monomer masses at the
 /// scene's radius and filling factor comes to: sizes, Stokes numbers, each
@@ -70,11 +36,23 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
     let v = relative_velocity(&env, &pi, &pj, model, p.epsilon);
     let dv = v.total();
     let mut rows = vec![
-        inspect::row("masses m_i, m_j", format!("{} g, {} g", crate::figure::human(ai.mass * 1e3), crate::figure::human(aj.mass * 1e3))),
+        inspect::row(
+            "masses m_i, m_j",
+            format!("{} g, {} g", crate::figure::human(ai.mass * 1e3), crate::figure::human(aj.mass * 1e3)),
+        ),
         inspect::row("in monomers", format!("{}, {}", crate::figure::human(n_i), crate::figure::human(n_j))),
-        inspect::row("radii a_i, a_j", format!("{}, {}", inspect::length(ai.radius(&mono)), inspect::length(aj.radius(&mono)))),
-        inspect::row("filling factors φ", format!("{}, {}", crate::figure::human(ai.filling), crate::figure::human(aj.filling))),
-        inspect::row("Stokes numbers Ωt_s", format!("{}, {}", crate::figure::human(pi.stokes), crate::figure::human(pj.stokes))),
+        inspect::row(
+            "radii a_i, a_j",
+            format!("{}, {}", inspect::length(ai.radius(&mono)), inspect::length(aj.radius(&mono))),
+        ),
+        inspect::row(
+            "filling factors φ",
+            format!("{}, {}", crate::figure::human(ai.filling), crate::figure::human(aj.filling)),
+        ),
+        inspect::row(
+            "Stokes numbers Ωt_s",
+            format!("{}, {}", crate::figure::human(pi.stokes), crate::figure::human(pj.stokes)),
+        ),
         inspect::row("drag regimes", format!("{:?}, {:?}", si.regime, sj.regime)),
         inspect::row("relative velocity Δv", inspect::value(dv, "m/s")),
         inspect::row("dominant source", SOURCES[v.dominant()]),
@@ -108,12 +86,24 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
         let v_stick = pair.jkr_sticking_velocity();
         rows.push(inspect::row("v_stick of the two spheres (2.25)", inspect::value(v_stick, "m/s")));
         if dv > v_stick {
-            format!("bounce: Δv = {} m/s exceeds v_stick = {} m/s of the two spheres (JKR, 2.25)", crate::figure::human(dv), crate::figure::human(v_stick))
+            format!(
+                "bounce: Δv = {} m/s exceeds v_stick = {} m/s of the two spheres (JKR, 2.25)",
+                crate::figure::human(dv),
+                crate::figure::human(v_stick)
+            )
         } else {
-            format!("stick: Δv = {} m/s is below v_stick = {} m/s (JKR, 2.25)", crate::figure::human(dv), crate::figure::human(v_stick))
+            format!(
+                "stick: Δv = {} m/s is below v_stick = {} m/s (JKR, 2.25)",
+                crate::figure::human(dv),
+                crate::figure::human(v_stick)
+            )
         }
     } else if ratio < R_CRIT && dv > p.v_eros {
-        format!("erosion: mass ratio {} < R_crit = 10⁻² and Δv above v_eros = {} m/s", crate::figure::human(ratio), crate::figure::human(p.v_eros))
+        format!(
+            "erosion: mass ratio {} < R_crit = 10⁻² and Δv above v_eros = {} m/s",
+            crate::figure::human(ratio),
+            crate::figure::human(p.v_eros)
+        )
     } else if dv > v_frag {
         format!("fragmentation: Δv above v_frag = {} m/s (4.12)", crate::figure::human(v_frag))
     } else if e_imp > e_compact {
@@ -121,7 +111,11 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
             "stick with compaction: ½μΔv² exceeds 3bE_roll = {} J (b = 0.15); below v_frag = {} m/s{}",
             crate::figure::human(e_compact),
             crate::figure::human(v_frag),
-            if p.v_eros < 1e4 { format!(" and v_eros = {} m/s", crate::figure::human(p.v_eros)) } else { String::new() }
+            if p.v_eros < 1e4 {
+                format!(" and v_eros = {} m/s", crate::figure::human(p.v_eros))
+            } else {
+                String::new()
+            }
         )
     } else {
         format!("hit-and-stick without compaction: ½μΔv² below 3bE_roll = {} J", crate::figure::human(e_compact))
@@ -133,7 +127,11 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
         rows.push(inspect::row("as a collision", "radii outside the contact scene's 20 nm – 2 cm"));
     }
     if spheres && in_range {
-        let material = if mono.icy { Material::water_ice() } else { Material::named("silicate").cloned().unwrap_or_else(Material::water_ice) };
+        let material = if mono.icy {
+            Material::water_ice()
+        } else {
+            Material::named("silicate").cloned().unwrap_or_else(Material::water_ice)
+        };
         let collision = CollisionParams {
             projectile: material.clone(),
             target: material,
@@ -152,11 +150,19 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
                 inspect::length(rj),
                 crate::figure::human(dv.clamp(1e-3, 1e3))
             ),
-            open: SceneParams::Hysteresis(crate::scene::collisions::hysteresis::Params { collision, ..Default::default() }),
+            open: SceneParams::Hysteresis(crate::scene::collisions::hysteresis::Params {
+                collision,
+                ..Default::default()
+            }),
         });
     }
     Inspection {
-        title: format!("m_i = {} m₀, m_j = {} m₀ at {} AU", crate::figure::human(n_i), crate::figure::human(n_j), crate::figure::human(p.radius_au)),
+        title: format!(
+            "m_i = {} m₀, m_j = {} m₀ at {} AU",
+            crate::figure::human(n_i),
+            crate::figure::human(n_j),
+            crate::figure::human(p.radius_au)
+        ),
         rows,
         bars: Some(("Δv by source [m/s]".into(), bars)),
         outcome: Some(outcome),
@@ -164,7 +170,6 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
         point: [n_i, n_j],
     }
 }
-
 
 /// Parameters of the collision-speed scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -201,22 +206,6 @@ impl Default for Params {
             epsilon: 0.1,
             v_eros: 1e4,
         }
-    }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.disk.controls(&d.disk);
-        c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
-        c.push(Control::number("filling", "filling factor φ", &mut self.filling).default(d.filling).range(1e-6, 1.0).log().doc("of both particles"));
-        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of both mass axes"));
-        c.push(Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10.0, 400.0).doc("per axis"));
-        c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full closed form instead of (4.11)"));
-        c.push(Control::number("epsilon", "dispersion ε", &mut self.epsilon).default(d.epsilon).range(0.0, 1.0).doc("of the mass-to-area ratio"));
-        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).style_only().doc("erosion threshold a clicked cell's collision is compared with (1e4: none; the maps do not depend on it)"));
-        c
     }
 }
 
@@ -263,69 +252,135 @@ pub fn map(p: &Params, progress: &Progress) -> Result<SpeedMap, SceneError> {
     Ok(SpeedMap { masses: ns, log_speed, dominant })
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let SpeedMap { masses: ns, log_speed: dv, dominant: dom } = map(p, progress)?;
-    let axis = |s: &str| Axis::log(s, "");
-    let mut fig_v = Figure::new(
-        "collision-speed",
-        "Relative velocity log₁₀ Δv [m/s] (Fig. 4.2)",
-        axis("m_i / m₀"),
-        axis("m_j / m₀"),
-    )
-    .square();
-    fig_v.heatmap = Some(Heatmap::new(ns.clone(), ns.clone(), dv.clone(), "log₁₀ Δv", "m/s"));
-    let mut fig_s = Figure::new(
-        "dominant-source",
-        "Dominant source of Δv (Fig. 4.2)",
-        axis("m_i / m₀"),
-        axis("m_j / m₀"),
-    )
-    .square();
-    fig_s.heatmap = Some(Heatmap::categorical(
-        ns.clone(),
-        ns.clone(),
-        dom.clone(),
-        "dominant source",
-        &crate::physics::aggregate::SOURCES,
-    ));
-    // Mark the equal-mass diagonal.
-    let diag = vec![[ns[0], ns[0]], [ns[ns.len() - 1], ns[ns.len() - 1]]];
-    fig_v = fig_v.with(Series::new("m_i = m_j", diag.clone(), Style::Dashed, 6));
-    fig_s = fig_s.with(Series::new("m_i = m_j", diag, Style::Dashed, 6));
-    // As in Fig. 4.2: contours of Δv over the dominant sources, one per
-    // decade of speed.
-    let decades: Vec<f64> = (-3..=2).map(f64::from).collect();
-    let shown: Vec<String> = decades
-        .iter()
-        .filter(|&&l| dv.iter().any(|&v| v < l) && dv.iter().any(|&v| v > l))
-        .map(|&l| crate::figure::human(10f64.powf(l)))
-        .collect();
-    let key = format!("Δv = {} m/s", shown.join(", "));
-    for level in decades {
-        let pts = crate::figure::contour::contour(&ns, &ns, &dv, level, (Scale::Log, Scale::Log));
-        if !pts.is_empty() {
-            let name = format!("Δv = {} m/s", crate::figure::human(10f64.powf(level)));
-            fig_s = fig_s.with(Series::new(name, pts, Style::Line, 6).keyed(key.clone()));
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "collision-speeds",
+        title: "Collision speeds",
+        source: "Sect. 4.2.2, App. 5.B; Eqs. 4.11, 5.21–5.24; Fig. 4.2",
+        explanation: "The relative velocity of two particles at the midplane adds Brownian motion \
+    (8k_BT(m₁+m₂)/(πm₁m₂))^{1/2}, turbulence (the thesis's three regimes (4.11) or the full Ormel & Cuzzi \
+form), differential settling, radial drift 2Ωt_s ηv_K/(1 + (Ωt_s)²) and azimuthal drift \
+ηv_K/(1 + (Ωt_s)²) in quadrature (5.24). The first map shows log₁₀ Δv, the second the dominant source \
+    (0 Brownian, 1 turbulence, 2 settling, 3 radial drift, 4 azimuthal drift). Brownian motion dominates \
+for the smallest particles, turbulence for larger ones and drift near Ωt_s ~ 1; porosity shifts the \
+transitions by orders of magnitude in mass.",
+        heavy: true,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.disk.controls(&d.disk);
+        c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
+        c.push(
+            Control::number("filling", "filling factor φ", &mut self.filling)
+                .default(d.filling)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("of both particles"),
+        );
+        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of both mass axes"));
+        c.push(
+            Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10.0, 400.0).doc("per axis"),
+        );
+        c.push(
+            Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi)
+                .default(d.ormel_cuzzi)
+                .doc("full closed form instead of (4.11)"),
+        );
+        c.push(
+            Control::number("epsilon", "dispersion ε", &mut self.epsilon)
+                .default(d.epsilon)
+                .range(0.0, 1.0)
+                .doc("of the mass-to-area ratio"),
+        );
+        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).style_only().doc(
+            "erosion threshold a clicked cell's collision is compared with (1e4: none; the maps do not depend on it)",
+        ));
+        c
+    }
+
+    fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let p = self;
+        let fig = inspect::figure(&out.figures, figure)?;
+        let grid = &fig.heatmap.as_ref()?.x;
+        // The grid cell under the click.
+        let snap = |v: f64| grid.iter().copied().min_by(|a, b| (a / v).ln().abs().total_cmp(&(b / v).ln().abs()));
+        Some(cell(p, snap(at[0])?, snap(at[1])?))
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let SpeedMap { masses: ns, log_speed: dv, dominant: dom } = map(p, progress)?;
+        let axis = |s: &str| Axis::log(s, "");
+        let mut fig_v = Figure::new(
+            "collision-speed",
+            "Relative velocity log₁₀ Δv [m/s] (Fig. 4.2)",
+            axis("m_i / m₀"),
+            axis("m_j / m₀"),
+        )
+        .square();
+        fig_v.heatmap = Some(Heatmap::new(ns.clone(), ns.clone(), dv.clone(), "log₁₀ Δv", "m/s"));
+        let mut fig_s =
+            Figure::new("dominant-source", "Dominant source of Δv (Fig. 4.2)", axis("m_i / m₀"), axis("m_j / m₀"))
+                .square();
+        fig_s.heatmap = Some(Heatmap::categorical(
+            ns.clone(),
+            ns.clone(),
+            dom.clone(),
+            "dominant source",
+            &crate::physics::aggregate::SOURCES,
+        ));
+        // Mark the equal-mass diagonal.
+        let diag = vec![[ns[0], ns[0]], [ns[ns.len() - 1], ns[ns.len() - 1]]];
+        fig_v = fig_v.with(Series::new("m_i = m_j", diag.clone(), Style::Dashed, 6));
+        fig_s = fig_s.with(Series::new("m_i = m_j", diag, Style::Dashed, 6));
+        // As in Fig. 4.2: contours of Δv over the dominant sources, one per
+        // decade of speed.
+        let decades: Vec<f64> = (-3..=2).map(f64::from).collect();
+        let shown: Vec<String> = decades
+            .iter()
+            .filter(|&&l| dv.iter().any(|&v| v < l) && dv.iter().any(|&v| v > l))
+            .map(|&l| crate::figure::human(10f64.powf(l)))
+            .collect();
+        let key = format!("Δv = {} m/s", shown.join(", "));
+        for level in decades {
+            let pts = crate::figure::contour::contour(&ns, &ns, &dv, level, (Scale::Log, Scale::Log));
+            if !pts.is_empty() {
+                let name = format!("Δv = {} m/s", crate::figure::human(10f64.powf(level)));
+                fig_s = fig_s.with(Series::new(name, pts, Style::Line, 6).keyed(key.clone()));
+            }
         }
+        let max = dv.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+        let mut counts = [0usize; 5];
+        for d in &dom {
+            counts[*d as usize] += 1;
+        }
+        let mut scalars =
+            vec![Scalar { key: "max_dv", label: "largest Δv on the map", value: 10f64.powf(max), unit: "m s^-1" }];
+        let keys = ["share_brownian", "share_turbulence", "share_settling", "share_radial", "share_azimuthal"];
+        let labels = [
+            "share dominated by Brownian motion",
+            "share dominated by turbulence",
+            "share dominated by settling",
+            "share dominated by radial drift",
+            "share dominated by azimuthal drift",
+        ];
+        for i in 0..5 {
+            scalars.push(Scalar {
+                key: keys[i],
+                label: labels[i],
+                value: counts[i] as f64 / dom.len() as f64,
+                unit: "",
+            });
+        }
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig_v, fig_s],
+            notes: Vec::new(),
+            extra: crate::scene::core::Extra::None,
+        })
     }
-    let max = dv.iter().copied().fold(f64::NEG_INFINITY, f64::max);
-    let mut counts = [0usize; 5];
-    for d in &dom {
-        counts[*d as usize] += 1;
-    }
-    let mut scalars =
-        vec![Scalar { key: "max_dv", label: "largest Δv on the map", value: 10f64.powf(max), unit: "m s^-1" }];
-    let keys = ["share_brownian", "share_turbulence", "share_settling", "share_radial", "share_azimuthal"];
-    let labels = [
-        "share dominated by Brownian motion",
-        "share dominated by turbulence",
-        "share dominated by settling",
-        "share dominated by radial drift",
-        "share dominated by azimuthal drift",
-    ];
-    for i in 0..5 {
-        scalars.push(Scalar { key: keys[i], label: labels[i], value: counts[i] as f64 / dom.len() as f64, unit: "" });
-    }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_v, fig_s], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

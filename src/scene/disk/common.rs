@@ -1,13 +1,14 @@
 //! What the disk scenes (thesis ch. 4) share: the gas disk, the monomers and
 //! the semi-analytical growth model.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::physics::monomer::{ICE_SURFACE_ENERGY, Monomer, RollingLaw, SILICATE_SURFACE_ENERGY};
-use crate::physics::disk::{GasDisk, Profile};
 use crate::physics::aggregate::{R_CRIT, Thresholds, TurbulenceModel};
 use crate::physics::constants::{AU, YEAR};
+use crate::physics::disk::{GasDisk, Profile};
 use crate::physics::growth::{GrowthModel, Porosity, Track};
+use crate::physics::monomer::Monomer;
+use crate::scene::controls::Control;
+use crate::scene::monomer::{self, ROLLING_LAWS};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// A gas disk and its dust monomers. SI units except where stated.
@@ -49,6 +50,7 @@ pub struct DiskParams {
 
 impl Default for DiskParams {
     fn default() -> Self {
+        let m = monomer::Spec::default();
         DiskParams {
             profile: "mmsn".into(),
             disk_mass: 0.01,
@@ -57,13 +59,13 @@ impl Default for DiskParams {
             cold: false,
             alpha: 1e-3,
             metallicity: 0.01,
-            monomer_radius: 1e-7,
-            icy: true,
-            surface_energy_ice: ICE_SURFACE_ENERGY,
-            surface_energy_silicate: SILICATE_SURFACE_ENERGY,
-            rolling_law: "calibrated".into(),
-            hysteresis: 0.5,
-            xi_crit: 3e-10,
+            monomer_radius: m.radius,
+            icy: m.icy,
+            surface_energy_ice: m.surface_energy_ice,
+            surface_energy_silicate: m.surface_energy_silicate,
+            rolling_law: m.rolling_law,
+            hysteresis: m.hysteresis,
+            xi_crit: m.xi_crit,
             own_monomer: false,
         }
     }
@@ -113,38 +115,16 @@ impl DiskParams {
 
     /// The monomers.
     pub fn monomer(&self) -> Monomer {
-        let rolling = match self.rolling_law.as_str() {
-            "contact" => RollingLaw::Contact { hysteresis: self.hysteresis },
-            "dominik-tielens" => RollingLaw::DominikTielens { xi: self.xi_crit },
-            _ => RollingLaw::Calibrated,
-        };
-        Monomer {
-            radius: self.monomer_radius,
-            density: if self.icy { 1400.0 } else { 2600.0 },
-            icy: self.icy,
-            surface_energy: self.surface_energy(),
-            rolling,
-        }
+        let (law, hysteresis, xi_crit) = (self.rolling_law.as_str(), self.hysteresis, self.xi_crit);
+        monomer::monomer(self.monomer_radius, self.icy, self.surface_energy(), law, hysteresis, xi_crit)
     }
 }
-
-/// The rolling-energy laws (key, label).
-pub const ROLLING_LAWS: [(&str, &str); 3] = [
-    ("calibrated", "calibrated (5.26)"),
-    ("contact", "ch. 3 contact (3.16)"),
-    ("dominik-tielens", "Dominik & Tielens"),
-];
-
-/// The keys of the monomer card: the parameters every aggregate scene shares.
-pub const MONOMER_KEYS: [&str; 7] =
-    ["monomer_radius", "icy", "surface_energy_ice", "surface_energy_silicate", "rolling_law", "hysteresis", "xi_crit"];
 
 /// The control of a local scene's disk radius, AU (0.5–300 AU); `meaning`
 /// says what sits there.
 pub fn radius_control<'a>(value: &'a mut f64, meaning: &'static str) -> Control<'a> {
     Control::number("radius_au", "disk radius", value).unit("AU").range(0.5, 300.0).log().doc(meaning)
 }
-
 
 /// The semi-analytical growth model. SI units except where stated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -188,13 +168,45 @@ impl GrowthParams {
     pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
         let mut c = self.disk.controls(&d.disk);
         let v = ("m/s", 1.0);
-        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"));
-        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
-        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).doc("collisions with monomers above it erode (1e4: none)"));
-        c.push(Control::number("v_bounce", "bouncing threshold", &mut self.v_bounce).default(d.v_bounce).unit("m s^-1").shown(v.0, v.1).range(0.01, 1e4).log().doc("compact grains bounce above it (1e4: none)"));
-        c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
-        c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));
-        c.push(Control::number("dlnm", "step Δln m", &mut self.dlnm).default(d.dlnm).range(0.01, 1.0).log().doc("mass growth per step"));
+        c.push(
+            quantities::v_frag(&mut self.v_frag)
+                .default(d.v_frag)
+                .doc("same-size collisions above it fragment (80 m/s for 0.1 µm ice)"),
+        );
+        c.push(
+            Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)
+                .default(d.v_frag_from_monomer)
+                .doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"),
+        );
+        c.push(
+            quantities::v_eros(&mut self.v_eros)
+                .default(d.v_eros)
+                .doc("collisions with monomers above it erode (1e4: none)"),
+        );
+        c.push(
+            Control::number("v_bounce", "bouncing threshold", &mut self.v_bounce)
+                .default(d.v_bounce)
+                .unit("m s^-1")
+                .shown(v.0, v.1)
+                .range(0.01, 1e4)
+                .log()
+                .doc("compact grains bounce above it (1e4: none)"),
+        );
+        c.push(
+            Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi)
+                .default(d.ormel_cuzzi)
+                .doc("full turbulence closed form"),
+        );
+        c.push(
+            Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"),
+        );
+        c.push(
+            Control::number("dlnm", "step Δln m", &mut self.dlnm)
+                .default(d.dlnm)
+                .range(0.01, 1.0)
+                .log()
+                .doc("mass growth per step"),
+        );
         c
     }
 
@@ -203,7 +215,12 @@ impl GrowthParams {
         let mut m = GrowthModel::chapter4(porosity);
         m.disk = self.disk.disk();
         m.monomer = self.disk.monomer();
-        m.thresholds = Thresholds { v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer), v_eros: self.v_eros, v_bounce: self.v_bounce, r_crit: R_CRIT };
+        m.thresholds = Thresholds {
+            v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer),
+            v_eros: self.v_eros,
+            v_bounce: self.v_bounce,
+            r_crit: R_CRIT,
+        };
         m.turbulence = if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis };
         m.newton = self.newton;
         m.dlnm = self.dlnm;
@@ -277,24 +294,4 @@ pub fn aggregate_rows(disk: &DiskParams, r: f64, mass: f64, filling: f64, t_grow
         row("drift time t_drift", value(t_drift / YEAR, "yr")),
         row("what limits growth", limit),
     ]
-}
-
-/// "Open the local column": the Monte Carlo column at radius `r_au` of the
-/// same disk, with the same monomer.
-pub fn column_action(disk: &DiskParams, r_au: f64) -> crate::scene::inspect::Action {
-    use crate::scene::monte_carlo::{common::ColumnParams, mass_distribution};
-    // Three significant digits, as a user would type it.
-    let step = 10f64.powi(r_au.log10().floor() as i32 - 2);
-    let r = ((r_au / step).round() * step).clamp(0.5, 300.0);
-    let run = ColumnParams { disk: disk.clone(), radius_au: r, ..ColumnParams::default() };
-    let hint = format!(
-        "the Monte Carlo column at {} AU of this disk, with the same monomer, from monomers to {} yr",
-        crate::figure::human(r),
-        crate::figure::human(run.t_end_yr)
-    );
-    crate::scene::inspect::Action {
-        label: "Open the local column".into(),
-        hint,
-        open: crate::scene::SceneParams::MassDistribution(mass_distribution::Params { run, ..Default::default() }),
-    }
 }

@@ -1,99 +1,19 @@
 //! Scene "Growth and drift tracks" (thesis Figs. 4.13, 4.14): m(t) and a(t)
 //! against R(t) from many starting radii.
 
-use crate::scene::quantities;
-use crate::scene::controls::{Control, LogRange};
 use super::common::GrowthParams;
-use crate::scene::core::{Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace};
-use crate::scene::inspect::{self, Inspection};
-use crate::scene::timeline;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
+use crate::scene::controls::{Control, LogRange};
+use crate::scene::core::{
+    Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace,
+};
+use crate::scene::inspect::{self, Inspection};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct GrowthTracks;
-
-impl Scene for GrowthTracks {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "growth-tracks",
-        title: "Growth and drift tracks",
-        source: "Sect. 4.5; Eqs. 4.35, 4.36; Figs. 4.13, 4.14",
-        explanation: "The semi-analytical model grows the mass-dominating particle by (4.35) while it drifts by \
-    (4.36), from monomers at many starting radii, for a fixed time. Compact grains (φ = 1) are stopped by \
-fragmentation (v_frag = 10 m/s here, as in Fig. 4.13 left) in the inner disk, by drift further out, and \
-grow too slowly beyond ~100 AU. Porous aggregates (compaction by collisions, gas and self-gravity) \
-outgrow the drift barrier in the inner disk unless erosion by small projectiles (v_eros) halts them \
-near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-
-    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
-        let Extra::Paths(paths) = &out.extra else { return None };
-        let fig = inspect::figure(&out.figures, figure)?;
-        // The nearest point of any track on the clicked figure.
-        let (k, i, _) = paths
-            .iter()
-            .enumerate()
-            .filter(|(_, path)| path.figure == figure)
-            .filter_map(|(k, path)| inspect::nearest(fig, path.points.iter().copied(), at, 0.06).map(|(i, d)| (k, i, d)))
-            .min_by(|a, b| a.2.total_cmp(&b.2))?;
-        let path = &paths[k];
-        let compact = path.color == Some(1);
-        // The track again (one track takes milliseconds), for its full state.
-        let mut model = p.growth.model(if compact { Porosity::Compact } else { Porosity::Full });
-        if compact {
-            model.thresholds.v_frag = p.v_frag_compact;
-        }
-        let r0 = path.points.first()?[0] * AU;
-        let track = model.run(r0, p.duration_yr * YEAR);
-        let q = track.points.get(i).or(track.points.last())?;
-        let mut rows = vec![
-            inspect::row("track", format!("{} growth from {} AU", if compact { "compact" } else { "porous" }, crate::figure::human(r0 / AU))),
-            inspect::row("time t", inspect::value(q.t / YEAR, "yr")),
-        ];
-        rows.extend(super::common::aggregate_rows(&p.growth.disk, q.r, q.mass, q.filling, q.t_grow));
-        rows.push(inspect::row("same-size Δv", inspect::value(q.v_rel, "m/s")));
-        let end = match track.stop {
-            Stop::Planetesimal => format!(
-                "this track forms a planetesimal (10¹⁶ g) at {} AU",
-                crate::figure::human(track.points.last().map_or(0.0, |l| l.r / AU))
-            ),
-            Stop::InnerEdge => "this track drifts inside the inner edge (1 AU) without forming a planetesimal".into(),
-            Stop::TimeLimit | Stop::Steps => format!(
-                "no planetesimal within {} yr{}",
-                crate::figure::human(p.duration_yr),
-                track.halted_by.map_or(String::new(), |h| format!("; growth halted by {h}"))
-            ),
-        };
-        Some(Inspection {
-            title: format!("Growth track at t = {} yr", crate::figure::human(q.t / YEAR)),
-            rows,
-            bars: None,
-            outcome: Some(end),
-            actions: vec![super::common::column_action(&p.growth.disk, q.r / AU)],
-            point: path.points[i],
-        })
-    }
-
-    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
-        let Extra::Paths(paths) = &out.extra else { return None };
-        let t = timeline::time_at(timeline::span(paths)?, p.cursor, crate::figure::Scale::Log);
-        let marks = timeline::along_paths(paths, t);
-        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
-    }
-}
 
 /// Parameters of the growth-track scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -133,20 +53,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.growth.controls(&d.growth);
-        c.push(Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact).default(d.v_frag_compact).unit("m s^-1").shown("m/s", 1.0).range(0.1, 1e3).log().doc("fragmentation velocity of compact grains"));
-        c.push(Control::number("r_min_au", "innermost start", &mut self.r_min_au).default(d.r_min_au).unit("AU").range(1.1, 300.0).log().doc("first starting radius"));
-        c.push(Control::number("r_max_au", "outermost start", &mut self.r_max_au).default(d.r_max_au).unit("AU").range(1.1, 1000.0).log().doc("last starting radius"));
-        c.push(Control::count("tracks", "tracks", &mut self.tracks).default(d.tracks).range(1.0, 200.0).doc("starting radii, log-spaced"));
-        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
-        c.push(Control::toggle("compact", "compact tracks", &mut self.compact).default(d.compact).doc("also run compact growth"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time at which every track is marked, as a fraction of the run in log time").style_only());
-        c
-    }
-
     /// All tracks: (compact, porous), computed in parallel.
     pub fn run(&self, progress: &Progress) -> Result<(Vec<Track>, Vec<Track>), SceneError> {
         let starts = if self.tracks <= 1 {
@@ -173,99 +79,247 @@ impl Params {
     }
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    if p.tracks > 1 {
-        LogRange::new("r_min_au/r_max_au", p.r_min_au, p.r_max_au, p.tracks)?;
-    }
-    let (compact, porous) = p.run(progress)?;
-    let mut fig_m = Figure::new(
-        "growth-tracks-mass",
-        "Peak mass against radius (Fig. 4.13)",
-        Axis::log("radius R", "AU"),
-        Axis::log("mass m_p", "g"),
-    );
-    let mut fig_a = Figure::new(
-        "growth-tracks-size",
-        "Particle radius against radius (Fig. 4.14)",
-        Axis::log("radius R", "AU"),
-        Axis::log("particle radius a", "cm"),
-    );
-    let add = |fig: Figure,
-               tracks: &[Track],
-               name: &str,
-               color: usize,
-               f: &dyn Fn(&crate::physics::growth::TrackPoint) -> f64| {
-        let mut fig = fig;
-        for (i, t) in tracks.iter().enumerate() {
-            let pts = t.points.iter().map(|q| [q.r / AU, f(q)]).collect();
-            fig = fig.with(Series::new(
-                if i == 0 { name.to_string() } else { String::new() },
-                pts,
-                if color == 1 { Style::Dashed } else { Style::Line },
-                color,
-            ));
-        }
-        fig
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "growth-tracks",
+        title: "Growth and drift tracks",
+        source: "Sect. 4.5; Eqs. 4.35, 4.36; Figs. 4.13, 4.14",
+        explanation: "The semi-analytical model grows the mass-dominating particle by (4.35) while it drifts by \
+    (4.36), from monomers at many starting radii, for a fixed time. Compact grains (φ = 1) are stopped by \
+fragmentation (v_frag = 10 m/s here, as in Fig. 4.13 left) in the inner disk, by drift further out, and \
+grow too slowly beyond ~100 AU. Porous aggregates (compaction by collisions, gas and self-gravity) \
+outgrow the drift barrier in the inner disk unless erosion by small projectiles (v_eros) halts them \
+near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
+        heavy: true,
     };
-    fig_m = add(fig_m, &compact, "compact", 1, &|q| q.mass * 1e3);
-    fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
-    fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
-    fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
-    // Where planetesimals form (the last point of a track that reaches the
-    // planetesimal mass) and where their material started.
-    let formed: Vec<[f64; 3]> = porous
-        .iter()
-        .filter(|t| t.stop == Stop::Planetesimal)
-        .filter_map(|t| {
-            let end = t.points.last()?;
-            Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.growth.controls(&d.growth);
+        c.push(
+            Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact)
+                .default(d.v_frag_compact)
+                .unit("m s^-1")
+                .shown("m/s", 1.0)
+                .range(0.1, 1e3)
+                .log()
+                .doc("fragmentation velocity of compact grains"),
+        );
+        c.push(
+            Control::number("r_min_au", "innermost start", &mut self.r_min_au)
+                .default(d.r_min_au)
+                .unit("AU")
+                .range(1.1, 300.0)
+                .log()
+                .doc("first starting radius"),
+        );
+        c.push(
+            Control::number("r_max_au", "outermost start", &mut self.r_max_au)
+                .default(d.r_max_au)
+                .unit("AU")
+                .range(1.1, 1000.0)
+                .log()
+                .doc("last starting radius"),
+        );
+        c.push(
+            Control::count("tracks", "tracks", &mut self.tracks)
+                .default(d.tracks)
+                .range(1.0, 200.0)
+                .doc("starting radii, log-spaced"),
+        );
+        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
+        c.push(
+            Control::toggle("compact", "compact tracks", &mut self.compact)
+                .default(d.compact)
+                .doc("also run compact growth"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time at which every track is marked, as a fraction of the run in log time")
+                .style_only(),
+        );
+        c
+    }
+
+    fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let p = self;
+        let Extra::Paths(paths) = &out.extra else { return None };
+        let fig = inspect::figure(&out.figures, figure)?;
+        // The nearest point of any track on the clicked figure.
+        let (k, i, _) = paths
+            .iter()
+            .enumerate()
+            .filter(|(_, path)| path.figure == figure)
+            .filter_map(|(k, path)| {
+                inspect::nearest(fig, path.points.iter().copied(), at, 0.06).map(|(i, d)| (k, i, d))
+            })
+            .min_by(|a, b| a.2.total_cmp(&b.2))?;
+        let path = &paths[k];
+        let compact = path.color == Some(1);
+        // The track again (one track takes milliseconds), for its full state.
+        let mut model = p.growth.model(if compact { Porosity::Compact } else { Porosity::Full });
+        if compact {
+            model.thresholds.v_frag = p.v_frag_compact;
+        }
+        let r0 = path.points.first()?[0] * AU;
+        let track = model.run(r0, p.duration_yr * YEAR);
+        let q = track.points.get(i).or(track.points.last())?;
+        let mut rows = vec![
+            inspect::row(
+                "track",
+                format!(
+                    "{} growth from {} AU",
+                    if compact { "compact" } else { "porous" },
+                    crate::figure::human(r0 / AU)
+                ),
+            ),
+            inspect::row("time t", inspect::value(q.t / YEAR, "yr")),
+        ];
+        rows.extend(super::common::aggregate_rows(&p.growth.disk, q.r, q.mass, q.filling, q.t_grow));
+        rows.push(inspect::row("same-size Δv", inspect::value(q.v_rel, "m/s")));
+        let end = match track.stop {
+            Stop::Planetesimal => format!(
+                "this track forms a planetesimal (10¹⁶ g) at {} AU",
+                crate::figure::human(track.points.last().map_or(0.0, |l| l.r / AU))
+            ),
+            Stop::InnerEdge => "this track drifts inside the inner edge (1 AU) without forming a planetesimal".into(),
+            Stop::TimeLimit | Stop::Steps => format!(
+                "no planetesimal within {} yr{}",
+                crate::figure::human(p.duration_yr),
+                track.halted_by.map_or(String::new(), |h| format!("; growth halted by {h}"))
+            ),
+        };
+        Some(Inspection {
+            title: format!("Growth track at t = {} yr", crate::figure::human(q.t / YEAR)),
+            rows,
+            bars: None,
+            outcome: Some(end),
+            actions: vec![crate::scene::registry::column_action(&p.growth.disk, q.r / AU)],
+            point: path.points[i],
         })
-        .collect();
-    let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
-    let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
-    if !formed.is_empty() {
-        let points = formed.iter().map(|f| [f[1], f[2]]).collect();
-        fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
     }
-    let max_st_eroded = porous
-        .iter()
-        .filter(|t| t.halted_by == Some("erosion"))
-        .flat_map(|t| t.points.iter().map(|q| q.stokes))
-        .fold(0.0, f64::max);
-    let scalars = vec![
-        Scalar {
-            key: "porous_planetesimal_tracks",
-            label: "porous tracks reaching 10¹⁶ g",
-            value: formed.len() as f64,
-            unit: "",
-        },
-        Scalar {
-            key: "outermost_planetesimal_formation",
-            label: "outermost radius where a planetesimal forms",
-            value: outermost_formation,
-            unit: "AU",
-        },
-        Scalar {
-            key: "outermost_planetesimal_start",
-            label: "outermost start forming a planetesimal",
-            value: outermost,
-            unit: "AU",
-        },
-        Scalar {
-            key: "max_stokes_eroded",
-            label: "largest Ωt_s of tracks halted by erosion",
-            value: max_st_eroded,
-            unit: "",
-        },
-    ];
-    // Every track with the time of each point, for the time cursor.
-    let mut paths = Vec::new();
-    for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
-        let color = Some(color);
-        let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
-        paths.push(TimedPath { figure: "growth-tracks-mass".into(), color, times: times.clone(), points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect() });
-        paths.push(TimedPath { figure: "growth-tracks-size".into(), color, times, points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect() });
+
+    fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+        let p = self;
+        let Extra::Paths(paths) = &out.extra else { return None };
+        let t = timeline::time_at(timeline::span(paths)?, p.cursor, crate::figure::Scale::Log);
+        let marks = timeline::along_paths(paths, t);
+        Some(Cursor { fraction: p.cursor, label: format!("t = {} yr", crate::figure::human(t)), marks, optional: true })
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig_m, fig_a], notes: Vec::new(), extra: Extra::Paths(std::sync::Arc::new(paths)) })
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        if p.tracks > 1 {
+            LogRange::new("r_min_au/r_max_au", p.r_min_au, p.r_max_au, p.tracks)?;
+        }
+        let (compact, porous) = p.run(progress)?;
+        let mut fig_m = Figure::new(
+            "growth-tracks-mass",
+            "Peak mass against radius (Fig. 4.13)",
+            Axis::log("radius R", "AU"),
+            Axis::log("mass m_p", "g"),
+        );
+        let mut fig_a = Figure::new(
+            "growth-tracks-size",
+            "Particle radius against radius (Fig. 4.14)",
+            Axis::log("radius R", "AU"),
+            Axis::log("particle radius a", "cm"),
+        );
+        let add = |fig: Figure,
+                   tracks: &[Track],
+                   name: &str,
+                   color: usize,
+                   f: &dyn Fn(&crate::physics::growth::TrackPoint) -> f64| {
+            let mut fig = fig;
+            for (i, t) in tracks.iter().enumerate() {
+                let pts = t.points.iter().map(|q| [q.r / AU, f(q)]).collect();
+                fig = fig.with(Series::new(
+                    if i == 0 { name.to_string() } else { String::new() },
+                    pts,
+                    if color == 1 { Style::Dashed } else { Style::Line },
+                    color,
+                ));
+            }
+            fig
+        };
+        fig_m = add(fig_m, &compact, "compact", 1, &|q| q.mass * 1e3);
+        fig_m = add(fig_m, &porous, "porous", 0, &|q| q.mass * 1e3);
+        fig_a = add(fig_a, &compact, "compact", 1, &|q| q.radius * 1e2);
+        fig_a = add(fig_a, &porous, "porous", 0, &|q| q.radius * 1e2);
+        // Where planetesimals form (the last point of a track that reaches the
+        // planetesimal mass) and where their material started.
+        let formed: Vec<[f64; 3]> = porous
+            .iter()
+            .filter(|t| t.stop == Stop::Planetesimal)
+            .filter_map(|t| {
+                let end = t.points.last()?;
+                Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
+            })
+            .collect();
+        let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
+        let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
+        if !formed.is_empty() {
+            let points = formed.iter().map(|f| [f[1], f[2]]).collect();
+            fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
+        }
+        let max_st_eroded = porous
+            .iter()
+            .filter(|t| t.halted_by == Some("erosion"))
+            .flat_map(|t| t.points.iter().map(|q| q.stokes))
+            .fold(0.0, f64::max);
+        let scalars = vec![
+            Scalar {
+                key: "porous_planetesimal_tracks",
+                label: "porous tracks reaching 10¹⁶ g",
+                value: formed.len() as f64,
+                unit: "",
+            },
+            Scalar {
+                key: "outermost_planetesimal_formation",
+                label: "outermost radius where a planetesimal forms",
+                value: outermost_formation,
+                unit: "AU",
+            },
+            Scalar {
+                key: "outermost_planetesimal_start",
+                label: "outermost start forming a planetesimal",
+                value: outermost,
+                unit: "AU",
+            },
+            Scalar {
+                key: "max_stokes_eroded",
+                label: "largest Ωt_s of tracks halted by erosion",
+                value: max_st_eroded,
+                unit: "",
+            },
+        ];
+        // Every track with the time of each point, for the time cursor.
+        let mut paths = Vec::new();
+        for (t, color) in compact.iter().map(|t| (t, 1)).chain(porous.iter().map(|t| (t, 0))) {
+            let color = Some(color);
+            let times: Vec<f64> = t.points.iter().map(|q| q.t / YEAR).collect();
+            paths.push(TimedPath {
+                figure: "growth-tracks-mass".into(),
+                color,
+                times: times.clone(),
+                points: t.points.iter().map(|q| [q.r / AU, q.mass * 1e3]).collect(),
+            });
+            paths.push(TimedPath {
+                figure: "growth-tracks-size".into(),
+                color,
+                times,
+                points: t.points.iter().map(|q| [q.r / AU, q.radius * 1e2]).collect(),
+            });
+        }
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig_m, fig_a],
+            notes: Vec::new(),
+            extra: Extra::Paths(std::sync::Arc::new(paths)),
+        })
+    }
 }

@@ -1,17 +1,16 @@
 //! Scene "Mass–porosity track" (thesis Figs. 4.8, 5.2): the filling factor of
 //! the mass-dominating particle against its mass.
 
-use crate::scene::controls::Control;
 use super::common::TrackParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::growth::{Porosity, Track};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 
-/// The scene (see [`Scene`]).
-pub struct PorosityTrack;
+/// The scene's parameters: the disk, the growth model and the radius of the track.
+pub type Params = TrackParams;
 
-impl Scene for PorosityTrack {
-    type Params = TrackParams;
+impl Scene for TrackParams {
     const INFO: SceneInfo = SceneInfo {
         id: "porosity-track",
         title: "Mass–porosity track",
@@ -27,83 +26,86 @@ collisional, gas and self-gravity compaction. Local growth at fixed R (no drift)
         heavy: false,
     };
 
-    fn controls(p: &mut TrackParams) -> Vec<Control<'_>> {
-        p.controls(&TrackParams::default())
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        TrackParams::controls(self, &TrackParams::default())
     }
 
-    fn compute(p: &TrackParams, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
-
-/// Computes the scene.
-pub fn compute(p: &TrackParams) -> Result<SceneOutput, SceneError> {
-    let full = p.track(Porosity::Full);
-    let coll = p.track(Porosity::Collisional);
-    let line = |t: &Track| t.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect::<Vec<_>>();
-    let mut fig = Figure::new(
-        "porosity-track",
-        "Filling factor of the mass-dominating particle (Fig. 4.8)",
-        Axis::log("mass", "g"),
-        Axis::log("filling factor φ", ""),
-    )
-    .with(Series::new("collisional compaction only", line(&coll), Style::Dashed, 1))
-    .with(Series::new("collisional + gas + self-gravity", line(&full), Style::Line, 0));
-    let mut scalars = Vec::new();
-    // The thesis's symbols: open for the crossings (○ a = λ_mfp, ◇ t_s = t_η,
-    // ▽ Ωt_s = α, □ Ωt_s = 1), filled at the first compaction of each kind;
-    // each symbol takes the colour of its track and is listed once.
-    for (tag, t, color) in [("full", &full, 0), ("collisional", &coll, 1)] {
-        let m = &t.markers;
-        let marks = [
-            ("a = λ_mfp", m.radius_mfp, Shape::Circle, Fill::Open),
-            ("t_s = t_η", m.kolmogorov, Shape::Diamond, Fill::Open),
-            ("Ωt_s = α", m.settling, Shape::TriangleDown, Fill::Open),
-            ("Ωt_s = 1", m.stokes_one, Shape::Square, Fill::Open),
-            ("first collisional compaction", m.collisional, Shape::Asterisk, Fill::Filled),
-            ("first gas compaction", m.gas, Shape::Circle, Fill::Filled),
-            ("first self-gravity compaction", m.gravity, Shape::Diamond, Fill::Filled),
-        ];
-        for (name, at, shape, fill) in marks {
-            if let Some([mass, phi]) = at {
-                fig = fig.with(
-                    Series::new(format!("{name} ({tag})"), vec![[mass * 1e3, phi]], Style::Symbol(shape, fill), color)
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let full = p.track(Porosity::Full);
+        let coll = p.track(Porosity::Collisional);
+        let line = |t: &Track| t.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect::<Vec<_>>();
+        let mut fig = Figure::new(
+            "porosity-track",
+            "Filling factor of the mass-dominating particle (Fig. 4.8)",
+            Axis::log("mass", "g"),
+            Axis::log("filling factor φ", ""),
+        )
+        .with(Series::new("collisional compaction only", line(&coll), Style::Dashed, 1))
+        .with(Series::new("collisional + gas + self-gravity", line(&full), Style::Line, 0));
+        let mut scalars = Vec::new();
+        // The thesis's symbols: open for the crossings (○ a = λ_mfp, ◇ t_s = t_η,
+        // ▽ Ωt_s = α, □ Ωt_s = 1), filled at the first compaction of each kind;
+        // each symbol takes the colour of its track and is listed once.
+        for (tag, t, color) in [("full", &full, 0), ("collisional", &coll, 1)] {
+            let m = &t.markers;
+            let marks = [
+                ("a = λ_mfp", m.radius_mfp, Shape::Circle, Fill::Open),
+                ("t_s = t_η", m.kolmogorov, Shape::Diamond, Fill::Open),
+                ("Ωt_s = α", m.settling, Shape::TriangleDown, Fill::Open),
+                ("Ωt_s = 1", m.stokes_one, Shape::Square, Fill::Open),
+                ("first collisional compaction", m.collisional, Shape::Asterisk, Fill::Filled),
+                ("first gas compaction", m.gas, Shape::Circle, Fill::Filled),
+                ("first self-gravity compaction", m.gravity, Shape::Diamond, Fill::Filled),
+            ];
+            for (name, at, shape, fill) in marks {
+                if let Some([mass, phi]) = at {
+                    fig = fig.with(
+                        Series::new(
+                            format!("{name} ({tag})"),
+                            vec![[mass * 1e3, phi]],
+                            Style::Symbol(shape, fill),
+                            color,
+                        )
                         .keyed(name),
-                );
+                    );
+                }
             }
         }
-    }
-    let phi_min_coll = coll.points.iter().map(|q| q.filling).fold(1.0, f64::min);
-    scalars.push(Scalar {
-        key: "phi_min_collisional",
-        label: "lowest φ, collisional compaction only",
-        value: phi_min_coll,
-        unit: "",
-    });
-    if let Some([m, _]) = full.markers.stokes_one {
-        scalars.push(Scalar { key: "mass_st1", label: "mass at Ωt_s = 1 (full)", value: m, unit: "kg" });
-    }
-    if let Some([m, _]) = full.markers.gravity {
+        let phi_min_coll = coll.points.iter().map(|q| q.filling).fold(1.0, f64::min);
         scalars.push(Scalar {
-            key: "mass_gravity",
-            label: "mass at first self-gravity compaction",
-            value: m,
-            unit: "kg",
-        });
-    }
-    if let Some(last) = full.points.last() {
-        scalars.push(Scalar {
-            key: "phi_final",
-            label: "φ at the planetesimal mass (full)",
-            value: last.filling,
+            key: "phi_min_collisional",
+            label: "lowest φ, collisional compaction only",
+            value: phi_min_coll,
             unit: "",
         });
-        scalars.push(Scalar {
-            key: "time_final",
-            label: "time to the planetesimal mass (full)",
-            value: last.t,
-            unit: "s",
-        });
+        if let Some([m, _]) = full.markers.stokes_one {
+            scalars.push(Scalar { key: "mass_st1", label: "mass at Ωt_s = 1 (full)", value: m, unit: "kg" });
+        }
+        if let Some([m, _]) = full.markers.gravity {
+            scalars.push(Scalar {
+                key: "mass_gravity",
+                label: "mass at first self-gravity compaction",
+                value: m,
+                unit: "kg",
+            });
+        }
+        if let Some(last) = full.points.last() {
+            scalars.push(Scalar {
+                key: "phi_final",
+                label: "φ at the planetesimal mass (full)",
+                value: last.filling,
+                unit: "",
+            });
+            scalars.push(Scalar {
+                key: "time_final",
+                label: "time to the planetesimal mass (full)",
+                value: last.t,
+                unit: "s",
+            });
+        }
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -1,42 +1,14 @@
 //! Scene "Stokes number" (thesis Fig. 4.1): Ωt_s against mass for compact
 //! grains and porous aggregates, with and without Newton drag.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
 use super::common::{DiskParams, radius_control};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::{Aggregate, DragRegime, stopping_time};
 use crate::physics::constants::AU;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct StokesNumber;
-
-impl Scene for StokesNumber {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "stokes-number",
-        title: "Stokes number",
-        source: "Sects. 4.2.1–4.2.2, App. 5.A; Eqs. 4.1–4.10; Fig. 4.1",
-        explanation: "The stopping time of a particle of mass m and filling factor φ at the midplane: \
-Epstein drag t_s = 3m/(4ρ_g v_th A) for a < 9λ_mfp/4, Stokes drag 4a/(9λ) times that beyond, and for \
-particle Reynolds numbers Re_p = 4av_dg/(v_th λ) > 1 the drag coefficient C_D = 24Re^{-3/5} \
-    (1 < Re < 800) or 0.44 (4.10), where t_s = 2m/(C_D ρ_g v_dg A) depends on the velocity relative to \
-the gas and is found by iteration. Compact grains reach Ωt_s = 1 in the Epstein regime; D_f = 2.5 \
-aggregates switch to Stokes drag near Ωt_s ~ 1e-3 and to Newton drag before Ωt_s = 1. Dashed: \
-Epstein and Stokes drag only. The projected area is πa² (compact form).",
-        heavy: false,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
 
 /// Parameters of the Stokes-number scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -66,108 +38,142 @@ impl Default for Params {
     }
 }
 
-impl Params {
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "stokes-number",
+        title: "Stokes number",
+        source: "Sects. 4.2.1–4.2.2, App. 5.A; Eqs. 4.1–4.10; Fig. 4.1",
+        explanation: "The stopping time of a particle of mass m and filling factor φ at the midplane: \
+Epstein drag t_s = 3m/(4ρ_g v_th A) for a < 9λ_mfp/4, Stokes drag 4a/(9λ) times that beyond, and for \
+particle Reynolds numbers Re_p = 4av_dg/(v_th λ) > 1 the drag coefficient C_D = 24Re^{-3/5} \
+    (1 < Re < 800) or 0.44 (4.10), where t_s = 2m/(C_D ρ_g v_dg A) depends on the velocity relative to \
+the gas and is found by iteration. Compact grains reach Ωt_s = 1 in the Epstein regime; D_f = 2.5 \
+aggregates switch to Stokes drag near Ωt_s ~ 1e-3 and to Newton drag before Ωt_s = 1. Dashed: \
+Epstein and Stokes drag only. The projected area is πa² (compact form).",
+        heavy: false,
+    };
+
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.disk.controls(&d.disk);
         c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
-        c.push(Control::number("porous_filling", "porous φ", &mut self.porous_filling).default(d.porous_filling).range(1e-6, 1.0).log().doc("filling factor of the constant-φ family"));
-        c.push(Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension).default(d.fractal_dimension).range(1.5, 3.0).doc("D_f of the fractal family"));
+        c.push(
+            Control::number("porous_filling", "porous φ", &mut self.porous_filling)
+                .default(d.porous_filling)
+                .range(1e-6, 1.0)
+                .log()
+                .doc("filling factor of the constant-φ family"),
+        );
+        c.push(
+            Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension)
+                .default(d.fractal_dimension)
+                .range(1.5, 3.0)
+                .doc("D_f of the fractal family"),
+        );
         c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of the mass axis"));
         c
     }
-}
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let disk = p.disk.disk();
-    let mono = p.disk.monomer();
-    let env = disk.local(p.radius_au * AU);
-    let m0 = mono.mass();
-    let ns = logspace(1.0, p.max_monomers, 241);
-    // Filling factor of each family at N monomers.
-    let filling_of = |family: usize, n: f64| match family {
-        0 => 1.0,
-        1 => p.porous_filling,
-        _ => n.powf(1.0 - 3.0 / p.fractal_dimension).min(1.0),
-    };
-    let families = [
-        "compact".to_string(),
-        format!("constant φ = {}", crate::figure::human(p.porous_filling)),
-        format!("fractal, D_f = {}", crate::figure::human(p.fractal_dimension)),
-    ];
-    // The thesis's colours: compact red, constant φ yellow, fractal green.
-    let colours = [0, 3, 2];
-    let mut fig =
-        Figure::new("stokes-number", "Stokes number (Fig. 4.1)", Axis::log("mass m / m₀", ""), Axis::log("Ωt_s", ""));
-    let mut scalars = Vec::new();
-    let mut worst_iterations = 0;
-    for (k, name) in families.iter().enumerate() {
-        let filling = |n: f64| filling_of(k, n);
-        let mut full = Vec::new();
-        let mut no_newton = Vec::new();
-        let mut first = [None::<f64>; 3];
-        for &n in &ns {
-            let agg = Aggregate { mass: n * m0, filling: filling(n) };
-            let s = stopping_time(&env, &mono, &agg, true);
-            worst_iterations = worst_iterations.max(s.iterations);
-            let st = s.time * env.omega;
-            full.push([n, st]);
-            no_newton.push([n, stopping_time(&env, &mono, &agg, false).time * env.omega]);
-            let slot = match s.regime {
-                DragRegime::Stokes => Some(0),
-                DragRegime::Intermediate => Some(1),
-                DragRegime::Newton => Some(2),
-                DragRegime::Epstein => None,
-            };
-            if let Some(i) = slot
-                && first[i].is_none()
-            {
-                first[i] = Some(n);
-            }
-        }
-        if k == 2 {
-            let keys = ["fractal_stokes_onset", "fractal_re_one", "fractal_newton"];
-            let labels = [
-                "D_f family: Stokes drag from m/m₀",
-                "D_f family: Re_p > 1 from m/m₀",
-                "D_f family: C_D = 0.44 from m/m₀",
-            ];
-            for i in 0..3 {
-                if let Some(n) = first[i] {
-                    scalars.push(Scalar { key: keys[i], label: labels[i], value: n, unit: "" });
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let disk = p.disk.disk();
+        let mono = p.disk.monomer();
+        let env = disk.local(p.radius_au * AU);
+        let m0 = mono.mass();
+        let ns = logspace(1.0, p.max_monomers, 241);
+        // Filling factor of each family at N monomers.
+        let filling_of = |family: usize, n: f64| match family {
+            0 => 1.0,
+            1 => p.porous_filling,
+            _ => n.powf(1.0 - 3.0 / p.fractal_dimension).min(1.0),
+        };
+        let families = [
+            "compact".to_string(),
+            format!("constant φ = {}", crate::figure::human(p.porous_filling)),
+            format!("fractal, D_f = {}", crate::figure::human(p.fractal_dimension)),
+        ];
+        // The thesis's colours: compact red, constant φ yellow, fractal green.
+        let colours = [0, 3, 2];
+        let mut fig = Figure::new(
+            "stokes-number",
+            "Stokes number (Fig. 4.1)",
+            Axis::log("mass m / m₀", ""),
+            Axis::log("Ωt_s", ""),
+        );
+        let mut scalars = Vec::new();
+        let mut worst_iterations = 0;
+        for (k, name) in families.iter().enumerate() {
+            let filling = |n: f64| filling_of(k, n);
+            let mut full = Vec::new();
+            let mut no_newton = Vec::new();
+            let mut first = [None::<f64>; 3];
+            for &n in &ns {
+                let agg = Aggregate { mass: n * m0, filling: filling(n) };
+                let s = stopping_time(&env, &mono, &agg, true);
+                worst_iterations = worst_iterations.max(s.iterations);
+                let st = s.time * env.omega;
+                full.push([n, st]);
+                no_newton.push([n, stopping_time(&env, &mono, &agg, false).time * env.omega]);
+                let slot = match s.regime {
+                    DragRegime::Stokes => Some(0),
+                    DragRegime::Intermediate => Some(1),
+                    DragRegime::Newton => Some(2),
+                    DragRegime::Epstein => None,
+                };
+                if let Some(i) = slot
+                    && first[i].is_none()
+                {
+                    first[i] = Some(n);
                 }
             }
+            if k == 2 {
+                let keys = ["fractal_stokes_onset", "fractal_re_one", "fractal_newton"];
+                let labels = [
+                    "D_f family: Stokes drag from m/m₀",
+                    "D_f family: Re_p > 1 from m/m₀",
+                    "D_f family: C_D = 0.44 from m/m₀",
+                ];
+                for i in 0..3 {
+                    if let Some(n) = first[i] {
+                        scalars.push(Scalar { key: keys[i], label: labels[i], value: n, unit: "" });
+                    }
+                }
+            }
+            if k == 0
+                && let Some(&[n, _]) = full.iter().find(|q| q[1] >= 1.0)
+            {
+                scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value: n, unit: "" });
+            }
+            fig = fig.with(Series::new(name.clone(), full, Style::Line, colours[k])).with(Series::new(
+                format!("{name}, Epstein + Stokes only"),
+                no_newton,
+                Style::Dashed,
+                colours[k],
+            ));
         }
-        if k == 0
-            && let Some(&[n, _]) = full.iter().find(|q| q[1] >= 1.0)
-        {
-            scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value: n, unit: "" });
-        }
-        fig = fig.with(Series::new(name.clone(), full, Style::Line, colours[k])).with(Series::new(
-            format!("{name}, Epstein + Stokes only"),
-            no_newton,
-            Style::Dashed,
-            colours[k],
-        ));
+        fig = fig.with(Series::new("Ωt_s = 1", vec![[1.0, 1.0], [p.max_monomers, 1.0]], Style::Dashed, 6)).with(
+            Series::new(
+                format!("Ωt_s = α = {}", crate::figure::human(env.alpha)),
+                vec![[1.0, env.alpha], [p.max_monomers, env.alpha]],
+                Style::Dashed,
+                7,
+            ),
+        );
+        scalars.push(Scalar {
+            key: "newton_iterations",
+            label: "largest Newton-drag iteration count",
+            value: worst_iterations as f64,
+            unit: "",
+        });
+        scalars.push(Scalar {
+            key: "mean_free_path",
+            label: "mean free path λ_mfp",
+            value: env.mean_free_path,
+            unit: "m",
+        });
+        scalars.push(Scalar { key: "monomer_mass", label: "monomer mass m₀", value: m0, unit: "kg" });
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
-    fig = fig
-        .with(Series::new("Ωt_s = 1", vec![[1.0, 1.0], [p.max_monomers, 1.0]], Style::Dashed, 6))
-        .with(Series::new(
-            format!("Ωt_s = α = {}", crate::figure::human(env.alpha)),
-            vec![[1.0, env.alpha], [p.max_monomers, env.alpha]],
-            Style::Dashed,
-            7,
-        ));
-    scalars.push(Scalar {
-        key: "newton_iterations",
-        label: "largest Newton-drag iteration count",
-        value: worst_iterations as f64,
-        unit: "",
-    });
-    scalars
-        .push(Scalar { key: "mean_free_path", label: "mean free path λ_mfp", value: env.mean_free_path, unit: "m" });
-    scalars.push(Scalar { key: "monomer_mass", label: "monomer mass m₀", value: m0, unit: "kg" });
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

@@ -1,19 +1,25 @@
 //! Scene "Timescales" (thesis Figs. 4.5, 4.7): growth and drift times of the
 //! mass-dominating particle against its mass.
 
-use crate::scene::controls::Control;
 use super::common::TrackParams;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::YEAR;
 use crate::physics::growth::Porosity;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use serde::{Deserialize, Serialize};
 
-/// The scene (see [`Scene`]).
-pub struct Timescales;
+/// Parameters of the timescale scene.
+#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The local track.
+    pub track: TrackParams,
+    /// Only collisional compaction (Fig. 4.5) instead of the full model (Fig. 4.7).
+    pub collisional_only: bool,
+}
 
-impl Scene for Timescales {
-    type Params = Params;
+impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "timescales",
         title: "Timescales",
@@ -27,62 +33,47 @@ t_grow << t_drift and outgrow the drift barrier. The dotted line is t_drift/30."
         heavy: false,
     };
 
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p)
-    }
-}
-
-/// Parameters of the timescale scene.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Params {
-    /// The local track.
-    pub track: TrackParams,
-    /// Only collisional compaction (Fig. 4.5) instead of the full model (Fig. 4.7).
-    pub collisional_only: bool,
-}
-
-impl Params {
     /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
+    fn controls(&mut self) -> Vec<Control<'_>> {
         let d = Self::default();
         let mut c = self.track.controls(&d.track);
-        c.push(Control::toggle("collisional_only", "collisional compaction only", &mut self.collisional_only).default(d.collisional_only).doc("Fig. 4.5 instead of Fig. 4.7"));
+        c.push(
+            Control::toggle("collisional_only", "collisional compaction only", &mut self.collisional_only)
+                .default(d.collisional_only)
+                .doc("Fig. 4.5 instead of Fig. 4.7"),
+        );
         c
     }
-}
 
-/// Computes the scene.
-pub fn compute(p: &Params) -> Result<SceneOutput, SceneError> {
-    let track = p.track.track(if p.collisional_only { Porosity::Collisional } else { Porosity::Full });
-    let pts = &track.points;
-    let fig = Figure::new(
-        "timescales",
-        "Growth and drift times of the peak mass (Figs. 4.5, 4.7)",
-        Axis::log("mass", "g"),
-        Axis::log("time", "yr"),
-    )
-    .with(Series::new("t_grow", pts.iter().map(|q| [q.mass * 1e3, q.t_grow / YEAR]).collect(), Style::Line, 0))
-    .with(Series::new("t_drift", pts.iter().map(|q| [q.mass * 1e3, q.t_drift / YEAR]).collect(), Style::Line, 1))
-    .with(Series::new(
-        "t_drift / 30",
-        pts.iter().map(|q| [q.mass * 1e3, q.t_drift / 30.0 / YEAR]).collect(),
-        Style::Dotted,
-        1,
-    ));
-    let worst = pts.iter().filter(|q| q.t_grow.is_finite()).map(|q| q.t_grow / q.t_drift).fold(0.0, f64::max);
-    let scalars = vec![
-        Scalar { key: "max_tgrow_over_tdrift", label: "largest t_grow / t_drift", value: worst, unit: "" },
-        Scalar {
-            key: "min_tdrift",
-            label: "shortest drift time",
-            value: pts.iter().map(|q| q.t_drift).fold(f64::INFINITY, f64::min),
-            unit: "s",
-        },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig], notes: Vec::new(), extra: crate::scene::core::Extra::None })
+    /// Computes the scene.
+    fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let track = p.track.track(if p.collisional_only { Porosity::Collisional } else { Porosity::Full });
+        let pts = &track.points;
+        let fig = Figure::new(
+            "timescales",
+            "Growth and drift times of the peak mass (Figs. 4.5, 4.7)",
+            Axis::log("mass", "g"),
+            Axis::log("time", "yr"),
+        )
+        .with(Series::new("t_grow", pts.iter().map(|q| [q.mass * 1e3, q.t_grow / YEAR]).collect(), Style::Line, 0))
+        .with(Series::new("t_drift", pts.iter().map(|q| [q.mass * 1e3, q.t_drift / YEAR]).collect(), Style::Line, 1))
+        .with(Series::new(
+            "t_drift / 30",
+            pts.iter().map(|q| [q.mass * 1e3, q.t_drift / 30.0 / YEAR]).collect(),
+            Style::Dotted,
+            1,
+        ));
+        let worst = pts.iter().filter(|q| q.t_grow.is_finite()).map(|q| q.t_grow / q.t_drift).fold(0.0, f64::max);
+        let scalars = vec![
+            Scalar { key: "max_tgrow_over_tdrift", label: "largest t_grow / t_drift", value: worst, unit: "" },
+            Scalar {
+                key: "min_tdrift",
+                label: "shortest drift time",
+                value: pts.iter().map(|q| q.t_drift).fold(f64::INFINITY, f64::min),
+                unit: "s",
+            },
+        ];
+        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
+    }
 }

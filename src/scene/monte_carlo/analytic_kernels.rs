@@ -2,48 +2,14 @@
 //! exact solutions of the Smoluchowski equation for the constant, linear and
 //! product kernels (thesis Sect. 4.3; Ormel & Spaans 2008).
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::PhysicsError;
 use crate::physics::monte_carlo::{Analytic, Body, Engine, Settings};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct KernelTests;
-
-impl Scene for KernelTests {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "kernel-tests",
-        title: "Monte Carlo kernel tests",
-        source: "Sect. 4.3; Ormel & Spaans (2008)",
-        explanation: "The engine of the Monte Carlo scenes on problems with exact answers. Starting from N₀ \
-monomers (units m₀ = 1, N₀ = 1 per unit volume), K = 1 gives N(k, t) = (t/2)^{k−1}/(1 + t/2)^{k+1}; \
-K = m₁ + m₂ gives N_k = g [k(1 − g)]^{k−1} e^{−k(1−g)}/k! with g = e^{−t}; K = m₁m₂ gives \
-N_k = (kt)^{k−1} e^{−kt}/(k·k!) before gelation at t = 1. Shown: the mass fraction per ln m, \
-m²N(m), of the runs (mean, dashed ±1σ) and exact, and the relative error per bin. The error shrinks as \
-the groups per decade w* grow; the low-mass tail stays resolved far below the peak.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress)
-    }
-
-    /// Capped runs take seconds each: first the uncapped method with at most
-    /// two runs (milliseconds).
-    fn coarse(p: &Params) -> Option<Params> {
-        let c = Params { group_mass_cap: 1.0, runs: p.runs.min(2), ..p.clone() };
-        (c != *p).then_some(c)
-    }
-}
 
 /// Parameters of the scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -87,23 +53,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let one = ("", 1.0);
-        vec![
-            Control::choice("kernel", "kernel", &mut self.kernel, vec![("constant", "constant K = 1"), ("linear", "linear K = m₁ + m₂"), ("product", "product K = m₁m₂")]).default(d.kernel.clone()).doc("the analytic test problem"),
-            Control::number("time", "time t", &mut self.time).default(d.time).shown(one.0, one.1).range(1e-3, 1e5).log().doc("in units 1/(K₀N₀); the product kernel gels at t = 1"),
-            Control::number("particles", "initial particles N₀V", &mut self.particles).default(d.particles).shown(one.0, one.1).range(1e3, 1e100).log().doc("monomers in the simulated volume"),
-            quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26)"),
-            Control::number("f_m", "sequence limit f_m", &mut self.f_m).default(d.f_m).shown(one.0, one.1).range(0.01, 1.0).log().doc("(4.22)"),
-            Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 64.0).doc("independent seeds, run in parallel"),
-            Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"),
-            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"),
-            Control::number("group_mass_cap", "largest group mass share ε_M", &mut self.group_mass_cap).default(d.group_mass_cap).shown(one.0, one.1).range(1e-4, 1.0).log().doc("caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the constant and product kernels within 5 % at ~100 times the cost"),
-        ]
-    }
-
     fn analytic(&self) -> Analytic {
         match self.kernel.as_str() {
             "linear" => Analytic::Linear,
@@ -192,75 +141,128 @@ fn lowest_centre(bins: &Bins) -> f64 {
     bins.first().map_or(1.0, |b| (b.0 * b.1).sqrt())
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress) -> Result<SceneOutput, SceneError> {
-    let (bins, events) = run(p, progress)?;
-    let kernel = p.analytic();
-    let per_ln = |b: &(f64, f64, f64, f64, f64), v: f64| v / (b.1 / b.0).ln();
-    let centre = |b: &(f64, f64, f64, f64, f64)| (b.0 * b.1).sqrt();
-    let mut fig = Figure::new(
-        "kernel-mass-spectrum",
-        &format!("{} kernel at t = {}", p.kernel, p.time),
-        Axis::log("mass m/m₀", ""),
-        Axis::log("m²N(m) (mass per ln m)", ""),
-    );
-    let mean: Vec<[f64; 2]> = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2)]).collect();
-    let exact_bins: Vec<[f64; 2]> = bins.iter().filter(|b| b.4 > 0.0).map(|b| [centre(b), per_ln(b, b.4)]).collect();
-    fig = fig.with(Series::new("Monte Carlo", mean, Style::Points, 0)).with(Series::new(
-        "exact, same bins",
-        exact_bins,
-        Style::Line,
-        1,
-    ));
-    if p.runs > 1 {
-        let hi = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2 + b.3)]).collect();
-        let lo = bins.iter().filter(|b| b.2 > b.3).map(|b| [centre(b), per_ln(b, b.2 - b.3)]).collect();
-        fig = fig.with(Series::new("±1σ", hi, Style::Dashed, 0)).with(Series::new("", lo, Style::Dashed, 0));
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "kernel-tests",
+        title: "Monte Carlo kernel tests",
+        source: "Sect. 4.3; Ormel & Spaans (2008)",
+        explanation: "The engine of the Monte Carlo scenes on problems with exact answers. Starting from N₀ \
+monomers (units m₀ = 1, N₀ = 1 per unit volume), K = 1 gives N(k, t) = (t/2)^{k−1}/(1 + t/2)^{k+1}; \
+K = m₁ + m₂ gives N_k = g [k(1 − g)]^{k−1} e^{−k(1−g)}/k! with g = e^{−t}; K = m₁m₂ gives \
+N_k = (kt)^{k−1} e^{−kt}/(k·k!) before gelation at t = 1. Shown: the mass fraction per ln m, \
+m²N(m), of the runs (mean, dashed ±1σ) and exact, and the relative error per bin. The error shrinks as \
+the groups per decade w* grow; the low-mass tail stays resolved far below the peak.",
+        heavy: true,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let one = ("", 1.0);
+        vec![
+            Control::choice("kernel", "kernel", &mut self.kernel, vec![("constant", "constant K = 1"), ("linear", "linear K = m₁ + m₂"), ("product", "product K = m₁m₂")]).default(d.kernel.clone()).doc("the analytic test problem"),
+            Control::number("time", "time t", &mut self.time).default(d.time).shown(one.0, one.1).range(1e-3, 1e5).log().doc("in units 1/(K₀N₀); the product kernel gels at t = 1"),
+            Control::number("particles", "initial particles N₀V", &mut self.particles).default(d.particles).shown(one.0, one.1).range(1e3, 1e100).log().doc("monomers in the simulated volume"),
+            quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26)"),
+            Control::number("f_m", "sequence limit f_m", &mut self.f_m).default(d.f_m).shown(one.0, one.1).range(0.01, 1.0).log().doc("(4.22)"),
+            Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 64.0).doc("independent seeds, run in parallel"),
+            Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"),
+            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"),
+            Control::number("group_mass_cap", "largest group mass share ε_M", &mut self.group_mass_cap).default(d.group_mass_cap).shown(one.0, one.1).range(1e-4, 1.0).log().doc("caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the constant and product kernels within 5 % at ~100 times the cost"),
+        ]
     }
-    // The exact k²N_k as a smooth curve where k is large enough to be continuous.
-    let top = bins.last().map_or(10.0, |b| b.1) * 10.0;
-    let floor = 1e-8 * bins.iter().map(|b| per_ln(b, b.4)).fold(0.0, f64::max);
-    let curve: Vec<[f64; 2]> = crate::scene::core::logspace(100.0, top.max(1e3), 200)
-        .into_iter()
-        .map(|k| [k, kernel.exact_mass_per_ln(k, p.time)])
-        .filter(|q| q[1] > floor)
-        .collect();
-    fig = fig.with(Series::new("exact", curve, Style::Dashed, 1));
-    let mut err = Figure::new(
-        "kernel-error",
-        "Relative error per bin",
-        Axis::log("mass m/m₀", ""),
-        Axis::linear("run/exact − 1", ""),
-    );
-    // Bins holding at least 10⁻⁴ of the mass (further out the exact values
-    // are too small for the runs to sample).
-    let total: f64 = bins.iter().map(|b| b.4).sum();
-    let e: Vec<[f64; 2]> =
-        bins.iter().filter(|b| b.4 > 1e-4 * total && b.2 > 0.0).map(|b| [centre(b), b.2 / b.4 - 1.0]).collect();
-    let bars: Vec<[f64; 2]> = bins
-        .iter()
-        .filter(|b| b.4 > 1e-4 * total && b.2 > 0.0 && p.runs > 1)
-        .flat_map(|b| {
-            let se = b.3 / (p.runs as f64).sqrt() / b.4;
-            [[centre(b), b.2 / b.4 - 1.0 + se], [centre(b), b.2 / b.4 - 1.0 - se]]
+
+    /// Capped runs take seconds each: first the uncapped method with at most
+    /// two runs (milliseconds).
+    fn coarse(&self) -> Option<Self> {
+        let p = self;
+        let c = Params { group_mass_cap: 1.0, runs: p.runs.min(2), ..p.clone() };
+        (c != *p).then_some(c)
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let (bins, events) = run(p, progress)?;
+        let kernel = p.analytic();
+        let per_ln = |b: &(f64, f64, f64, f64, f64), v: f64| v / (b.1 / b.0).ln();
+        let centre = |b: &(f64, f64, f64, f64, f64)| (b.0 * b.1).sqrt();
+        let mut fig = Figure::new(
+            "kernel-mass-spectrum",
+            &format!("{} kernel at t = {}", p.kernel, p.time),
+            Axis::log("mass m/m₀", ""),
+            Axis::log("m²N(m) (mass per ln m)", ""),
+        );
+        let mean: Vec<[f64; 2]> = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2)]).collect();
+        let exact_bins: Vec<[f64; 2]> =
+            bins.iter().filter(|b| b.4 > 0.0).map(|b| [centre(b), per_ln(b, b.4)]).collect();
+        fig = fig.with(Series::new("Monte Carlo", mean, Style::Points, 0)).with(Series::new(
+            "exact, same bins",
+            exact_bins,
+            Style::Line,
+            1,
+        ));
+        if p.runs > 1 {
+            let hi = bins.iter().filter(|b| b.2 > 0.0).map(|b| [centre(b), per_ln(b, b.2 + b.3)]).collect();
+            let lo = bins.iter().filter(|b| b.2 > b.3).map(|b| [centre(b), per_ln(b, b.2 - b.3)]).collect();
+            fig = fig.with(Series::new("±1σ", hi, Style::Dashed, 0)).with(Series::new("", lo, Style::Dashed, 0));
+        }
+        // The exact k²N_k as a smooth curve where k is large enough to be continuous.
+        let top = bins.last().map_or(10.0, |b| b.1) * 10.0;
+        let floor = 1e-8 * bins.iter().map(|b| per_ln(b, b.4)).fold(0.0, f64::max);
+        let curve: Vec<[f64; 2]> = crate::scene::core::logspace(100.0, top.max(1e3), 200)
+            .into_iter()
+            .map(|k| [k, kernel.exact_mass_per_ln(k, p.time)])
+            .filter(|q| q[1] > floor)
+            .collect();
+        fig = fig.with(Series::new("exact", curve, Style::Dashed, 1));
+        let mut err = Figure::new(
+            "kernel-error",
+            "Relative error per bin",
+            Axis::log("mass m/m₀", ""),
+            Axis::linear("run/exact − 1", ""),
+        );
+        // Bins holding at least 10⁻⁴ of the mass (further out the exact values
+        // are too small for the runs to sample).
+        let total: f64 = bins.iter().map(|b| b.4).sum();
+        let e: Vec<[f64; 2]> =
+            bins.iter().filter(|b| b.4 > 1e-4 * total && b.2 > 0.0).map(|b| [centre(b), b.2 / b.4 - 1.0]).collect();
+        let bars: Vec<[f64; 2]> = bins
+            .iter()
+            .filter(|b| b.4 > 1e-4 * total && b.2 > 0.0 && p.runs > 1)
+            .flat_map(|b| {
+                let se = b.3 / (p.runs as f64).sqrt() / b.4;
+                [[centre(b), b.2 / b.4 - 1.0 + se], [centre(b), b.2 / b.4 - 1.0 - se]]
+            })
+            .collect();
+        err = err.with(Series::new("mean of the runs", e, Style::Points, 0));
+        if !bars.is_empty() {
+            err = err.with(Series::new("± standard error", bars, Style::Marker, 6));
+        }
+        err = err.with(Series::new("", vec![[lowest_centre(&bins), 0.0], [top / 10.0, 0.0]], Style::Dashed, 6));
+        let peak = bins.iter().max_by(|a, b| a.2.total_cmp(&b.2)).map_or(1.0, centre);
+        let lowest = bins.iter().find(|b| b.2 > 0.0).map_or(1.0, centre);
+        let scalars = vec![
+            Scalar {
+                key: "core_error",
+                label: "worst error, bins with 90 % of the mass",
+                value: core_error(&bins, 0.9),
+                unit: "",
+            },
+            Scalar {
+                key: "decades",
+                label: "decades resolved below the peak",
+                value: (peak / lowest).log10(),
+                unit: "",
+            },
+            Scalar { key: "events", label: "group events per run", value: events, unit: "" },
+        ];
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig, err],
+            notes: Vec::new(),
+            extra: crate::scene::core::Extra::None,
         })
-        .collect();
-    err = err.with(Series::new("mean of the runs", e, Style::Points, 0));
-    if !bars.is_empty() {
-        err = err.with(Series::new("± standard error", bars, Style::Marker, 6));
     }
-    err = err.with(Series::new("", vec![[lowest_centre(&bins), 0.0], [top / 10.0, 0.0]], Style::Dashed, 6));
-    let peak = bins.iter().max_by(|a, b| a.2.total_cmp(&b.2)).map_or(1.0, centre);
-    let lowest = bins.iter().find(|b| b.2 > 0.0).map_or(1.0, centre);
-    let scalars = vec![
-        Scalar {
-            key: "core_error",
-            label: "worst error, bins with 90 % of the mass",
-            value: core_error(&bins, 0.9),
-            unit: "",
-        },
-        Scalar { key: "decades", label: "decades resolved below the peak", value: (peak / lowest).log10(), unit: "" },
-        Scalar { key: "events", label: "group events per run", value: events, unit: "" },
-    ];
-    Ok(SceneOutput { warnings: Vec::new(), scalars, figures: vec![fig, err], notes: Vec::new(), extra: crate::scene::core::Extra::None })
 }

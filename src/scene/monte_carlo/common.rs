@@ -3,14 +3,14 @@
 //! the last runs, so that switching between these scenes or changing a
 //! display parameter does not rerun.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::disk::common::{DiskParams, radius_control};
-use crate::scene::core::{Progress, Scalar, SceneError};
 use crate::physics::aggregate::{R_CRIT, Thresholds, TurbulenceModel};
 use crate::physics::coagulation::{Column, Compaction, Run, RunConfig, Sample};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::monte_carlo::Settings;
+use crate::scene::controls::Control;
+use crate::scene::core::{Progress, Scalar, SceneError};
+use crate::scene::disk::common::{DiskParams, radius_control};
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
@@ -90,23 +90,120 @@ impl ColumnParams {
         let mut c = self.disk.controls(&d.disk);
         let yr = ("yr", 1.0);
         c.push(radius_control(&mut self.radius_au, "radius of the column").default(d.radius_au));
-        c.push(Control::choice("compaction", "compaction", &mut self.compaction, vec![("collisional", "collisional only (Fig. 4.4)"), ("full", "with gas and self-gravity (Fig. 4.6)")]).default(d.compaction.clone()).doc("how aggregates are compressed"));
-        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).labelled("erosion threshold v_eros").doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"));
-        c.push(quantities::v_frag(&mut self.v_frag).default(d.v_frag).doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"));
-        c.push(Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer).default(d.v_frag_from_monomer).doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"));
-        c.push(Control::number("c1", "erosion prefactor c₁", &mut self.c1).default(d.c1).range(0.1, 10.0).log().doc("ε_eros = c₁ v/v_eros (4.13)"));
-        c.push(Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"));
-        c.push(Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi).default(d.ormel_cuzzi).doc("full turbulence closed form"));
-        c.push(quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26); cost grows about as w*²"));
-        c.push(Control::number("f_limit", "sequence limit f_m = f_φ", &mut self.f_limit).default(d.f_limit).range(0.01, 1.0).log().doc("largest relative change of a particle per group event (4.22)–(4.24)"));
-        c.push(Control::number("column_mass", "column mass", &mut self.column_mass).default(d.column_mass).unit("kg").range(1e10, 1e30).log().doc("mass in the simulated column; sets its area M/Σ_d"));
-        c.push(Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 16.0).doc("independent seeds, run in parallel"));
-        c.push(Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"));
-        c.push(Control::number("t_first_yr", "first snapshot", &mut self.t_first_yr).default(d.t_first_yr).unit("yr").shown(yr.0, yr.1).range(1e-2, 1e6).log().doc("time of the first snapshot"));
-        c.push(Control::number("t_end_yr", "last snapshot", &mut self.t_end_yr).default(d.t_end_yr).unit("yr").shown(yr.0, yr.1).range(1e-1, 1e7).log().doc("end of the run"));
-        c.push(Control::count("snapshots", "snapshots", &mut self.snapshots).default(d.snapshots).range(1.0, 12.0).doc("log-spaced in time"));
-        c.push(Control::number("stop_mass_g", "stop at peak mass", &mut self.stop_mass_g).default(d.stop_mass_g).unit("kg").shown("g", 1e3).range(1e-10, 1e25).log().doc("the run ends when m_p reaches it"));
-        c.push(Control::number("max_events_millions", "event limit", &mut self.max_events_millions).default(d.max_events_millions).shown("million", 1.0).range(0.01, 1000.0).log().doc("group events per run at most"));
+        c.push(
+            Control::choice(
+                "compaction",
+                "compaction",
+                &mut self.compaction,
+                vec![("collisional", "collisional only (Fig. 4.4)"), ("full", "with gas and self-gravity (Fig. 4.6)")],
+            )
+            .default(d.compaction.clone())
+            .doc("how aggregates are compressed"),
+        );
+        c.push(
+            quantities::v_eros(&mut self.v_eros)
+                .default(d.v_eros)
+                .labelled("erosion threshold v_eros")
+                .doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"),
+        );
+        c.push(
+            quantities::v_frag(&mut self.v_frag)
+                .default(d.v_frag)
+                .doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"),
+        );
+        c.push(
+            Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)
+                .default(d.v_frag_from_monomer)
+                .doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"),
+        );
+        c.push(
+            Control::number("c1", "erosion prefactor c₁", &mut self.c1)
+                .default(d.c1)
+                .range(0.1, 10.0)
+                .log()
+                .doc("ε_eros = c₁ v/v_eros (4.13)"),
+        );
+        c.push(
+            Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"),
+        );
+        c.push(
+            Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi)
+                .default(d.ormel_cuzzi)
+                .doc("full turbulence closed form"),
+        );
+        c.push(
+            quantities::groups_per_decade(&mut self.groups_per_decade)
+                .default(d.groups_per_decade)
+                .doc("resolution of the distribution method (4.26); cost grows about as w*²"),
+        );
+        c.push(
+            Control::number("f_limit", "sequence limit f_m = f_φ", &mut self.f_limit)
+                .default(d.f_limit)
+                .range(0.01, 1.0)
+                .log()
+                .doc("largest relative change of a particle per group event (4.22)–(4.24)"),
+        );
+        c.push(
+            Control::number("column_mass", "column mass", &mut self.column_mass)
+                .default(d.column_mass)
+                .unit("kg")
+                .range(1e10, 1e30)
+                .log()
+                .doc("mass in the simulated column; sets its area M/Σ_d"),
+        );
+        c.push(
+            Control::count("runs", "runs", &mut self.runs)
+                .default(d.runs)
+                .range(1.0, 16.0)
+                .doc("independent seeds, run in parallel"),
+        );
+        c.push(
+            Control::count("seed", "first seed", &mut self.seed)
+                .default(d.seed)
+                .range(0.0, 1_000_000.0)
+                .doc("runs use seed, seed + 1, …"),
+        );
+        c.push(
+            Control::number("t_first_yr", "first snapshot", &mut self.t_first_yr)
+                .default(d.t_first_yr)
+                .unit("yr")
+                .shown(yr.0, yr.1)
+                .range(1e-2, 1e6)
+                .log()
+                .doc("time of the first snapshot"),
+        );
+        c.push(
+            Control::number("t_end_yr", "last snapshot", &mut self.t_end_yr)
+                .default(d.t_end_yr)
+                .unit("yr")
+                .shown(yr.0, yr.1)
+                .range(1e-1, 1e7)
+                .log()
+                .doc("end of the run"),
+        );
+        c.push(
+            Control::count("snapshots", "snapshots", &mut self.snapshots)
+                .default(d.snapshots)
+                .range(1.0, 12.0)
+                .doc("log-spaced in time"),
+        );
+        c.push(
+            Control::number("stop_mass_g", "stop at peak mass", &mut self.stop_mass_g)
+                .default(d.stop_mass_g)
+                .unit("kg")
+                .shown("g", 1e3)
+                .range(1e-10, 1e25)
+                .log()
+                .doc("the run ends when m_p reaches it"),
+        );
+        c.push(
+            Control::number("max_events_millions", "event limit", &mut self.max_events_millions)
+                .default(d.max_events_millions)
+                .shown("million", 1.0)
+                .range(0.01, 1000.0)
+                .log()
+                .doc("group events per run at most"),
+        );
         c
     }
 
@@ -122,17 +219,23 @@ impl ColumnParams {
         let column = Column {
             env: disk.local(self.radius_au * AU),
             monomer: self.disk.monomer(),
-            thresholds: Thresholds { v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer), v_eros: self.v_eros, v_bounce: f64::INFINITY, r_crit: R_CRIT },
+            thresholds: Thresholds {
+                v_frag: self.disk.fragmentation_velocity(self.v_frag, self.v_frag_from_monomer),
+                v_eros: self.v_eros,
+                v_bounce: f64::INFINITY,
+                r_crit: R_CRIT,
+            },
             c1: self.c1,
             compaction: if full { Compaction::Full } else { Compaction::Collisional },
             turbulence: if self.ormel_cuzzi { TurbulenceModel::OrmelCuzzi } else { TurbulenceModel::Thesis },
             epsilon: 0.1,
             newton: self.newton,
         };
-        let snapshots = crate::scene::core::logspace(self.t_first_yr * YEAR, self.t_end_yr * YEAR, self.snapshots.max(2))
-            .into_iter()
-            .skip(if self.snapshots == 1 { 1 } else { 0 })
-            .collect();
+        let snapshots =
+            crate::scene::core::logspace(self.t_first_yr * YEAR, self.t_end_yr * YEAR, self.snapshots.max(2))
+                .into_iter()
+                .skip(if self.snapshots == 1 { 1 } else { 0 })
+                .collect();
         Ok(RunConfig {
             column,
             column_mass: self.column_mass,

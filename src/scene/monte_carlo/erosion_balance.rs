@@ -3,43 +3,14 @@
 //! three erosion thresholds.
 
 use super::common::{ColumnParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
-
-/// The scene (see [`Scene`]).
-pub struct ErosionBalance;
-
-impl Scene for ErosionBalance {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "erosion-balance",
-        title: "Erosion balance",
-        source: "Sect. 4.4.2; Figs. 4.10, 4.11",
-        explanation: "Why erosion stops the largest bodies. The projectile distribution of the largest body m_max \
-gives, for every projectile mass, the rate at which collisions change m_max: positive where projectiles \
-stick, negative where projectiles below R_crit = 10⁻² m_max hit faster than v_eros and excavate \
-ε_eros = c₁ v/v_eros projectile masses (4.13). ζ = (ΣC₊ − ΣC₋)/(ΣC₊ + ΣC₋) (4.34) is 1 without erosion, \
-    0 at balance, −1 for erosion only. Plotted against Ωt_s(m_max) for three thresholds: at 20 m/s ζ turns \
-negative near Ωt_s ~ 1 and the largest bodies settle into a steady state; at 40 m/s they reach ~10× larger \
-masses first; at 60 m/s erosion is never strong enough to stop growth.",
-        heavy: true,
-    };
-    const PAUSABLE: bool = true;
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-}
 
 /// Parameters of the scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -63,21 +34,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters (the base run's own v_eros is not used).
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c: Vec<Control<'_>> = self.run.controls(&d.run).into_iter().filter(|c| c.key != "v_eros").collect();
-        let v = ("m/s", 1.0);
-        for (key, label, value, default) in [
-            ("v_eros_1", "v_eros (first)", &mut self.v_eros_1, d.v_eros_1),
-            ("v_eros_2", "v_eros (second)", &mut self.v_eros_2, d.v_eros_2),
-            ("v_eros_3", "v_eros (third)", &mut self.v_eros_3, d.v_eros_3),
-        ] {
-            c.push(Control::number(key, label, value).unit("m s^-1").shown(v.0, v.1).range(1.0, 1e4).log().default(default).doc("erosion threshold of one set of runs"));
-        }
-        c
-    }
-
     fn thresholds(&self) -> [f64; 3] {
         [self.v_eros_1, self.v_eros_2, self.v_eros_3]
     }
@@ -96,66 +52,108 @@ pub fn steady_state(run: &Run) -> (f64, f64) {
     (median(&|s| s.stokes_max), median(&|s| s.m_max))
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    // The three thresholds run side by side; cached sets are reused.
-    let params: Vec<ColumnParams> =
-        p.thresholds().iter().map(|&v| ColumnParams { v_eros: v, ..p.run.clone() }).collect();
-    let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
-    let fractions: Vec<std::sync::atomic::AtomicU32> =
-        missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
-    // Live view: every threshold's first run so far (cached ones complete).
-    let so_far: std::sync::Mutex<Vec<(f64, Arc<Vec<Run>>)>> = std::sync::Mutex::new(
-        p.thresholds()
-            .into_iter()
-            .zip(&params)
-            .map(|(v, q)| {
-                let done = if cache.contains(q) { cache.get(q, progress).ok() } else { None };
-                (v, done.unwrap_or_default())
-            })
-            .collect(),
-    );
-    let fresh: Vec<Vec<Run>> = missing
-        .par_iter()
-        .enumerate()
-        .map(|(k, q)| {
-            let cfg = q.config()?;
-            let slot = params.iter().position(|x| x == *q).unwrap_or(0);
-            let observe = |run: &Run| {
-                if let Ok(mut sets) = so_far.lock() {
-                    if let Some(s) = sets.get_mut(slot) {
-                        s.1 = Arc::new(vec![run.clone()]);
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "erosion-balance",
+        title: "Erosion balance",
+        source: "Sect. 4.4.2; Figs. 4.10, 4.11",
+        explanation: "Why erosion stops the largest bodies. The projectile distribution of the largest body m_max \
+gives, for every projectile mass, the rate at which collisions change m_max: positive where projectiles \
+stick, negative where projectiles below R_crit = 10⁻² m_max hit faster than v_eros and excavate \
+ε_eros = c₁ v/v_eros projectile masses (4.13). ζ = (ΣC₊ − ΣC₋)/(ΣC₊ + ΣC₋) (4.34) is 1 without erosion, \
+    0 at balance, −1 for erosion only. Plotted against Ωt_s(m_max) for three thresholds: at 20 m/s ζ turns \
+negative near Ωt_s ~ 1 and the largest bodies settle into a steady state; at 40 m/s they reach ~10× larger \
+masses first; at 60 m/s erosion is never strong enough to stop growth.",
+        heavy: true,
+    };
+    const PAUSABLE: bool = true;
+
+    /// The documented parameters (the base run's own v_eros is not used).
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c: Vec<Control<'_>> = self.run.controls(&d.run).into_iter().filter(|c| c.key != "v_eros").collect();
+        let v = ("m/s", 1.0);
+        for (key, label, value, default) in [
+            ("v_eros_1", "v_eros (first)", &mut self.v_eros_1, d.v_eros_1),
+            ("v_eros_2", "v_eros (second)", &mut self.v_eros_2, d.v_eros_2),
+            ("v_eros_3", "v_eros (third)", &mut self.v_eros_3, d.v_eros_3),
+        ] {
+            c.push(
+                Control::number(key, label, value)
+                    .unit("m s^-1")
+                    .shown(v.0, v.1)
+                    .range(1.0, 1e4)
+                    .log()
+                    .default(default)
+                    .doc("erosion threshold of one set of runs"),
+            );
+        }
+        c
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut RunCache = ctx.caches.get();
+        // The three thresholds run side by side; cached sets are reused.
+        let params: Vec<ColumnParams> =
+            p.thresholds().iter().map(|&v| ColumnParams { v_eros: v, ..p.run.clone() }).collect();
+        let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
+        let fractions: Vec<std::sync::atomic::AtomicU32> =
+            missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
+        // Live view: every threshold's first run so far (cached ones complete).
+        let so_far: std::sync::Mutex<Vec<(f64, Arc<Vec<Run>>)>> = std::sync::Mutex::new(
+            p.thresholds()
+                .into_iter()
+                .zip(&params)
+                .map(|(v, q)| {
+                    let done = if cache.contains(q) { cache.get(q, progress).ok() } else { None };
+                    (v, done.unwrap_or_default())
+                })
+                .collect(),
+        );
+        let fresh: Vec<Vec<Run>> = missing
+            .par_iter()
+            .enumerate()
+            .map(|(k, q)| {
+                let cfg = q.config()?;
+                let slot = params.iter().position(|x| x == *q).unwrap_or(0);
+                let observe = |run: &Run| {
+                    if let Ok(mut sets) = so_far.lock() {
+                        if let Some(s) = sets.get_mut(slot) {
+                            s.1 = Arc::new(vec![run.clone()]);
+                        }
+                        let mut out = output(p, &sets);
+                        let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
+                        out.notes.insert(0, format!("running: v_eros = {} m/s at {t:.4} yr (live view)", q.v_eros));
+                        progress.publish(out);
                     }
-                    let mut out = output(p, &sets);
-                    let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
-                    out.notes.insert(0, format!("running: v_eros = {} m/s at {t:.4} yr (live view)", q.v_eros));
-                    progress.publish(out);
-                }
-            };
-            let runs = cfg.run_seeds_observed(
-                q.runs.max(1),
-                &|f| {
-                    fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
-                    let sum: f64 =
-                        fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
-                    progress.set(sum / fractions.len() as f64);
-                    progress.wait_while_paused();
-                    !progress.cancelled()
-                },
-                &observe,
-            )?;
-            progress.check()?;
-            Ok(runs)
-        })
-        .collect::<Result<_, SceneError>>()?;
-    for (q, runs) in missing.into_iter().zip(fresh) {
-        cache.insert(q.clone(), runs);
+                };
+                let runs = cfg.run_seeds_observed(
+                    q.runs.max(1),
+                    &|f| {
+                        fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+                        let sum: f64 =
+                            fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                        progress.set(sum / fractions.len() as f64);
+                        progress.wait_while_paused();
+                        !progress.cancelled()
+                    },
+                    &observe,
+                )?;
+                progress.check()?;
+                Ok(runs)
+            })
+            .collect::<Result<_, SceneError>>()?;
+        for (q, runs) in missing.into_iter().zip(fresh) {
+            cache.insert(q.clone(), runs);
+        }
+        let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();
+        for (v, q) in p.thresholds().into_iter().zip(&params) {
+            sets.push((v, cache.get(q, progress)?));
+        }
+        Ok(output(p, &sets))
     }
-    let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();
-    for (v, q) in p.thresholds().into_iter().zip(&params) {
-        sets.push((v, cache.get(q, progress)?));
-    }
-    Ok(output(p, &sets))
 }
 
 /// The figures, scalars and notes of runs for each threshold (v_eros, runs).
@@ -211,5 +209,11 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             notes.push(format!("v_eros = {v} m/s, {line}"));
         }
     }
-    SceneOutput { warnings: Vec::new(), scalars, figures: vec![zeta, proj], notes, extra: crate::scene::core::Extra::None }
+    SceneOutput {
+        warnings: Vec::new(),
+        scalars,
+        figures: vec![zeta, proj],
+        notes,
+        extra: crate::scene::core::Extra::None,
+    }
 }

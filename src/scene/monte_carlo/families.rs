@@ -3,21 +3,46 @@
 //! the peak track φ_p(m_p) and the semi-analytical track for comparison.
 
 use super::common::{ColumnParams, RunCache};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::Aggregate;
 use crate::physics::coagulation::{FamilyPoint, Run};
-use crate::scene::inspect::{self, Inspection};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::inspect::{self, Inspection};
 use serde::{Deserialize, Serialize};
 
-/// The scene (see [`Scene`]).
-pub struct Families;
+/// Parameters of the scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// The runs.
+    pub run: ColumnParams,
+    /// Show the semi-analytical track.
+    pub track: bool,
+}
 
-impl Scene for Families {
-    type Params = Params;
+impl Default for Params {
+    fn default() -> Self {
+        Params { run: ColumnParams::default(), track: true }
+    }
+}
+
+/// The semi-analytical track matching a column: (mass, φ) points.
+pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
+    let porosity = if run.compaction == "full" { Porosity::Full } else { Porosity::Collisional };
+    let mut model = GrowthModel::chapter4(porosity);
+    model.disk = run.disk.disk();
+    model.monomer = run.disk.monomer();
+    model.newton = run.newton;
+    model.drift = false;
+    model.planetesimal_mass = run.stop_mass_g * 1e-3;
+    let track = model.run(run.radius_au * AU, run.t_end_yr * YEAR * 10.0);
+    track.points.iter().map(|q| [q.mass, q.filling]).collect()
+}
+
+impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "families",
         title: "Monte Carlo families",
@@ -32,15 +57,20 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
     };
     const PAUSABLE: bool = true;
 
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(
+            Control::toggle("track", "semi-analytical track", &mut self.track)
+                .default(d.track)
+                .doc("the Sect. 4.5 model for comparison"),
+        );
+        c
     }
 
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    fn inspect(p: &Params, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+    fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
+        let p = self;
         let runs = out.extra.model::<Vec<Run>>()?;
         let first = runs.first()?;
         let fig = inspect::figure(&out.figures, figure)?;
@@ -91,54 +121,17 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
             point: [f.mass * 1e3, f.filling],
         })
     }
-}
 
-/// Parameters of the scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Params {
-    /// The runs.
-    pub run: ColumnParams,
-    /// Show the semi-analytical track.
-    pub track: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { run: ColumnParams::default(), track: true }
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut RunCache = ctx.caches.get();
+        let live = super::common::live_view(progress, |runs| output(p, runs));
+        let runs = cache.get_observed(&p.run, progress, &live)?;
+        let mut out = output(p, &runs);
+        out.extra = crate::scene::core::Extra::Model(crate::scene::core::ModelData(runs));
+        Ok(out)
     }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(Control::toggle("track", "semi-analytical track", &mut self.track).default(d.track).doc("the Sect. 4.5 model for comparison"));
-        c
-    }
-}
-
-/// The semi-analytical track matching a column: (mass, φ) points.
-pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
-    let porosity = if run.compaction == "full" { Porosity::Full } else { Porosity::Collisional };
-    let mut model = GrowthModel::chapter4(porosity);
-    model.disk = run.disk.disk();
-    model.monomer = run.disk.monomer();
-    model.newton = run.newton;
-    model.drift = false;
-    model.planetesimal_mass = run.stop_mass_g * 1e-3;
-    let track = model.run(run.radius_au * AU, run.t_end_yr * YEAR * 10.0);
-    track.points.iter().map(|q| [q.mass, q.filling]).collect()
-}
-
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let live = super::common::live_view(progress, |runs| output(p, runs));
-    let runs = cache.get_observed(&p.run, progress, &live)?;
-    let mut out = output(p, &runs);
-    out.extra = crate::scene::core::Extra::Model(crate::scene::core::ModelData(runs));
-    Ok(out)
 }
 
 /// The scene's figures from a set of runs.
@@ -167,7 +160,8 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
     if runs.len() > 1 {
         notes.push(format!("dots show the first run (seed {}) only", p.run.seed));
     }
-    SceneOutput { warnings: Vec::new(),
+    SceneOutput {
+        warnings: Vec::new(),
         scalars: super::common::summary(runs),
         figures: vec![fig],
         notes,

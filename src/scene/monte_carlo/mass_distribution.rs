@@ -3,57 +3,14 @@
 //! over runs, with the growth and drift timescales of the peak mass.
 
 use super::common::{ColumnParams, RunCache, endings, summary};
-use crate::scene::controls::Control;
-use crate::scene::quantities;
-use crate::scene::timeline;
-use crate::scene::core::{Context, Cursor, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::coagulation::{Run, Sample, mass_distribution};
 use crate::physics::constants::YEAR;
+use crate::scene::controls::Control;
+use crate::scene::core::{Context, Cursor, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::quantities;
+use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct MassDistribution;
-
-impl Scene for MassDistribution {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "mass-distribution",
-        title: "Monte Carlo mass distribution",
-        source: "Sects. 4.3–4.4; Figs. 4.4–4.7, 4.9",
-        explanation: "A vertical column of the disk followed with the distribution method of Ormel & Spaans (2008): \
-families of identical aggregates (mass m, filling factor φ), w groups of 2^z particles each, collide as \
-groups at the rates λ_ij = w_i w_j 2^{z_i+N_ε} K_ij/V (4.25) with the column kernel \
-K = σ h_{d,ij}/((2π)^{1/2} h_i h_j) v_rel (4.19). N_ε (4.22)–(4.24) limits how much a large particle changes \
-in one group event; zoom factors z* = [log₂(N₁₀/w*)] (4.26) keep about w* groups in every mass decade, so \
-the distribution is resolved many decades below its peak. Shown: m²f(m)/ρ_d, the mass fraction per ln m, \
-at the snapshot times (mean of the runs, dashed ±1σ), and t_grow = m_p/ṁ_p (4.30) against \
-t_drift = R/v_drift (4.31) of the peak mass m_p = ⟨m²⟩/⟨m⟩ (4.29). Perfect sticking grows through the \
-drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies stall near Ωt_s ~ 1.",
-        heavy: true,
-    };
-    const PAUSABLE: bool = true;
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx.progress, ctx.caches.get())
-    }
-
-    fn cursor(p: &Params, out: &SceneOutput) -> Option<Cursor> {
-        let range = timeline::x_range(out, "peak-mass-history")?;
-        let t = timeline::time_at(range, p.cursor, Scale::Log);
-        let mut marks = timeline::along_x(out, "peak-mass-history", t);
-        let mut label = format!("t = {} yr", crate::figure::human(t));
-        if let Some((mark, shown)) = timeline::snapshot(out, "mass-distribution", t) {
-            marks.push(mark);
-            label.push_str(&format!(" (snapshot {} yr)", crate::figure::human(shown)));
-        }
-        Some(Cursor { fraction: p.cursor, label, marks, optional: true })
-    }
-}
 
 /// Parameters of the scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -70,17 +27,6 @@ pub struct Params {
 impl Default for Params {
     fn default() -> Self {
         Params { run: ColumnParams::default(), bins_per_decade: 2, cursor: 0.0 }
-    }
-}
-
-impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"));
-        c.push(quantities::time_cursor(&mut self.cursor).default(d.cursor).doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time").style_only());
-        c
     }
 }
 
@@ -104,11 +50,64 @@ pub fn growth_times(history: &[Sample]) -> Vec<(f64, f64, f64)> {
     out
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, progress: &Progress, cache: &mut RunCache) -> Result<SceneOutput, SceneError> {
-    let live = super::common::live_view(progress, |runs| output(p, runs));
-    let runs = cache.get_observed(&p.run, progress, &live)?;
-    Ok(output(p, &runs))
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "mass-distribution",
+        title: "Monte Carlo mass distribution",
+        source: "Sects. 4.3–4.4; Figs. 4.4–4.7, 4.9",
+        explanation: "A vertical column of the disk followed with the distribution method of Ormel & Spaans (2008): \
+families of identical aggregates (mass m, filling factor φ), w groups of 2^z particles each, collide as \
+groups at the rates λ_ij = w_i w_j 2^{z_i+N_ε} K_ij/V (4.25) with the column kernel \
+K = σ h_{d,ij}/((2π)^{1/2} h_i h_j) v_rel (4.19). N_ε (4.22)–(4.24) limits how much a large particle changes \
+in one group event; zoom factors z* = [log₂(N₁₀/w*)] (4.26) keep about w* groups in every mass decade, so \
+the distribution is resolved many decades below its peak. Shown: m²f(m)/ρ_d, the mass fraction per ln m, \
+at the snapshot times (mean of the runs, dashed ±1σ), and t_grow = m_p/ṁ_p (4.30) against \
+t_drift = R/v_drift (4.31) of the peak mass m_p = ⟨m²⟩/⟨m⟩ (4.29). Perfect sticking grows through the \
+drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies stall near Ωt_s ~ 1.",
+        heavy: true,
+    };
+    const PAUSABLE: bool = true;
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(
+            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade)
+                .default(d.bins_per_decade)
+                .range(1.0, 10.0)
+                .doc("histogram"),
+        );
+        c.push(
+            quantities::time_cursor(&mut self.cursor)
+                .default(d.cursor)
+                .doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time")
+                .style_only(),
+        );
+        c
+    }
+
+    fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+        let p = self;
+        let range = timeline::x_range(out, "peak-mass-history")?;
+        let t = timeline::time_at(range, p.cursor, Scale::Log);
+        let mut marks = timeline::along_x(out, "peak-mass-history", t);
+        let mut label = format!("t = {} yr", crate::figure::human(t));
+        if let Some((mark, shown)) = timeline::snapshot(out, "mass-distribution", t) {
+            marks.push(mark);
+            label.push_str(&format!(" (snapshot {} yr)", crate::figure::human(shown)));
+        }
+        Some(Cursor { fraction: p.cursor, label, marks, optional: true })
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let (p, progress) = (self, ctx.progress);
+        let cache: &mut RunCache = ctx.caches.get();
+        let live = super::common::live_view(progress, |runs| output(p, runs));
+        let runs = cache.get_observed(&p.run, progress, &live)?;
+        Ok(output(p, &runs))
+    }
 }
 
 /// The scene's figures from a set of runs.
@@ -177,7 +176,8 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
                 1,
             ));
     }
-    SceneOutput { warnings: Vec::new(),
+    SceneOutput {
+        warnings: Vec::new(),
         scalars: summary(runs),
         figures: vec![dist, times, peak],
         notes: endings(runs),

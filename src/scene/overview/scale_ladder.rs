@@ -10,43 +10,10 @@ use crate::physics::monomer::{GUNDLACH_RADIUS, GUNDLACH_ROLLING_ENERGY, Monomer,
 use crate::scene::batches::common::BatchParams;
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Extra, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
-use std::sync::Arc;
-use crate::scene::disk::common::{DiskParams, GrowthParams, ROLLING_LAWS, TrackParams};
+use crate::scene::disk::common::{DiskParams, GrowthParams, TrackParams};
+use crate::scene::monomer::ROLLING_LAWS;
 use serde::{Deserialize, Serialize};
-
-/// The scene (see [`Scene`]).
-pub struct ScaleLadder;
-
-impl Scene for ScaleLadder {
-    type Params = Params;
-    const INFO: SceneInfo = SceneInfo {
-        id: "scale-ladder",
-        title: "Scale ladder",
-        source: "Sects. 1.2, 3.2, 4.2.3–4.2.4, 4.5, 5.3, App. 5.C; Eqs. 1.24, 1.25, 2.25, 3.16, 4.12, 4.15, 5.26; Figs. 4.8, 5.9",
-        explanation: "One monomer, four scales. The contact of two monomers (ch. 2) sets the energy to break it, \
-E_break ∝ (γ⁵R⁴/E*²)^{1/3} (1.24), and their sticking velocity (2.25); its rolling energy E_roll = 6πγRξ_crit \
-(1.25) depends on the critical displacement: (a_eq/12)Δγ/γ in ch. 3 (3.16), E_roll ∝ a₀^{5/3}, calibrated to \
-Gundlach et al.'s measurement in (5.26), or a fixed 0.3 nm (Dominik & Tielens, E_roll ∝ a₀). The aggregates' \
-thresholds follow: collisional compaction above 3bE_roll, the compressive strength E_roll φ³/a₀³ (4.15), \
-v_frag = 20(E_break/m₀)^{1/2} (4.12). A lower E_roll makes compacter aggregates, which cross Ωt_s = 1 at a \
-lower mass; over the whole disk (ch. 5) that moves the outer edge of the planetesimal formation zone \
-(Fig. 5.9). Every number here is recomputed when the monomer changes; the disk step runs the batch model \
-at the resolution set below.",
-        heavy: true,
-    };
-
-    fn controls(p: &mut Params) -> Vec<Control<'_>> {
-        p.controls()
-    }
-
-    fn coarse(p: &Params) -> Option<Params> {
-        Some(Params { run: p.run.coarse(), ..p.clone() })
-    }
-
-    fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        compute(p, ctx)
-    }
-}
+use std::sync::Arc;
 
 /// Parameters of the scale ladder. SI units except where stated.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
@@ -69,17 +36,6 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The documented parameters.
-    pub fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            crate::scene::disk::common::radius_control(&mut self.radius_au, "where the local column grows")
-                .default(d.radius_au),
-        );
-        c
-    }
-
     /// The disk and monomer with the rolling-energy law `law` (a key of [`ROLLING_LAWS`]).
     fn with_law(&self, law: &str) -> DiskParams {
         DiskParams { rolling_law: law.to_string(), ..self.run.disk.clone() }
@@ -97,124 +53,263 @@ fn stokes_unity(t: &Track) -> Option<(f64, f64)> {
     t.points.iter().find(|q| q.stokes >= 1.0).map(|q| (q.mass, q.t))
 }
 
-/// Computes the scene.
-pub fn compute(p: &Params, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-    let mono = p.run.disk.monomer();
-    let pair = mono.pair();
-    // 1. The contact of two monomers.
-    let mut scalars = vec![
-        Scalar { key: "a_eq", label: "contact: JKR equilibrium radius a_eq (2.10)", value: pair.jkr_equilibrium_radius(), unit: "m" },
-        Scalar { key: "F_c", label: "contact: pull-off force F_c", value: pair.pull_off_force(), unit: "N" },
-        Scalar { key: "E_break", label: "contact: energy to break E_break (1.24)", value: mono.break_energy(), unit: "J" },
-        Scalar { key: "E_roll", label: "contact: rolling energy E_roll (1.25)", value: mono.rolling_energy(), unit: "J" },
-        Scalar { key: "xi_crit", label: "contact: critical rolling displacement ξ_crit", value: mono.rolling_displacement(), unit: "m" },
-        Scalar { key: "hysteresis_of_5_26", label: "contact: Δγ/γ that makes the ch. 3 law equal (5.26)", value: Monomer { rolling: RollingLaw::Calibrated, ..mono }.hysteresis_of_calibration(), unit: "" },
-        Scalar { key: "v_stick_jkr", label: "contact: sticking velocity, JKR (2.25)", value: mono.jkr_sticking_velocity(), unit: "m s^-1" },
-    ];
-    ctx.progress.check()?;
-    // 2. Aggregate thresholds.
-    let v_frag = p.run.disk.fragmentation_velocity(p.run.v_frag, p.run.v_frag_from_monomer);
-    scalars.extend([
-        Scalar { key: "E_compaction", label: "aggregates: compaction onset 3bE_roll (b = 0.15)", value: mono.compaction_energy(), unit: "J" },
-        Scalar { key: "v_frag_monomer", label: "aggregates: v_frag of the monomer (4.12)", value: mono.fragmentation_velocity(), unit: "m s^-1" },
-        Scalar { key: "v_frag_used", label: "aggregates: fragmentation threshold used", value: v_frag, unit: "m s^-1" },
-        Scalar { key: "v_eros", label: "aggregates: erosion threshold v_eros (as set)", value: p.run.v_eros, unit: "m s^-1" },
-    ]);
-    // 3. The local column: φ(m) for each law, and the crossing of Ωt_s = 1.
-    let mut fig_phi = Figure::new(
-        "ladder-porosity",
-        &format!("φ(m) at {} AU for each E_roll law (Fig. 4.8)", crate::figure::human(p.radius_au)),
-        Axis::log("mass", "g"),
-        Axis::log("filling factor φ", ""),
-    );
-    let mut own: Option<Track> = None;
-    for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-        let track = p.local(p.with_law(key));
-        let chosen = *key == p.run.disk.rolling_law;
-        let pts = track.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect();
-        let style = if chosen { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
-        fig_phi = fig_phi.with(Series::new(format!("{label}{}", if chosen { " (chosen)" } else { "" }), pts, style, k));
-        if chosen {
-            own = Some(track);
+impl Scene for Params {
+    const INFO: SceneInfo = SceneInfo {
+        id: "scale-ladder",
+        title: "Scale ladder",
+        source: "Sects. 1.2, 3.2, 4.2.3–4.2.4, 4.5, 5.3, App. 5.C; Eqs. 1.24, 1.25, 2.25, 3.16, 4.12, 4.15, 5.26; Figs. 4.8, 5.9",
+        explanation: "One monomer, four scales. The contact of two monomers (ch. 2) sets the energy to break it, \
+E_break ∝ (γ⁵R⁴/E*²)^{1/3} (1.24), and their sticking velocity (2.25); its rolling energy E_roll = 6πγRξ_crit \
+(1.25) depends on the critical displacement: (a_eq/12)Δγ/γ in ch. 3 (3.16), E_roll ∝ a₀^{5/3}, calibrated to \
+Gundlach et al.'s measurement in (5.26), or a fixed 0.3 nm (Dominik & Tielens, E_roll ∝ a₀). The aggregates' \
+thresholds follow: collisional compaction above 3bE_roll, the compressive strength E_roll φ³/a₀³ (4.15), \
+v_frag = 20(E_break/m₀)^{1/2} (4.12). A lower E_roll makes compacter aggregates, which cross Ωt_s = 1 at a \
+lower mass; over the whole disk (ch. 5) that moves the outer edge of the planetesimal formation zone \
+(Fig. 5.9). Every number here is recomputed when the monomer changes; the disk step runs the batch model \
+at the resolution set below.",
+        heavy: true,
+    };
+
+    /// The documented parameters.
+    fn controls(&mut self) -> Vec<Control<'_>> {
+        let d = Self::default();
+        let mut c = self.run.controls(&d.run);
+        c.push(
+            crate::scene::disk::common::radius_control(&mut self.radius_au, "where the local column grows")
+                .default(d.radius_au),
+        );
+        c
+    }
+
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse(), ..self.clone() })
+    }
+
+    /// Computes the scene.
+    fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+        let p = self;
+        let mono = p.run.disk.monomer();
+        let pair = mono.pair();
+        // 1. The contact of two monomers.
+        let mut scalars = vec![
+            Scalar {
+                key: "a_eq",
+                label: "contact: JKR equilibrium radius a_eq (2.10)",
+                value: pair.jkr_equilibrium_radius(),
+                unit: "m",
+            },
+            Scalar { key: "F_c", label: "contact: pull-off force F_c", value: pair.pull_off_force(), unit: "N" },
+            Scalar {
+                key: "E_break",
+                label: "contact: energy to break E_break (1.24)",
+                value: mono.break_energy(),
+                unit: "J",
+            },
+            Scalar {
+                key: "E_roll",
+                label: "contact: rolling energy E_roll (1.25)",
+                value: mono.rolling_energy(),
+                unit: "J",
+            },
+            Scalar {
+                key: "xi_crit",
+                label: "contact: critical rolling displacement ξ_crit",
+                value: mono.rolling_displacement(),
+                unit: "m",
+            },
+            Scalar {
+                key: "hysteresis_of_5_26",
+                label: "contact: Δγ/γ that makes the ch. 3 law equal (5.26)",
+                value: Monomer { rolling: RollingLaw::Calibrated, ..mono }.hysteresis_of_calibration(),
+                unit: "",
+            },
+            Scalar {
+                key: "v_stick_jkr",
+                label: "contact: sticking velocity, JKR (2.25)",
+                value: mono.jkr_sticking_velocity(),
+                unit: "m s^-1",
+            },
+        ];
+        ctx.progress.check()?;
+        // 2. Aggregate thresholds.
+        let v_frag = p.run.disk.fragmentation_velocity(p.run.v_frag, p.run.v_frag_from_monomer);
+        scalars.extend([
+            Scalar {
+                key: "E_compaction",
+                label: "aggregates: compaction onset 3bE_roll (b = 0.15)",
+                value: mono.compaction_energy(),
+                unit: "J",
+            },
+            Scalar {
+                key: "v_frag_monomer",
+                label: "aggregates: v_frag of the monomer (4.12)",
+                value: mono.fragmentation_velocity(),
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "v_frag_used",
+                label: "aggregates: fragmentation threshold used",
+                value: v_frag,
+                unit: "m s^-1",
+            },
+            Scalar {
+                key: "v_eros",
+                label: "aggregates: erosion threshold v_eros (as set)",
+                value: p.run.v_eros,
+                unit: "m s^-1",
+            },
+        ]);
+        // 3. The local column: φ(m) for each law, and the crossing of Ωt_s = 1.
+        let mut fig_phi = Figure::new(
+            "ladder-porosity",
+            &format!("φ(m) at {} AU for each E_roll law (Fig. 4.8)", crate::figure::human(p.radius_au)),
+            Axis::log("mass", "g"),
+            Axis::log("filling factor φ", ""),
+        );
+        let mut own: Option<Track> = None;
+        for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
+            let track = p.local(p.with_law(key));
+            let chosen = *key == p.run.disk.rolling_law;
+            let pts = track.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect();
+            let style = if chosen { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
+            fig_phi =
+                fig_phi.with(Series::new(format!("{label}{}", if chosen { " (chosen)" } else { "" }), pts, style, k));
+            if chosen {
+                own = Some(track);
+            }
         }
-    }
-    let own = own.unwrap_or_else(|| p.local(p.run.disk.clone()));
-    if let Some((m, t)) = stokes_unity(&own) {
-        scalars.push(Scalar { key: "mass_st1", label: "column: mass at Ωt_s = 1 (drift barrier)", value: m, unit: "kg" });
-        scalars.push(Scalar { key: "time_st1", label: "column: time to reach Ωt_s = 1", value: t / YEAR, unit: "yr" });
-        if let Some(q) = own.points.iter().find(|q| q.stokes >= 1.0) {
-            scalars.push(Scalar { key: "phi_st1", label: "column: filling factor at Ωt_s = 1", value: q.filling, unit: "" });
+        let own = own.unwrap_or_else(|| p.local(p.run.disk.clone()));
+        if let Some((m, t)) = stokes_unity(&own) {
+            scalars.push(Scalar {
+                key: "mass_st1",
+                label: "column: mass at Ωt_s = 1 (drift barrier)",
+                value: m,
+                unit: "kg",
+            });
+            scalars.push(Scalar {
+                key: "time_st1",
+                label: "column: time to reach Ωt_s = 1",
+                value: t / YEAR,
+                unit: "yr",
+            });
+            if let Some(q) = own.points.iter().find(|q| q.stokes >= 1.0) {
+                scalars.push(Scalar {
+                    key: "phi_st1",
+                    label: "column: filling factor at Ωt_s = 1",
+                    value: q.filling,
+                    unit: "",
+                });
+            }
         }
-    }
-    if let Some(last) = own.points.last().filter(|_| own.stop == Stop::Planetesimal) {
-        scalars.push(Scalar { key: "phi_planetesimal", label: "column: φ at 10¹⁶ g", value: last.filling, unit: "" });
-    }
-    ctx.progress.set(0.1);
-    // 4. The disk: the batch model.
-    let run = p.run.run(ctx.progress)?;
-    let edge = run.outermost_planetesimals() / AU;
-    scalars.push(Scalar { key: "formation_edge", label: "disk: outermost planetesimal formation", value: edge, unit: "AU" });
-    scalars.push(Scalar { key: "converted", label: "disk: converted into planetesimals", value: run.converted_fraction(), unit: "" });
-    let mut fig_disk = Figure::new(
-        "ladder-disk",
-        "Where each batch forms planetesimals (Fig. 5.9's disk)",
-        Axis::log("initial radius", "AU"),
-        Axis::log("formation radius", "AU"),
-    );
-    let formed: Vec<[f64; 2]> = run
-        .fates
-        .iter()
-        .zip(&run.initial_radii)
-        .filter_map(|(f, r0)| match f {
-            crate::physics::batches::Fate::Planetesimals { r, .. } => Some([r0 / AU, r / AU]),
-            _ => None,
+        if let Some(last) = own.points.last().filter(|_| own.stop == Stop::Planetesimal) {
+            scalars.push(Scalar {
+                key: "phi_planetesimal",
+                label: "column: φ at 10¹⁶ g",
+                value: last.filling,
+                unit: "",
+            });
+        }
+        ctx.progress.set(0.1);
+        // 4. The disk: the batch model.
+        let run = p.run.run(ctx.progress)?;
+        let edge = run.outermost_planetesimals() / AU;
+        scalars.push(Scalar {
+            key: "formation_edge",
+            label: "disk: outermost planetesimal formation",
+            value: edge,
+            unit: "AU",
+        });
+        scalars.push(Scalar {
+            key: "converted",
+            label: "disk: converted into planetesimals",
+            value: run.converted_fraction(),
+            unit: "",
+        });
+        let mut fig_disk = Figure::new(
+            "ladder-disk",
+            "Where each batch forms planetesimals (Fig. 5.9's disk)",
+            Axis::log("initial radius", "AU"),
+            Axis::log("formation radius", "AU"),
+        );
+        let formed: Vec<[f64; 2]> = run
+            .fates
+            .iter()
+            .zip(&run.initial_radii)
+            .filter_map(|(f, r0)| match f {
+                crate::physics::batches::Fate::Planetesimals { r, .. } => Some([r0 / AU, r / AU]),
+                _ => None,
+            })
+            .collect();
+        if let (Some(first), Some(last)) = (run.initial_radii.first(), run.initial_radii.last()) {
+            fig_disk = fig_disk.with(Series::new(
+                "formed where it started",
+                vec![[first / AU, first / AU], [last / AU, last / AU]],
+                Style::Dotted,
+                7,
+            ));
+        }
+        fig_disk = fig_disk.with(Series::new("batches forming planetesimals", formed, Style::Points, 0));
+        if edge > 0.0 {
+            fig_disk = fig_disk.with(Series::new(
+                format!("edge {} AU", crate::figure::human(edge)),
+                vec![[p.run.r_in_au, edge], [p.run.r_out_au, edge]],
+                Style::Dashed,
+                3,
+            ));
+        }
+        // The rolling energy of each law against the monomer radius.
+        let radii = logspace(1e-8, 1e-5, 61);
+        let mut fig_roll = Figure::new(
+            "ladder-rolling",
+            "Rolling energy against monomer radius (Sect. 4.2.4)",
+            Axis::log("monomer radius a₀", "µm"),
+            Axis::log("E_roll", "erg"),
+        );
+        for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
+            let law = p.with_law(key).monomer();
+            let pts = radii.iter().map(|&a| [a * 1e6, Monomer { radius: a, ..law }.rolling_energy() * 1e7]).collect();
+            let style = if *key == p.run.disk.rolling_law {
+                Style::Line
+            } else {
+                [Style::Dashed, Style::Dotted, Style::Dashed][k]
+            };
+            fig_roll = fig_roll.with(Series::new(*label, pts, style, k));
+        }
+        let measured = GUNDLACH_ROLLING_ENERGY * 1e7;
+        fig_roll = fig_roll.with(Series::new(
+            "∝ a₀ through the measurement",
+            radii.iter().map(|&a| [a * 1e6, measured * a / GUNDLACH_RADIUS]).collect(),
+            Style::Dotted,
+            7,
+        ));
+        fig_roll = fig_roll.with(Series::new(
+            "Gundlach et al. (2011)",
+            vec![[GUNDLACH_RADIUS * 1e6, measured]],
+            Style::Marker,
+            4,
+        ));
+        fig_roll = fig_roll.with(Series::new(
+            "this monomer",
+            vec![[mono.radius * 1e6, mono.rolling_energy() * 1e7]],
+            Style::Marker,
+            6,
+        ));
+        let notes = vec![format!(
+            "E_roll = {} erg → φ = {} at Ωt_s = 1 → planetesimals out to {} AU",
+            crate::figure::human(mono.rolling_energy() * 1e7),
+            own.points.iter().find(|q| q.stokes >= 1.0).map_or("–".into(), |q| crate::figure::human(q.filling)),
+            crate::figure::human(edge)
+        )];
+        ctx.progress.set(1.0);
+        let rungs = ladder(&scalars, &mono, p);
+        Ok(SceneOutput {
+            warnings: Vec::new(),
+            scalars,
+            figures: vec![fig_roll, fig_phi, fig_disk],
+            notes,
+            extra: Extra::Ladder(Arc::new(rungs)),
         })
-        .collect();
-    if let (Some(first), Some(last)) = (run.initial_radii.first(), run.initial_radii.last()) {
-        fig_disk = fig_disk.with(Series::new("formed where it started", vec![[first / AU, first / AU], [last / AU, last / AU]], Style::Dotted, 7));
     }
-    fig_disk = fig_disk.with(Series::new("batches forming planetesimals", formed, Style::Points, 0));
-    if edge > 0.0 {
-        fig_disk = fig_disk.with(Series::new(format!("edge {} AU", crate::figure::human(edge)), vec![[p.run.r_in_au, edge], [p.run.r_out_au, edge]], Style::Dashed, 3));
-    }
-    // The rolling energy of each law against the monomer radius.
-    let radii = logspace(1e-8, 1e-5, 61);
-    let mut fig_roll = Figure::new(
-        "ladder-rolling",
-        "Rolling energy against monomer radius (Sect. 4.2.4)",
-        Axis::log("monomer radius a₀", "µm"),
-        Axis::log("E_roll", "erg"),
-    );
-    for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-        let law = p.with_law(key).monomer();
-        let pts = radii.iter().map(|&a| [a * 1e6, Monomer { radius: a, ..law }.rolling_energy() * 1e7]).collect();
-        let style = if *key == p.run.disk.rolling_law { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
-        fig_roll = fig_roll.with(Series::new(*label, pts, style, k));
-    }
-    let measured = GUNDLACH_ROLLING_ENERGY * 1e7;
-    fig_roll = fig_roll.with(Series::new(
-        "∝ a₀ through the measurement",
-        radii.iter().map(|&a| [a * 1e6, measured * a / GUNDLACH_RADIUS]).collect(),
-        Style::Dotted,
-        7,
-    ));
-    fig_roll = fig_roll.with(Series::new("Gundlach et al. (2011)", vec![[GUNDLACH_RADIUS * 1e6, measured]], Style::Marker, 4));
-    fig_roll = fig_roll.with(Series::new("this monomer", vec![[mono.radius * 1e6, mono.rolling_energy() * 1e7]], Style::Marker, 6));
-    let notes = vec![format!(
-        "E_roll = {} erg → φ = {} at Ωt_s = 1 → planetesimals out to {} AU",
-        crate::figure::human(mono.rolling_energy() * 1e7),
-        own.points.iter().find(|q| q.stokes >= 1.0).map_or("–".into(), |q| crate::figure::human(q.filling)),
-        crate::figure::human(edge)
-    )];
-    ctx.progress.set(1.0);
-    let rungs = ladder(&scalars, &mono, p);
-    Ok(SceneOutput {
-        warnings: Vec::new(),
-        scalars,
-        figures: vec![fig_roll, fig_phi, fig_disk],
-        notes,
-        extra: Extra::Ladder(Arc::new(rungs)),
-    })
 }
 
 /// The scalars as four rungs, smallest scale first.
@@ -228,7 +323,11 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
         Rung {
             scale: format!("1 · Two monomers, a₀ = {} µm (ch. 2–3)", h(mono.radius * 1e6)),
             items: vec![
-                item("contact radius a_eq", text("a_eq", &|v| format!("{} nm", h(v * 1e9))), "JKR equilibrium, Eq. 2.10"),
+                item(
+                    "contact radius a_eq",
+                    text("a_eq", &|v| format!("{} nm", h(v * 1e9))),
+                    "JKR equilibrium, Eq. 2.10",
+                ),
                 item("pull-off force F_c", text("F_c", &|v| format!("{} N", h(v))), "(3/2)πγR, Sect. 1.2"),
                 item("E_break", text("E_break", &|v| format!("{} erg", h(v * 1e7))), "Eq. 1.24 (with E*²)"),
                 item("ξ_crit", text("xi_crit", &|v| format!("{} nm", h(v * 1e9))), "Eq. 3.16 or the law chosen"),
@@ -239,16 +338,32 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
         Rung {
             scale: "2 · Aggregate thresholds (Sects. 4.2.3–4.2.4)".into(),
             items: vec![
-                item("compaction above 3bE_roll", text("E_compaction", &|v| format!("{} erg", h(v * 1e7))), "b = 0.15, App. 5.C"),
+                item(
+                    "compaction above 3bE_roll",
+                    text("E_compaction", &|v| format!("{} erg", h(v * 1e7))),
+                    "b = 0.15, App. 5.C",
+                ),
                 item("v_frag of the monomer", text("v_frag_monomer", &|v| format!("{} m/s", h(v))), "Eq. 4.12"),
-                item("v_frag used", text("v_frag_used", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }), "the run's threshold"),
-                item("v_eros", text("v_eros", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }), "as set, Sect. 4.2.3"),
+                item(
+                    "v_frag used",
+                    text("v_frag_used", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }),
+                    "the run's threshold",
+                ),
+                item(
+                    "v_eros",
+                    text("v_eros", &|v| if v >= 1e4 { "none".into() } else { format!("{} m/s", h(v)) }),
+                    "as set, Sect. 4.2.3",
+                ),
             ],
         },
         Rung {
             scale: format!("3 · Growth in the column at {} AU (ch. 4)", h(p.radius_au)),
             items: vec![
-                item("Ωt_s = 1 after", text("time_st1", &|v| format!("{} yr", h(v))), "local growth, no drift, Sect. 4.5"),
+                item(
+                    "Ωt_s = 1 after",
+                    text("time_st1", &|v| format!("{} yr", h(v))),
+                    "local growth, no drift, Sect. 4.5",
+                ),
                 item("mass at Ωt_s = 1", text("mass_st1", &|v| format!("{} g", h(v * 1e3))), "the drift barrier"),
                 item("φ at Ωt_s = 1", text("phi_st1", &|v| h(v)), "Eqs. 4.15–4.16"),
                 item("φ at 10¹⁶ g", text("phi_planetesimal", &|v| h(v)), "self-gravity compaction, Fig. 4.8"),

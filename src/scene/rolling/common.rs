@@ -1,11 +1,11 @@
 //! Parameters shared by the rolling scenes (thesis ch. 3): a sphere on a flat
 //! substrate or on an equal sphere.
 
-use crate::scene::quantities;
-use crate::scene::controls::Control;
-use crate::scene::core::logspace;
 use crate::physics::contact::Pair;
 use crate::physics::material::{Material, combined_modulus};
+use crate::scene::controls::Control;
+use crate::scene::core::logspace;
+use crate::scene::quantities;
 use serde::{Deserialize, Serialize};
 
 /// The rolling contact. SI units.
@@ -47,14 +47,32 @@ impl RollingParams {
     /// The documented parameters; `with_radius` adds the radius slider.
     pub fn controls(&mut self, d: &Self, with_radius: bool) -> Vec<Control<'_>> {
         let mut c = vec![
-            Control::material("sphere", "sphere material", &mut self.sphere).default(d.sphere.name.clone()).doc("material of the rolling sphere"),
-            Control::material("substrate", "substrate material", &mut self.substrate).default(d.substrate.name.clone()).doc("flat substrate or second sphere"),
-            Control::toggle("wall", "sphere on flat", &mut self.wall).default(d.wall).doc("on a flat substrate (else on an equal sphere)"),
+            Control::material("sphere", "sphere material", &mut self.sphere)
+                .default(d.sphere.name.clone())
+                .doc("material of the rolling sphere"),
+            Control::material("substrate", "substrate material", &mut self.substrate)
+                .default(d.substrate.name.clone())
+                .doc("flat substrate or second sphere"),
+            Control::toggle("wall", "sphere on flat", &mut self.wall)
+                .default(d.wall)
+                .doc("on a flat substrate (else on an equal sphere)"),
         ];
         if with_radius {
-            c.push(Control::number("radius", "sphere radius", &mut self.radius).default(d.radius).unit("m").shown("µm", 1e6).range(1e-7, 1e-3).log().doc("radius of the rolling sphere"));
+            c.push(
+                Control::number("radius", "sphere radius", &mut self.radius)
+                    .default(d.radius)
+                    .unit("m")
+                    .shown("µm", 1e6)
+                    .range(1e-7, 1e-3)
+                    .log()
+                    .doc("radius of the rolling sphere"),
+            );
         }
-        c.push(quantities::surface_energy(&mut self.surface_energy).default(d.surface_energy).doc("combined surface energy (2γ_L for like materials)"));
+        c.push(
+            quantities::surface_energy(&mut self.surface_energy)
+                .default(d.surface_energy)
+                .doc("combined surface energy (2γ_L for like materials)"),
+        );
         c
     }
 
@@ -97,10 +115,32 @@ pub fn family_controls<'a>(
     let um = ("µm", 1e6);
     let unit = ("", 1.0);
     vec![
-        Control::number("r_min", "smallest radius", radius.0).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().default(dr.0).doc("smallest sphere radius"),
-        Control::number("r_max", "largest radius", radius.1).unit("m").shown(um.0, um.1).range(1e-8, 1e-2).log().default(dr.1).doc("largest sphere radius"),
-        Control::number("h_min", "smallest Δγ/γ", hysteresis.0).shown(unit.0, unit.1).range(1e-3, 100.0).log().default(dh.0).doc("first curve of the family"),
-        Control::number("h_max", "largest Δγ/γ", hysteresis.1).shown(unit.0, unit.1).range(1e-3, 100.0).log().default(dh.1).doc("last curve of the family"),
+        Control::number("r_min", "smallest radius", radius.0)
+            .unit("m")
+            .shown(um.0, um.1)
+            .range(1e-8, 1e-2)
+            .log()
+            .default(dr.0)
+            .doc("smallest sphere radius"),
+        Control::number("r_max", "largest radius", radius.1)
+            .unit("m")
+            .shown(um.0, um.1)
+            .range(1e-8, 1e-2)
+            .log()
+            .default(dr.1)
+            .doc("largest sphere radius"),
+        Control::number("h_min", "smallest Δγ/γ", hysteresis.0)
+            .shown(unit.0, unit.1)
+            .range(1e-3, 100.0)
+            .log()
+            .default(dh.0)
+            .doc("first curve of the family"),
+        Control::number("h_max", "largest Δγ/γ", hysteresis.1)
+            .shown(unit.0, unit.1)
+            .range(1e-3, 100.0)
+            .log()
+            .default(dh.1)
+            .doc("last curve of the family"),
         Control::count("n_h", "Δγ/γ curves", hysteresis.2).range(1.0, 8.0).default(dh.2).doc("curves in the family"),
     ]
 }

@@ -1,0 +1,383 @@
+//! The registry of scenes: the one list below names every scene by its
+//! chapter module and generates [`SceneParams`] (the preset format), the
+//! dispatch from it to each scene's [`Scene`] impl, and [`SCENES`] (the scene
+//! list's order). It sits on top of the scene modules, which never import it
+//! except to open another scene from an inspected point ([`column_action`]).
+//!
+//! Adding a scene: declare its module in its chapter in [`crate::scene`] and
+//! add the line `my_scene::MyScene,` (the module and the variant of
+//! [`SceneParams`] for its `Params`) to its chapter in the list below.
+
+use super::controls::{Control, ControlKind, DefaultValue, ParamError};
+use super::core::{Caches, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use super::timeline::Cursor;
+use super::{batches, collisions, debris, disk, inspect, monomer, monte_carlo, overview, rolling};
+use crate::physics::fit::Measurement;
+use serde::{Deserialize, Serialize};
+
+/// Generates, from the scenes of each chapter, the enum of scene parameters
+/// and the dispatch from it to each scene's [`Scene`] impl. A macro because
+/// the dispatch is one `match` arm per scene in each of nine methods: written
+/// out, adding a scene would mean editing every `match`; here it is one line
+/// of the list (`module::Variant`, the scene's `Params` in `module`).
+macro_rules! scenes {
+    ($( $(#[$chapter_doc:meta])* $chapter:ident { $( $module:ident :: $scene:ident ),* $(,)? } )*) => {
+
+        /// The parameters of one scene, tagged by scene: the `scene` of a preset.
+        #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+        pub enum SceneParams {
+            $($(
+                #[doc = concat!("Parameters of [`", stringify!($chapter), "::", stringify!($module), "`].")]
+                $scene($chapter::$module::Params),
+            )*)*
+        }
+
+        /// All scenes, in the order of the scene list (by thesis chapter).
+        pub const SCENES: &[SceneInfo] = &[$($(<$chapter::$module::Params as Scene>::INFO,)*)*];
+
+        /// The chapter folder of every scene, in the order of [`SCENES`].
+        const CHAPTER_OF: &[&str] = &[$($(first(stringify!($chapter), stringify!($module)),)*)*];
+
+        impl SceneParams {
+            /// Default parameters of the scene with identifier `id`.
+            pub fn default_for(id: &str) -> Option<SceneParams> {
+                $($(
+                    if id == <$chapter::$module::Params as Scene>::INFO.id {
+                        return Some(SceneParams::$scene(Default::default()));
+                    }
+                )*)*
+                None
+            }
+
+            /// The scene's static description.
+            pub fn info(&self) -> &'static SceneInfo {
+                match self {
+                    $($( SceneParams::$scene(_) => &<$chapter::$module::Params as Scene>::INFO, )*)*
+                }
+            }
+
+            /// Whether the scene's computation can be paused.
+            pub fn pausable(&self) -> bool {
+                match self {
+                    $($( SceneParams::$scene(_) => <$chapter::$module::Params as Scene>::PAUSABLE, )*)*
+                }
+            }
+
+            /// The documented parameters, with mutable access for the UI and `--set`.
+            pub fn controls(&mut self) -> Vec<Control<'_>> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::controls(p), )*)*
+                }
+            }
+
+            /// After a material was picked: re-derives what depends on it.
+            pub fn material_changed(&mut self) {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::material_changed(p), )*)*
+                }
+            }
+
+            /// The scene's time cursor over `out`, if it has one.
+            pub fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::cursor(p, out), )*)*
+                }
+            }
+
+            /// What a click at `at` (axis units) on figure `figure` of `out` shows, if anything.
+            pub fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<inspect::Inspection> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::inspect(p, out, figure, at), )*)*
+                }
+            }
+
+            /// The cheaper parameters of the scene's preview, if it has one.
+            pub fn coarse(&self) -> Option<SceneParams> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::coarse(p).map(SceneParams::$scene), )*)*
+                }
+            }
+
+            /// The imported measurements the scene works on, if it takes any.
+            pub fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::measurements(p), )*)*
+                }
+            }
+
+            /// Computes the scene without validating first.
+            fn dispatch(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::compute(p, ctx), )*)*
+                }
+            }
+        }
+    };
+}
+
+scenes! {
+    /// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).
+    collisions {
+        hysteresis::Hysteresis,
+        restitution::Restitution,
+        adhesion::Adhesion,
+        experiments::Experiments,
+        material_parameters::MaterialParameters,
+        fit::Fit,
+    }
+    /// Rolling friction from adhesion hysteresis (thesis ch. 3).
+    rolling {
+        contact_torque::ContactTorque,
+        rolling_force::RollingForce,
+        critical_displacement::CriticalDisplacement,
+        rocking::Rocking,
+    }
+    /// The smallest fragments of debris-disk collisions (thesis ch. 6).
+    debris {
+        smallest_fragment::SmallestFragment,
+        critical_energies::CriticalEnergies,
+        debris_disks::DebrisDisks,
+        unequal_colliders::UnequalColliders,
+    }
+    /// Porous aggregates in a disk: drag, speeds, compaction, growth (thesis ch. 4).
+    disk {
+        stokes_number::StokesNumber,
+        collision_speeds::CollisionSpeeds,
+        porosity_track::PorosityTrack,
+        timescales::Timescales,
+        growth_tracks::GrowthTracks,
+    }
+    /// The Monte Carlo coagulation column (thesis Sects. 4.3–4.4).
+    monte_carlo {
+        mass_distribution::MassDistribution,
+        families::Families,
+        erosion_balance::ErosionBalance,
+        analytic_kernels::KernelTests,
+    }
+    /// The global dust-batch model over a whole disk (thesis ch. 5).
+    batches {
+        surface_density::SurfaceDensity,
+        batch_lifelines::BatchLifelines,
+        disk_map::DiskMap,
+        planetesimal_yield::PlanetesimalYield,
+        formation_zone::FormationZone,
+        midplane_loading::MidplaneLoading,
+    }
+    /// The argument across scales, on one screen.
+    overview {
+        scale_ladder::ScaleLadder,
+    }
+}
+
+impl SceneParams {
+    /// Checks every parameter against its documented range.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let mut copy = self.clone();
+        for c in copy.controls() {
+            c.check()?;
+        }
+        Ok(())
+    }
+
+    /// Sets the parameter `key` from its textual value (as on the command
+    /// line), checking its range. On error nothing changes.
+    pub fn set(&mut self, key: &str, value: &str) -> Result<(), ParamError> {
+        let mut trial = self.clone();
+        {
+            let mut controls = trial.controls();
+            let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
+            let c = controls
+                .iter_mut()
+                .find(|c| c.key == key)
+                .ok_or_else(|| ParamError::UnknownKey { key: key.into(), known: known.join(", ") })?;
+            c.set_text(value)?;
+        }
+        trial.validate()?;
+        *self = trial;
+        Ok(())
+    }
+
+    /// The time cursor's value (fraction of the run, 0–1) of a scene whose
+    /// result is a history, for playing it.
+    pub fn cursor_mut(&mut self) -> Option<&mut f64> {
+        self.controls().into_iter().find_map(|c| match (c.key, c.kind) {
+            ("cursor", ControlKind::Number { value, .. }) => Some(value),
+            _ => None,
+        })
+    }
+
+    /// The figures of `out` as they are exported: with the time cursor's
+    /// marks where the scene always shows them.
+    pub fn exported_figures(&self, out: &SceneOutput) -> Vec<crate::figure::Figure> {
+        let mut figures = out.figures.clone();
+        if let Some(c) = self.cursor(out).filter(|c| !c.optional) {
+            c.apply(&mut figures);
+        }
+        figures
+    }
+
+    /// The scene's monomer card (see [`monomer`]), if it builds aggregates.
+    pub fn monomer_card(&self) -> Option<monomer::Card> {
+        let mut copy = self.clone();
+        let controls = copy.controls();
+        monomer::MONOMER_KEYS.iter().map(|k| controls.iter().find(|c| c.key == *k).map(|c| c.value())).collect()
+    }
+
+    /// Gives the scene the monomer `card`. False, and nothing changes, if the
+    /// scene has no card or a value is refused.
+    pub fn set_monomer_card(&mut self, card: &monomer::Card) -> bool {
+        let mut trial = self.clone();
+        {
+            let mut controls = trial.controls();
+            for (key, value) in monomer::MONOMER_KEYS.iter().zip(card) {
+                let taken = controls.iter_mut().find(|c| c.key == *key).is_some_and(|c| c.assign(value));
+                if !taken {
+                    return false;
+                }
+            }
+        }
+        if trial.validate().is_err() {
+            return false;
+        }
+        *self = trial;
+        true
+    }
+
+    /// Whether the scene keeps its own monomer instead of the shared one.
+    pub fn own_monomer(&self) -> bool {
+        let mut copy = self.clone();
+        copy.controls().iter().any(|c| c.key == "own_monomer" && c.value() == DefaultValue::Toggle(true))
+    }
+
+    /// The monomer of the scene's card, if it has one.
+    pub fn monomer(&self) -> Option<crate::physics::monomer::Monomer> {
+        self.monomer_card().map(|card| monomer::monomer_of(&card))
+    }
+
+    /// The parameters with every styling-only value reset: two parameter sets
+    /// with equal keys give the same computed output.
+    pub fn compute_key(&self) -> SceneParams {
+        let mut key = self.clone();
+        for c in key.controls() {
+            if !c.style_only {
+                continue;
+            }
+            match c.kind {
+                ControlKind::Number { value, .. } => *value = 0.0,
+                ControlKind::Toggle(value) => *value = false,
+                _ => {}
+            }
+        }
+        key
+    }
+
+    /// Keys whose values differ between `self` and `other` (same scene), with
+    /// the values of `self` as text: used to label pinned curves.
+    pub fn differences(&self, other: &SceneParams) -> Vec<String> {
+        let mut a = self.clone();
+        let mut b = other.clone();
+        let ca = a.controls();
+        let cb = b.controls();
+        if ca.len() != cb.len() {
+            return Vec::new();
+        }
+        ca.iter()
+            .zip(cb.iter())
+            .filter(|(x, y)| x.key == y.key && x.display_value() != y.display_value() && !x.style_only)
+            .map(|(x, _)| format!("{} = {}", x.label, x.display_value()))
+            .collect()
+    }
+}
+
+/// Computes a scene. Pure: the same parameters give the same output.
+pub fn compute(params: &SceneParams, progress: &Progress) -> Result<SceneOutput, SceneError> {
+    compute_cached(params, progress, &mut Caches::default())
+}
+
+/// Computes a scene, reusing parts of earlier results held in `caches`.
+pub fn compute_cached(
+    params: &SceneParams,
+    progress: &Progress,
+    caches: &mut Caches,
+) -> Result<SceneOutput, SceneError> {
+    params.validate()?;
+    let mut out = params.dispatch(&mut Context { progress, caches })?;
+    // What the monomer sets, for every scene that builds aggregates of it.
+    if let Some(m) = params.monomer() {
+        out.scalars.extend(monomer::scalars(&m, false));
+    }
+    Ok(out)
+}
+
+/// The first of two names (lets the registry repeat a chapter per scene).
+const fn first(a: &'static str, _b: &'static str) -> &'static str {
+    a
+}
+
+/// A thesis chapter as the scene navigator and the presets menu group it.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Chapter {
+    /// Heading, e.g. "Ch. 2 · Sticking collisions of adhesive spheres".
+    pub heading: &'static str,
+    /// Order in the thesis.
+    pub order: u8,
+}
+
+/// The chapter of scene `i` of [`SCENES`].
+pub fn chapter(i: usize) -> Chapter {
+    let (order, heading) = match CHAPTER_OF.get(i).copied().unwrap_or("") {
+        "overview" => (1, "Overview · From grains to planetesimals"),
+        "collisions" => (2, "Ch. 2 · Collisions of adhesive spheres"),
+        "rolling" => (3, "Ch. 3 · Rolling friction"),
+        "disk" => (4, "Ch. 4 · Porous aggregates in a disk"),
+        "monte_carlo" => (4, "Ch. 4 · Monte Carlo growth in a column"),
+        "batches" => (5, "Ch. 5 · Dust batches and planetesimals"),
+        "debris" => (6, "Ch. 6 · Smallest fragments in debris disks"),
+        _ => (9, "Other"),
+    };
+    Chapter { heading, order }
+}
+
+/// The scenes in navigator order: by chapter as in the thesis, each chapter
+/// in registry order.
+pub fn scenes_by_chapter() -> Vec<(Chapter, Vec<usize>)> {
+    let mut groups: Vec<(Chapter, Vec<usize>)> = Vec::new();
+    for i in 0..SCENES.len() {
+        let c = chapter(i);
+        match groups.iter_mut().find(|(g, _)| *g == c) {
+            Some((_, v)) => v.push(i),
+            None => groups.push((c, vec![i])),
+        }
+    }
+    groups.sort_by_key(|(c, _)| c.order);
+    groups
+}
+
+/// The figures a scene reproduces, from its thesis reference ("Figs. 2.2,
+/// 2.3"); empty if it reproduces none.
+pub fn figures_of(info: &SceneInfo) -> &'static str {
+    match info.source.find("Fig") {
+        Some(k) => &info.source[k..],
+        None => "",
+    }
+}
+
+/// "Open the local column": the Monte Carlo column at radius `r_au` of the
+/// same disk, with the same monomer.
+pub fn column_action(disk: &disk::common::DiskParams, r_au: f64) -> inspect::Action {
+    use monte_carlo::{common::ColumnParams, mass_distribution};
+    // Three significant digits, as a user would type it.
+    let step = 10f64.powi(r_au.log10().floor() as i32 - 2);
+    let r = ((r_au / step).round() * step).clamp(0.5, 300.0);
+    let run = ColumnParams { disk: disk.clone(), radius_au: r, ..ColumnParams::default() };
+    let hint = format!(
+        "the Monte Carlo column at {} AU of this disk, with the same monomer, from monomers to {} yr",
+        crate::figure::human(r),
+        crate::figure::human(run.t_end_yr)
+    );
+    inspect::Action {
+        label: "Open the local column".into(),
+        hint,
+        open: SceneParams::MassDistribution(mass_distribution::Params { run, ..Default::default() }),
+    }
+}

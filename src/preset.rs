@@ -95,9 +95,20 @@ impl Stamp {
 /// [`crate::provenance`]).
 pub fn read_embedded(path: &Path) -> Result<Preset, PresetError> {
     let text = crate::provenance::read(path).map_err(|e| PresetError::Embedded(Box::new(e)))?;
-    let origin = path.display().to_string();
-    Preset::from_ron(&text, &format!("{origin} (embedded state)"))
-        .map_err(|error| PresetError::EmbeddedInvalid { origin, error: Box::new(error) })
+    embedded(&text, &path.display().to_string())
+}
+
+/// The preset embedded in the bytes of an exported PNG, SVG or CSV file;
+/// `name` (a file name or path) gives the kind by its extension and names
+/// the file in errors.
+pub fn from_embedded_bytes(bytes: &[u8], name: &str) -> Result<Preset, PresetError> {
+    let text = crate::provenance::from_bytes(bytes, name).map_err(|e| PresetError::Embedded(Box::new(e)))?;
+    embedded(&text, name)
+}
+
+fn embedded(text: &str, origin: &str) -> Result<Preset, PresetError> {
+    Preset::from_ron(text, &format!("{origin} (embedded state)"))
+        .map_err(|error| PresetError::EmbeddedInvalid { origin: origin.to_string(), error: Box::new(error) })
 }
 
 impl Preset {

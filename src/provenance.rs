@@ -151,10 +151,11 @@ pub fn read(path: &Path) -> Result<String, ProvenanceError> {
     from_bytes(&bytes, &origin)
 }
 
-/// The preset embedded in the bytes of an exported PNG, SVG or CSV file;
+/// The preset embedded in the bytes of an exported PNG, SVG or CSV file, as
+/// its RON text;
 /// `name` (a file name or path) gives the kind by its extension and names
 /// the file in errors.
-pub fn from_bytes(bytes: &[u8], name: &str) -> Result<Preset, ProvenanceError> {
+pub fn from_bytes(bytes: &[u8], name: &str) -> Result<String, ProvenanceError> {
     let origin = name.to_string();
     let text = match extension(Path::new(name)).as_str() {
         "png" => png_text(bytes),

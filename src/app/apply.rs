@@ -2,14 +2,14 @@
 //! the world (a file read or written, a dialog, a job) comes back as
 //! [`Effect`]s for the window to carry out.
 
-use super::command::{Action, Command, DeckEdit, Field};
+use super::command::{Action, Command, Field};
 use super::history;
 use super::jobs::Job;
 use super::opening::{self, Opened};
 use super::platform::{FileKind, Picked};
 use super::playback;
-use super::state::{AppState, Effect, Inspected, Presenter, Then};
-use crate::deck::{Deck, LoadedDeck, Slide};
+use super::state::{AppState, Effect, Inspected, Then};
+use crate::deck::Deck;
 use crate::figure::{self, View};
 use crate::preset::Preset;
 use crate::scene::{self, SCENES, SceneParams};
@@ -465,85 +465,6 @@ impl AppState {
             inspection,
             at: screen,
         });
-    }
-
-    /// Starts presenting `deck` at slide `at` (0-based): the lecture look,
-    /// the slide's state applied.
-    pub fn present(&mut self, deck: LoadedDeck, at: usize) {
-        let lecture_before = match &self.presenter {
-            Some(p) => p.lecture_before,
-            None => self.session.lecture,
-        };
-        let n = deck.deck.slides.len();
-        self.presenter = Some(Presenter { deck, index: 0, notes: false, notes_window: false, lecture_before });
-        self.session.lecture = true;
-        self.go_to_slide(at.min(n.saturating_sub(1)));
-    }
-
-    /// Shows slide `i` as the deck defines it (its scene and parameters).
-    fn go_to_slide(&mut self, i: usize) {
-        let Some(p) = &mut self.presenter else { return };
-        let Some(params) = p.deck.params.get(i).cloned() else { return };
-        p.index = i;
-        let title = p.deck.deck.slides[i].title.clone();
-        let id = params.info().id;
-        self.session.params.insert(id.to_string(), params);
-        if let Some(k) = SCENES.iter().position(|s| s.id == id) {
-            self.open_scene(k);
-        }
-        self.playback.playing = false;
-        self.status = format!("slide {}: {title}", i + 1);
-        self.error = None;
-    }
-
-    /// Moves `by` slides (stays at the ends).
-    fn step_slide(&mut self, by: isize) {
-        let Some(p) = &self.presenter else { return };
-        let n = p.deck.deck.slides.len() as isize;
-        let next = (p.index as isize + by).clamp(0, n - 1) as usize;
-        if next != p.index {
-            self.go_to_slide(next);
-        }
-    }
-
-    fn edit_deck(&mut self, edit: DeckEdit, fx: &mut Vec<Effect>) {
-        let editor = &mut self.deck_editor;
-        match edit {
-            DeckEdit::Show(open) => editor.open = open,
-            DeckEdit::Replace(deck) => editor.deck = *deck,
-            DeckEdit::Swap(a, b) if a.max(b) < editor.deck.slides.len() => editor.deck.slides.swap(a, b),
-            DeckEdit::Remove(i) if i < editor.deck.slides.len() => {
-                editor.deck.slides.remove(i);
-            }
-            DeckEdit::Swap(..) | DeckEdit::Remove(_) => {}
-            DeckEdit::AddCurrent => {
-                let params = self.params().clone();
-                let title = params.info().title.to_string();
-                self.deck_editor.deck.slides.push(Slide { title, scene: Some(params), ..Slide::default() });
-                self.status = format!("added slide {}", self.deck_editor.deck.slides.len());
-            }
-            DeckEdit::Present(i) => {
-                let base = Path::new(&editor.path).parent().map(Path::to_path_buf);
-                match opening::resolve_all(&editor.deck, base.as_deref()) {
-                    Ok(deck) => self.present(deck, i),
-                    Err(e) => self.error = Some(e),
-                }
-            }
-            DeckEdit::Save => match editor.deck.to_ron() {
-                Ok(text) => fx.push(Effect::Write {
-                    name: editor.path.clone(),
-                    bytes: text.into_bytes(),
-                    done: "saved deck to",
-                    failed: "deck not saved",
-                }),
-                Err(e) => self.error = Some(format!("deck not saved: {e}")),
-            },
-            DeckEdit::OpenFile => fx.push(Effect::Read(editor.path.clone(), Then::EditDeck)),
-            DeckEdit::Shipped(file) => match crate::deck::resolve(file) {
-                Ok(d) => self.deck_editor.deck = d.deck,
-                Err(e) => self.error = Some(e.to_string()),
-            },
-        }
     }
 
     /// A deck as the editor holds it, for a test or a caller that builds one.

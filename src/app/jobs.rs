@@ -405,7 +405,7 @@ mod tests {
                 assert_eq!(files.len(), 3 * out.figures.len());
                 assert!(files.iter().all(|(n, b)| n.starts_with("h-") && !b.is_empty()));
                 let png = &files.iter().find(|(n, _)| n.ends_with(".png")).expect("a png").1;
-                let back = crate::provenance::from_bytes(png, "x.png").expect("carries its state");
+                let back = crate::preset::from_embedded_bytes(png, "x.png").expect("carries its state");
                 assert_eq!(back.scene, preset.scene);
             }
             other => panic!("{other:?}"),

@@ -6,8 +6,10 @@
 //! report commands. This file composes them into one frame.
 
 mod apply;
+mod apply_deck;
 pub mod command;
 pub mod desktop;
+mod effects;
 pub mod history;
 pub mod jobs;
 pub mod opening;
@@ -21,11 +23,10 @@ pub use crate::session::{Pin, Session};
 pub use desktop::{SESSION_ENV, open_named, run, session_path};
 
 use command::Command;
-use jobs::{Done, Job, Lane, Runner, ThreadRunner};
-use platform::{Answer, FileKind, Picked, Platform};
+use jobs::{Job, Lane, Runner, ThreadRunner};
+use platform::Platform;
 use shortcuts::Mode;
-use state::{AppState, Effect, Then};
-use std::sync::Arc;
+use state::AppState;
 use ui::{Cx, Memo, Work};
 
 /// Bookkeeping of the open scene's computation.
@@ -133,66 +134,6 @@ impl GrainscopeApp {
         self.memo.plot_rects.iter().copied().reduce(|a, b| a.union(b))
     }
 
-    fn carry_out(&mut self, effect: Effect) {
-        let state = &mut self.state;
-        match effect {
-            Effect::Pick(kind) => self.platform.pick_file(kind),
-            Effect::SaveAs(kind, name, bytes) => self.platform.save_file(kind, &name, bytes),
-            Effect::Read(name, then) => match (self.platform.read(&name), opening::shipped(&name)) {
-                (Ok(bytes), _) => state.open_bytes(Picked { name, bytes }, then),
-                (Err(_), Some(shipped)) if then == Then::Open => state.open_bytes(shipped, then),
-                (Err(e), _) => {
-                    state.error = Some(match then {
-                        Then::Open => format!("preset not loaded: {e}; nothing changed"),
-                        Then::Import => format!("{e} (nothing imported)"),
-                        Then::EditDeck => format!("deck not opened, nothing changed: {e}"),
-                    })
-                }
-            },
-            Effect::Write { name, bytes, done, failed } => match self.platform.write(&name, &bytes) {
-                Ok(name) => state.status = format!("{done} {name}"),
-                Err(e) => state.error = Some(format!("{failed}: {e}")),
-            },
-            Effect::WriteAll { folder, files, what } => self.write_all(&folder, &files, what),
-            Effect::Submit(job) => {
-                let lane = job.lane();
-                match &job {
-                    Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
-                    Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
-                    Job::Sweep { .. } => {
-                        self.computing.stale = true;
-                        self.computing.live_scene = None;
-                    }
-                    Job::Scene { .. } => {}
-                }
-                self.runner.submit(job);
-                if lane == Lane::Compute {
-                    // The scene itself is recomputed when the sweep is done.
-                    self.computing.requested[state.index()] = None;
-                }
-            }
-            Effect::Cancel => {
-                self.runner.cancel(Lane::Compute);
-                self.computing.stale = false;
-                self.computing.requested[state.index()] = None;
-            }
-            Effect::Pause(paused) => self.runner.set_paused(Lane::Compute, paused),
-        }
-    }
-
-    fn write_all(&mut self, folder: &str, files: &[(String, Vec<u8>)], what: &str) {
-        let state = &mut self.state;
-        match (self.platform.write_all(folder, files), what) {
-            (Ok(names), "figure") => state.status = format!("exported {}", names.join(", ")),
-            (Ok(names), _) => {
-                state.status =
-                    format!("wrote the {what}: {} files, {}", names.len(), names.last().cloned().unwrap_or_default())
-            }
-            (Err(e), "figure") => state.error = Some(format!("export failed, earlier files untouched: {e}")),
-            (Err(e), _) => state.error = Some(format!("{what} not written, earlier files untouched: {e}")),
-        }
-    }
-
     /// Starts (or computes at once, for a cheap scene) the open scene's
     /// result if its computed parameters changed.
     fn request(&mut self) {
@@ -213,73 +154,6 @@ impl GrainscopeApp {
             self.computing.stale = false;
             let result = self.runner.compute_now(&params);
             self.state.finish(i, result);
-        }
-    }
-
-    /// Takes finished jobs, dialog answers, dropped files and the running
-    /// job's intermediate result.
-    fn poll(&mut self, ctx: &egui::Context) {
-        for finished in self.runner.poll() {
-            let folder = self.computing.folders.iter().rposition(|(l, _)| *l == finished.lane);
-            let folder = folder.map(|k| self.computing.folders.remove(k).1).unwrap_or_default();
-            if finished.lane == Lane::Movie {
-                self.state.movie_running = false;
-            }
-            match finished.result {
-                Ok(Done::Scene(i, o)) => {
-                    self.computing.stale = false;
-                    self.state.finish(i, Ok(o));
-                }
-                Ok(Done::Sweep(pins)) => {
-                    self.computing.stale = false;
-                    self.state.status = format!("swept {} values", pins.len());
-                    self.state.session.pins.extend(pins);
-                }
-                Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
-                Err(e) if finished.lane == Lane::Compute => {
-                    self.computing.stale = false;
-                    self.state.error = Some(e.to_string());
-                }
-                Err(e) => {
-                    let what = if finished.lane == Lane::Movie { "movie" } else { "export" };
-                    self.state.error = Some(format!("{what} not written, earlier files untouched: {e}"));
-                }
-            }
-        }
-        for answer in self.platform.poll() {
-            match answer {
-                Answer::Opened(FileKind::Measurements, picked) => self.state.open_bytes(picked, Then::Import),
-                Answer::Opened(_, picked) => self.apply(Command::OpenBytes(picked)),
-                Answer::Saved(FileKind::Preset, name) => self.state.status = format!("saved preset to {name}"),
-                Answer::Saved(_, name) => self.state.status = format!("exported {name}"),
-                Answer::Failed(FileKind::Preset, e) => self.state.error = Some(format!("preset not saved: {e}")),
-                Answer::Failed(_, e) => self.state.error = Some(format!("file not used, nothing changed: {e}")),
-                Answer::Cancelled => {
-                    self.state.status =
-                        "no file chosen (cancelled, or no file dialog on this desktop: type a path instead)".into()
-                }
-            }
-        }
-        let dropped: Vec<Command> = ctx.input(|i| {
-            i.raw
-                .dropped_files
-                .iter()
-                .map(|f| f.path())
-                .filter(|p| !p.as_os_str().is_empty())
-                .map(|p| Command::OpenPath(p.display().to_string()))
-                .collect()
-        });
-        for c in dropped {
-            self.apply(c);
-        }
-        if self.runner.busy(Lane::Compute) {
-            // A long run offers intermediate results: draw them as they come.
-            if let (Some(i), Some(part)) = (self.computing.live_scene, self.runner.partial(Lane::Compute))
-                && !self.state.outputs[i].as_ref().is_some_and(|o| Arc::ptr_eq(o, &part))
-            {
-                self.state.outputs[i] = Some(part);
-            }
-            ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
     }
 

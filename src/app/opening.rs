@@ -31,10 +31,12 @@ fn text<'a>(picked: &'a Picked) -> Result<&'a str, String> {
 pub fn open(picked: &Picked) -> Result<Opened, String> {
     let ext = extension(&picked.name);
     if matches!(ext.as_str(), "png" | "svg" | "csv") {
-        return match crate::provenance::from_bytes(&picked.bytes, &picked.name) {
+        return match crate::preset::from_embedded_bytes(&picked.bytes, &picked.name) {
             Ok(p) => Ok(Opened::Preset(Box::new(p))),
-            Err(ProvenanceError::Missing(_)) if ext == "csv" => Ok(Opened::Measurements),
-            Err(e) => Err(format!("preset not loaded: {}", PresetError::Embedded(Box::new(e)))),
+            Err(PresetError::Embedded(e)) if ext == "csv" && matches!(*e, ProvenanceError::Missing(_)) => {
+                Ok(Opened::Measurements)
+            }
+            Err(e) => Err(format!("preset not loaded: {e}")),
         };
     }
     let text = text(picked)?;

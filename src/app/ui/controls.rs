@@ -6,7 +6,8 @@ use super::Cx;
 use crate::app::command::{Command, Field};
 use crate::app::platform::FileKind;
 use crate::figure;
-use crate::scene::ControlKind;
+use crate::scene::monomer::MONOMER_KEYS;
+use crate::scene::{ControlKind, SceneParams};
 
 /// Which of the open scene's controls to draw.
 #[derive(Clone, Copy)]
@@ -65,11 +66,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
         _ => None,
     };
     let state = cx.state;
-    let card_keys = state.params().monomer_card().map(|_| super::monomer_card::shown_keys(state.params()));
+    let card_keys = state.params().monomer_card().map(|_| shown_keys(state.params()));
     let shown = |key: &str| match select {
         Select::Slide(keys) => keys.iter().any(|k| k == key),
         Select::Card => card_keys.as_ref().is_some_and(|k| k.contains(&key)),
-        Select::Parameters => !super::monomer_card::is_card_key(key) || card_keys.is_none(),
+        Select::Parameters => !is_card_key(key) || card_keys.is_none(),
     };
     if matches!(select, Select::Parameters) {
         measurements(ui, cx);
@@ -256,4 +257,30 @@ fn field_text(v: f64, log: bool) -> String {
 fn parse_number(text: &str) -> Option<f64> {
     let cleaned: String = text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
     cleaned.parse().ok()
+}
+
+/// Whether `key` is edited on the card rather than among the parameters.
+pub fn is_card_key(key: &str) -> bool {
+    MONOMER_KEYS.contains(&key) || key == "own_monomer"
+}
+
+/// The card's controls that apply to the scene's current monomer: the
+/// surface energy of its material and the parameter of its rolling law.
+pub fn shown_keys(params: &SceneParams) -> Vec<&'static str> {
+    use crate::physics::monomer::RollingLaw;
+    let m = params.monomer();
+    let icy = m.is_none_or(|m| m.icy);
+    let mut keys = vec![
+        "monomer_radius",
+        "icy",
+        if icy { "surface_energy_ice" } else { "surface_energy_silicate" },
+        "rolling_law",
+    ];
+    match m.map(|m| m.rolling) {
+        Some(RollingLaw::Contact { .. }) => keys.push("hysteresis"),
+        Some(RollingLaw::DominikTielens { .. }) => keys.push("xi_crit"),
+        _ => {}
+    }
+    keys.push("own_monomer");
+    keys
 }

@@ -4,34 +4,8 @@
 use super::Cx;
 use super::controls::{self, Select};
 use crate::figure;
-use crate::scene::monomer::{self, MONOMER_KEYS};
-use crate::scene::{Scalar, SceneParams};
-
-/// Whether `key` is edited on the card rather than among the parameters.
-pub fn is_card_key(key: &str) -> bool {
-    MONOMER_KEYS.contains(&key) || key == "own_monomer"
-}
-
-/// The card's controls that apply to the scene's current monomer: the
-/// surface energy of its material and the parameter of its rolling law.
-pub fn shown_keys(params: &SceneParams) -> Vec<&'static str> {
-    use crate::physics::monomer::RollingLaw;
-    let m = params.monomer();
-    let icy = m.is_none_or(|m| m.icy);
-    let mut keys = vec![
-        "monomer_radius",
-        "icy",
-        if icy { "surface_energy_ice" } else { "surface_energy_silicate" },
-        "rolling_law",
-    ];
-    match m.map(|m| m.rolling) {
-        Some(RollingLaw::Contact { .. }) => keys.push("hysteresis"),
-        Some(RollingLaw::DominikTielens { .. }) => keys.push("xi_crit"),
-        _ => {}
-    }
-    keys.push("own_monomer");
-    keys
-}
+use crate::scene::Scalar;
+use crate::scene::monomer;
 
 /// The card: the monomer's controls and the numbers it sets.
 pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {

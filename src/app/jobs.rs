@@ -204,6 +204,9 @@ struct Running {
     progress: Progress,
 }
 
+/// A job's result as a runner thread sends it: lane, generation, result.
+type Report = (Lane, u64, Result<Done, JobError>);
+
 /// Set once a job's full result is in, so that its preview is not shown.
 type Flag = Arc<std::sync::atomic::AtomicBool>;
 
@@ -212,7 +215,7 @@ type Flag = Arc<std::sync::atomic::AtomicBool>;
 /// parallel work), and one set of caches shared by all.
 pub struct ThreadRunner {
     caches: Arc<Mutex<Caches>>,
-    done: (Sender<(Lane, u64, Result<Done, JobError>)>, Receiver<(Lane, u64, Result<Done, JobError>)>),
+    done: (Sender<Report>, Receiver<Report>),
     generation: u64,
     running: Vec<(Lane, Running)>,
     repaint: Arc<dyn Fn() + Send + Sync>,

@@ -23,7 +23,7 @@ fn extension(name: &str) -> String {
     Path::new(name).extension().and_then(|e| e.to_str()).unwrap_or("").to_ascii_lowercase()
 }
 
-fn text<'a>(picked: &'a Picked) -> Result<&'a str, String> {
+fn text(picked: &Picked) -> Result<&str, String> {
     std::str::from_utf8(&picked.bytes).map_err(|_| format!("{} is not UTF-8 text", picked.name))
 }
 

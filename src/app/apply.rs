@@ -9,7 +9,6 @@ use super::opening::{self, Opened};
 use super::platform::{FileKind, Picked};
 use super::playback;
 use super::state::{AppState, Effect, Inspected, Then};
-use crate::deck::Deck;
 use crate::figure::{self, View};
 use crate::preset::Preset;
 use crate::scene::{self, SCENES, SceneParams};
@@ -465,11 +464,6 @@ impl AppState {
             inspection,
             at: screen,
         });
-    }
-
-    /// A deck as the editor holds it, for a test or a caller that builds one.
-    pub fn editor_deck(&self) -> &Deck {
-        &self.deck_editor.deck
     }
 
     /// Axes locked at every figure's current view (or unlocked).

@@ -34,6 +34,8 @@ impl GrainscopeApp {
             Effect::WriteAll { folder, files, what } => self.write_all(&folder, &files, what),
             Effect::Submit(job) => {
                 let lane = job.lane();
+                // A new job on a lane replaces the one before: so does its folder.
+                self.computing.folders.retain(|(l, _)| *l != lane);
                 match &job {
                     Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
                     Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
@@ -75,7 +77,7 @@ impl GrainscopeApp {
     /// job's intermediate result.
     pub(super) fn poll(&mut self, ctx: &egui::Context) {
         for finished in self.runner.poll() {
-            let folder = self.computing.folders.iter().rposition(|(l, _)| *l == finished.lane);
+            let folder = self.computing.folders.iter().position(|(l, _)| *l == finished.lane);
             let folder = folder.map(|k| self.computing.folders.remove(k).1).unwrap_or_default();
             if finished.lane == Lane::Movie {
                 self.state.movie_running = false;

@@ -47,7 +47,7 @@
 //! | (2.23) | adhesive–viscoelastic restitution e_A | `physics::collision::collide` |
 //! | (2.24) | elastic JKR restitution e_JKR | `physics::contact::Pair::e_jkr` |
 //! | (2.25) | JKR sticking velocity v_c | `physics::contact::Pair::jkr_sticking_velocity` |
-//! | (2.26) | non-adhesive viscoelastic restitution e_D | `physics::contact::Pair::e_viscous` |
+//! | (2.26) | non-adhesive viscoelastic restitution e_D, as printed; the model's own limit | `physics::contact::Pair::e_viscous_printed`; `physics::contact::Pair::e_viscous` |
 //! | (2.27) | "independent" estimate e_I | `physics::contact::e_independent` |
 //! | (2.28) | yield velocity v_y with p_y = 1.6Y | `physics::plasticity::yield_velocity` |
 //! | (2.29) | Thornton–Ning plastic restitution e_P | `physics::plasticity::e_plastic` |

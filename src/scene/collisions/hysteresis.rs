@@ -183,7 +183,7 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
                 unit: "",
             },
             Scalar { key: "e_JKR", label: "elastic JKR e_JKR (2.24)", value: e_jkr, unit: "" },
-            Scalar { key: "e_D", label: "viscous e_D (2.26)", value: e_d, unit: "" },
+            Scalar { key: "e_D", label: "viscous e_D (γ → 0 limit of the model)", value: e_d, unit: "" },
             Scalar { key: "e_I", label: "independent e_I (2.27)", value: e_independent(e_jkr, e_d), unit: "" },
             Scalar {
                 key: "v_c",

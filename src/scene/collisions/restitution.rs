@@ -137,7 +137,10 @@ impl Scene for Params {
         explanation: "The coefficient of restitution e_A = −dδ/dt(t_c)/v (2.23) from the full contact model, \
 compared with the elastic JKR limit e_JKR = (1 − (v_c/v)²)^{1/2} (2.24) with \
 v_c = (14.18/m*)^{1/2}(γ⁵R⁴/E*²)^{1/6} (2.25), the non-adhesive viscoelastic limit \
-e_D ≈ 1 − 1.92 A/t_H (2.26), and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). \
+e_D, and the 'independent' estimate e_I = (e_JKR² + e_D² − 1)^{1/2} (2.27). e_D is the model's own limit \
+γ → 0 (Hertz force plus the bulk force (2.19), the force of Brilliantov et al. 1996), \
+e_D = 1 − 5.57 A/t_H + … (Schwager & Pöschel 1998), integrated in full; the printed \
+e_D ≈ 1 − 1.92 A/t_H (2.26, dotted) has the same scaling but a loss 2.9 times smaller. \
 Plastic yield (Thornton & Ning) gives e_P (2.29) above v_y² = 10.2 R³p_y⁵/(m*E*⁴) (2.28), \
 combined as e = (e_A² + e_P² − 1)^{1/2} (2.30). The sticking velocity v_s is the edge between \
 sticking and bouncing of the full model, found from a bracket by extrapolating e_A of the slowest \
@@ -410,7 +413,18 @@ fn velocity_panel(
     )
     .with(Series::new("e (model)", results.iter().map(|r| [r.velocity, r.e]).collect(), Style::Line, 0))
     .with(Series::new("e_JKR (2.24)", velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(), Style::Dashed, 1))
-    .with(Series::new("e_D (2.26)", velocities.iter().map(|&v| [v, pair.e_viscous(a, v)]).collect(), Style::Dashed, 2))
+    .with(Series::new(
+        "e_D (γ → 0 limit)",
+        velocities.iter().map(|&v| [v, pair.e_viscous(a, v)]).collect(),
+        Style::Dashed,
+        2,
+    ))
+    .with(Series::new(
+        "(2.26) as printed",
+        velocities.iter().map(|&v| [v, pair.e_viscous_printed(a, v)]).collect(),
+        Style::Dotted,
+        2,
+    ))
     .with(Series::new(
         "e_I (2.27)",
         velocities.iter().map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))]).collect(),

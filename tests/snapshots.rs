@@ -4,7 +4,8 @@
 //!
 //! Every scene is drawn at 1024 × 768 (a projector) in lecture mode, and the
 //! first scene also in the ordinary layout, dark and light, at 1024 × 768 and
-//! 1920 × 1080. The Monte Carlo column scenes run one short run (2 × 10⁴
+//! 1920 × 1080, and a family drawn by the "Draw family" tool over the smallest
+//! fragment scene, in the window and in lecture mode. The Monte Carlo column scenes run one short run (2 × 10⁴
 //! events) so that the suite stays quick; everything else is drawn at its
 //! defaults. A figure that changes on purpose is refreshed with
 //! `UPDATE_SNAPSHOTS=1 cargo test --release --test snapshots`; a failing
@@ -116,5 +117,50 @@ fn the_ordinary_layout_dark_and_light_at_projector_and_desktop_sizes() {
             failures.extend(check(&mut h, first, &name, false, light).err());
         }
     }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// Draws a family (the "Draw family" tool) over scene `id` and compares the
+/// picture: the pinned curves coloured by the swept value, with its colour bar.
+fn check_family(
+    h: &mut Harness<'static, GrainscopeApp>,
+    id: &str,
+    name: &str,
+    lecture: bool,
+    sweep: grainscope::app::command::Sweep,
+) -> Result<(), String> {
+    use grainscope::app::command::Command;
+    {
+        let app = h.state_mut();
+        app.state.session.scene = id.to_string();
+        app.state.session.params.insert(id.to_string(), snapshot_params(id));
+        app.state.session.lecture = lecture;
+        app.state.session.light = false;
+    }
+    settle(h, name);
+    h.state_mut().apply(Command::ClearPins);
+    h.state_mut().apply(Command::SetSweep(sweep));
+    h.state_mut().apply(Command::DrawFamily);
+    let start = Instant::now();
+    while h.state().state.session.pins.is_empty() && h.state().state.error.is_none() {
+        assert!(start.elapsed() < PATIENCE, "{name}: no family after {PATIENCE:?}");
+        std::thread::sleep(Duration::from_millis(20));
+        h.run_steps(1);
+    }
+    settle(h, name);
+    h.try_snapshot_options(name, &SnapshotOptions::default()).map_err(|e| format!("{name}: {e}"))
+}
+
+#[test]
+fn a_family_draws_over_its_scene_in_the_window_and_in_lecture_mode() {
+    use grainscope::app::command::Sweep;
+    let Some(mut h) = harness(1024.0, 768.0) else { return };
+    let slope = || Sweep { key: "alpha".into(), from: 3.2, to: 3.8, steps: 4 };
+    let mut failures = Vec::new();
+    failures
+        .extend(check_family(&mut h, "smallest-fragment", "family-1024x768/smallest-fragment", false, slope()).err());
+    failures.extend(
+        check_family(&mut h, "smallest-fragment", "family-1024x768/smallest-fragment-lecture", true, slope()).err(),
+    );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -585,3 +585,69 @@ fn the_monomer_card_is_shared_between_scenes() {
     open_scene(&mut h, "Mass–porosity track");
     assert!((number(h.state().params(), "monomer_radius") - 5e-7).abs() < 1e-15, "not linked");
 }
+
+/// Runs frames until the family sweep has pinned its curves (or an error or
+/// 60 s); the runner's results arrive from other threads.
+fn wait_for_pins(h: &mut Harness<'static, GrainscopeApp>) {
+    let start = std::time::Instant::now();
+    while h.state().state.session.pins.is_empty()
+        && h.state().state.error.is_none()
+        && start.elapsed() < std::time::Duration::from_secs(60)
+    {
+        h.step();
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    h.run_steps(2);
+}
+
+#[test]
+fn draw_family_pins_one_curve_set_per_value_in_a_light_scene() {
+    use grainscope::app::command::Sweep;
+    let mut h = harness();
+    h.run();
+    let i = grainscope::scene::SCENES.iter().position(|s| s.title == "Smallest fragment").expect("scene");
+    h.state_mut().apply(Command::OpenScene(i));
+    settle(&mut h);
+    h.state_mut().apply(Command::SetSweep(Sweep { key: "alpha".into(), from: 3.2, to: 3.8, steps: 4 }));
+    h.run_steps(2);
+    h.get_by_label("Draw family").click();
+    wait_for_pins(&mut h);
+    let s = &h.state().state;
+    assert_eq!(s.session.pins.len(), 4, "status {:?}, error {:?}", s.status, s.error);
+    // The slope is a linear control: evenly spaced values, 3.5 among them.
+    let labels: Vec<&str> = s.session.pins.iter().map(|p| p.label.as_str()).collect();
+    assert_eq!(labels, ["alpha = 3.2", "alpha = 3.4", "alpha = 3.6", "alpha = 3.8"]);
+    assert!(s.session.pins.iter().all(|p| !p.curves.is_empty()));
+    assert_eq!(s.status, "swept 4 values");
+    // Every pinned curve carries its swept value, for the family's colour bar.
+    let values: Vec<f64> = s.session.pins.iter().flat_map(|p| p.curves.iter().filter_map(|(_, c)| c.family)).collect();
+    assert!(values.iter().all(|v| (3.2..=3.8).contains(v)) && values.len() >= 4, "{values:?}");
+}
+
+#[test]
+fn draw_family_survives_a_heavy_scenes_own_computation() {
+    use grainscope::app::command::Sweep;
+    let mut h = harness();
+    h.run();
+    open_scene(&mut h, "Restitution");
+    // Small grids, so that each value takes a fraction of a second.
+    let mut p = h.state().params().clone();
+    for (k, v) in [("n_velocities", "8"), ("n_radii", "6"), ("n_t_vis", "2")] {
+        p.set(k, v).expect("a documented key");
+    }
+    h.state_mut().apply(Command::SetParams(Box::new(p)));
+    settle(&mut h);
+    h.state_mut().apply(Command::SetSweep(Sweep { key: "surface_energy".into(), from: 0.1, to: 1.0, steps: 2 }));
+    h.state_mut().apply(Command::DrawFamily);
+    wait_for_pins(&mut h);
+    let s = &h.state().state;
+    assert_eq!(s.session.pins.len(), 2, "status {:?}, error {:?}", s.status, s.error);
+    // The sticking-velocity panel colours its own curves by T_vis: pins drawn
+    // there keep no γ value, so its colour bar stays T_vis.
+    for pin in &s.session.pins {
+        for (figure, series) in &pin.curves {
+            let own = figure == "sticking-velocity";
+            assert_eq!(series.family.is_none(), own, "{figure}: {:?}", series.family);
+        }
+    }
+}

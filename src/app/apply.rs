@@ -11,7 +11,7 @@ use super::playback;
 use super::state::{AppState, Effect, Inspected, Then};
 use crate::figure::{self, View};
 use crate::preset::Preset;
-use crate::scene::{self, SCENES, SceneParams};
+use crate::scene::{self, ControlKind, SCENES, SceneParams};
 use crate::session::Pin;
 use std::path::Path;
 
@@ -332,7 +332,13 @@ impl AppState {
     fn draw_family(&mut self, fx: &mut Vec<Effect>) {
         let base = self.params().clone();
         let (from, to, n) = (self.sweep.from, self.sweep.to, self.sweep.steps.clamp(2, 12));
-        let values: Vec<f64> = if from > 0.0 && to > 0.0 {
+        // Log-spaced where the control is logarithmic (and the range positive).
+        let log = {
+            let mut p = base.clone();
+            let controls = p.controls();
+            controls.iter().any(|c| c.key == self.sweep.key && matches!(c.kind, ControlKind::Number { log: true, .. }))
+        };
+        let values: Vec<f64> = if log && from > 0.0 && to > 0.0 {
             scene::logspace(from, to, n)
         } else {
             (0..n).map(|i| from + (to - from) * i as f64 / (n - 1) as f64).collect()

@@ -39,19 +39,12 @@ impl GrainscopeApp {
                 match &job {
                     Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
                     Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
-                    Job::Sweep { .. } => {
-                        self.computing.stale = true;
-                        self.computing.live_scene = None;
-                    }
-                    Job::Scene { .. } => {}
+                    Job::Sweep { .. } | Job::Scene { .. } => {}
                 }
                 self.runner.submit(job);
-                if lane == Lane::Compute {
-                    // The scene itself is recomputed when the sweep is done.
-                    self.computing.requested[state.index()] = None;
-                }
             }
             Effect::Cancel => {
+                self.runner.cancel(Lane::Sweep);
                 self.runner.cancel(Lane::Compute);
                 self.computing.stale = false;
                 self.computing.requested[state.index()] = None;
@@ -88,11 +81,13 @@ impl GrainscopeApp {
                     self.state.finish(i, Ok(o));
                 }
                 Ok(Done::Sweep(pins)) => {
-                    self.computing.stale = false;
                     self.state.status = format!("swept {} values", pins.len());
                     self.state.session.pins.extend(pins);
                 }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
+                Err(e) if finished.lane == Lane::Sweep => {
+                    self.state.error = Some(format!("family not drawn: {e}"));
+                }
                 Err(e) if finished.lane == Lane::Compute => {
                     self.computing.stale = false;
                     self.state.error = Some(e.to_string());
@@ -128,6 +123,9 @@ impl GrainscopeApp {
         });
         for c in dropped {
             self.apply(c);
+        }
+        if self.runner.busy(Lane::Sweep) {
+            ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         if self.runner.busy(Lane::Compute) {
             // A long run offers intermediate results: draw them as they come.

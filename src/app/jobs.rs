@@ -17,8 +17,10 @@ use std::sync::{Arc, Mutex};
 /// Where a job runs beside others: one job at a time per lane.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Lane {
-    /// The open scene's result, or a family sweep: the newest wins.
+    /// The open scene's result: the newest wins.
     Compute,
+    /// A family sweep, beside the scene's own computation: the newest wins.
+    Sweep,
     /// Figures rendered for an export: the newest wins.
     Export,
     /// A history rendered as a movie: the newest wins.
@@ -71,7 +73,8 @@ impl Job {
     /// The lane the job runs on.
     pub fn lane(&self) -> Lane {
         match self {
-            Job::Scene { .. } | Job::Sweep { .. } => Lane::Compute,
+            Job::Scene { .. } => Lane::Compute,
+            Job::Sweep { .. } => Lane::Sweep,
             Job::Export { .. } => Lane::Export,
             Job::Movie { .. } => Lane::Movie,
         }
@@ -133,8 +136,20 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
                 progress.set(j as f64 / values.len() as f64);
                 let mut p = (*base).clone();
                 p.set(&key, &v.to_string()).map_err(SceneError::from)?;
-                let out = scene::compute(&p, &Progress::default())?;
-                let curves = line_curves(&out).into_iter().map(|(id, s)| (id, s.at(*v))).collect();
+                let out = scene::compute(&p, &progress.quiet_child())?;
+                // Tagged with the swept value, except on figures that colour
+                // their curves by a value of their own (their colour bar stays).
+                let curves = out
+                    .figures
+                    .iter()
+                    .flat_map(|f| {
+                        let own = f.family.is_some();
+                        f.series.iter().filter(|s| s.style == Style::Line).map(move |s| {
+                            let s = if own { Series { family: None, ..(*s).clone() } } else { s.clone().at(*v) };
+                            (f.id.clone(), s)
+                        })
+                    })
+                    .collect();
                 pins.push(Pin {
                     params: p,
                     label: format!("{key} = {}", figure::tick_label(*v)),

@@ -120,7 +120,7 @@ impl GrainscopeApp {
 
     /// Whether a result is still being computed.
     pub fn busy(&self) -> bool {
-        self.runner.busy(Lane::Compute) || self.computing.stale
+        self.runner.busy(Lane::Compute) || self.runner.busy(Lane::Sweep) || self.computing.stale
     }
 
     /// The frame (inside the axes) of figure `figure` as drawn in the last
@@ -159,11 +159,12 @@ impl GrainscopeApp {
 
     /// How the computation stands, for the panels.
     fn work(&self) -> Work {
-        let running = self.runner.busy(Lane::Compute);
+        let sweeping = self.runner.busy(Lane::Sweep);
+        let running = self.runner.busy(Lane::Compute) || sweeping;
         Work {
             running,
             stale: self.computing.stale,
-            progress: self.runner.progress(Lane::Compute),
+            progress: self.runner.progress(if sweeping { Lane::Sweep } else { Lane::Compute }),
             paused: self.runner.paused(Lane::Compute),
             pausable: self.computing.live_scene.is_some_and(|i| self.state.params_of(i).pausable()),
         }
@@ -205,7 +206,7 @@ impl GrainscopeApp {
         }
         // In lecture mode the status line shows only while something runs
         // or went wrong, so that the plots keep the bottom of the screen.
-        if !self.state.session.lecture || self.runner.busy(Lane::Compute) || self.state.error.is_some() {
+        if !self.state.session.lecture || self.work().running || self.state.error.is_some() {
             egui::Panel::bottom("status").show(ui, |ui| self.panel(|cx| ui::status::bar(ui, cx)));
         }
         if self.state.presenter.as_ref().is_some_and(|p| p.notes) {

@@ -243,11 +243,18 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 /// by the swept value), with the cursor's marks.
 fn overlay_for(state: &AppState, fig: &Figure, cursor: Vec<scene::Mark>) -> plot::Overlay {
     let current = state.params();
+    let here = |p: &&crate::session::Pin| p.params.info().id == current.info().id;
+    // The newest sweep's pins form a family coloured by the swept value;
+    // pins of an earlier sweep of another parameter are drawn as plain pins.
+    let swept = |p: &crate::session::Pin| {
+        p.curves.iter().any(|(_, s)| s.family.is_some()).then(|| p.label.split(" = ").next().unwrap_or("").to_string())
+    };
+    let key = state.session.pins.iter().filter(here).rev().find_map(swept);
     let pinned: Vec<Series> = state
         .session
         .pins
         .iter()
-        .filter(|p| p.params.info().id == current.info().id)
+        .filter(here)
         .flat_map(|pin| {
             let label = if pin.label.is_empty() {
                 let d = pin.params.differences(current);
@@ -255,30 +262,27 @@ fn overlay_for(state: &AppState, fig: &Figure, cursor: Vec<scene::Mark>) -> plot
             } else {
                 pin.label.clone()
             };
+            let in_family = key.is_some() && swept(pin) == key;
             pin.curves.iter().filter(|(id, _)| *id == fig.id).map(move |(_, s)| {
                 let name = if s.name.is_empty() { label.clone() } else { format!("{label} — {}", s.name) };
                 let mut pinned = Series::new(name, s.points.clone(), Style::Dashed, pin.color);
-                pinned.family = s.family;
+                pinned.family = if in_family { s.family } else { None };
                 pinned
             })
         })
         .collect();
-    // A sweep's pins form a family coloured by the swept value.
-    let family = state
-        .session
-        .pins
-        .iter()
-        .find(|p| p.params.info().id == current.info().id && p.curves.iter().any(|(_, s)| s.family.is_some()))
-        .and_then(|p| {
-            let key = p.label.split(" = ").next()?.to_string();
-            let mut params = current.clone();
-            let controls = params.controls();
-            let c = controls.iter().find(|c| c.key == key)?;
-            let values: Vec<f64> = pinned.iter().filter_map(|s| s.family).collect();
-            let positive = values.iter().all(|&v| v > 0.0);
-            let scale = if positive { figure::Scale::Log } else { figure::Scale::Linear };
-            Some(figure::Family { label: c.label.to_string(), unit: c.si_unit.to_string(), scale })
-        });
+    let family = key.and_then(|key| {
+        let mut params = current.clone();
+        let controls = params.controls();
+        let c = controls.iter().find(|c| c.key == key)?;
+        let values: Vec<f64> = pinned.iter().filter_map(|s| s.family).collect();
+        if values.is_empty() {
+            return None;
+        }
+        let positive = values.iter().all(|&v| v > 0.0);
+        let scale = if positive { figure::Scale::Log } else { figure::Scale::Linear };
+        Some(figure::Family { label: c.label.to_string(), unit: c.si_unit.to_string(), scale })
+    });
     plot::Overlay { pinned, family, cursor }
 }
 

@@ -150,7 +150,7 @@ fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     if sweep != cx.state.sweep {
         cx.send(Command::SetSweep(sweep));
     }
-    ui.small("sweep values are in SI units, log-spaced when both ends are positive");
+    ui.small("sweep values are in SI units, log-spaced where the parameter is logarithmic");
     if ui.button("Draw family").clicked() {
         cx.send(Command::DrawFamily);
     }

@@ -43,6 +43,40 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// Compute a preset's scalars over a grid of parameter values: one tidy
+    /// CSV (a row per point: the varied parameters, then the scalars; units in
+    /// the header) and its figure. A failing point records its error in its
+    /// row; a rerun into the same folder skips the points already done.
+    Sweep {
+        /// Preset file, shipped preset name or exported figure.
+        preset: String,
+        /// A varied parameter, `NAME=lin|log:FROM:TO:N` (SI units); repeat
+        /// for a grid (the last one varies fastest).
+        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO:N", required = true)]
+        vary: Vec<String>,
+        /// Override a parameter by its documented key, e.g. `--set velocity=4`.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Only these scalars (keys of `run --json`), comma-separated; all by default.
+        #[arg(long, value_delimiter = ',', value_name = "A,B")]
+        scalars: Vec<String>,
+        /// Run one deterministic slice `K/N` of the points, or `auto` for the
+        /// task of a Slurm job array; merge the slices with `sweep-merge`.
+        #[arg(long, default_value = "1/1", value_name = "K/N|auto")]
+        shard: String,
+        /// Output folder (sweep.csv, sweep.ron, sweep.png, sweep.svg).
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
+    /// Merge the folders of a sharded sweep into the files of the whole run.
+    SweepMerge {
+        /// The shards' output folders.
+        #[arg(required = true)]
+        shards: Vec<PathBuf>,
+        /// Output folder.
+        #[arg(long, value_name = "DIR")]
+        out: PathBuf,
+    },
     /// Write a deck's handout: every slide's figures (PNG, SVG, CSV) in its
     /// own folder and an index.md with titles and speaker notes.
     Deck {
@@ -199,6 +233,29 @@ pub fn run(command: Command) -> Result<()> {
                 }
             }
             if json { say(serde_json::to_string(&result.scalars_json())?) } else { print_scalars(&result) }
+        }
+        Command::Sweep { preset, vary, set, scalars, shard, out } => {
+            let mut p = resolve(&preset)?;
+            apply_sets(&mut p, &set)?;
+            let shard = crate::sweep::Shard::parse(&shard, |k| std::env::var(k).ok())?;
+            let report = |done: usize, total: usize| {
+                // About twenty progress lines per run.
+                if done % (total / 20).max(1) == 0 || done == total {
+                    tell(format_args!("{done}/{total} points"));
+                }
+            };
+            let s = crate::sweep_files::run(p, &vary, &scalars, shard, &out, &report)?;
+            say(format_args!(
+                "{} points ({} already done, {} failed); wrote {}",
+                s.points,
+                s.reused,
+                s.failed,
+                s.files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
+            ))
+        }
+        Command::SweepMerge { shards, out } => {
+            let files = crate::sweep_files::merge(&shards, &out)?;
+            say(format_args!("merged {} shards; wrote {} files to {}", shards.len(), files.len(), out.display()))
         }
         Command::Deck { deck, out } => {
             let loaded = crate::deck::resolve(&deck)?;

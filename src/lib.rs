@@ -23,3 +23,5 @@ pub mod reproduce;
 pub mod scene;
 pub mod session;
 pub mod solver;
+pub mod sweep;
+pub mod sweep_files;

@@ -256,3 +256,73 @@ fn a_deck_handout_lists_every_slide() {
     assert_eq!(movie.status.code(), Some(2), "a scene without time has no movie");
     assert!(String::from_utf8_lossy(&movie.stderr).contains("no time to play"));
 }
+
+#[test]
+fn a_sweep_resumes_and_its_shards_merge_into_the_same_bytes() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = |name: &str| dir.path().join(name).to_str().expect("utf8").to_string();
+    let sweep = |out: &str, shard: &str| {
+        grainscope(&[
+            "sweep",
+            "ice-bounce-8ms",
+            "--vary",
+            "surface_energy=log:0.1:1:6",
+            "--vary",
+            "velocity=lin:2:20:3",
+            "--scalars",
+            "e,e_D",
+            "--shard",
+            shard,
+            "--out",
+            out,
+        ])
+    };
+    let whole = sweep(&d("whole"), "1/1");
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+    let table = std::fs::read_to_string(dir.path().join("whole/sweep.csv")).expect("table");
+    let lines: Vec<&str> = table.lines().collect();
+    assert_eq!(lines[0], "point,surface_energy [J m^-2],velocity [m s^-1],e,e_D,error");
+    assert_eq!(lines.len(), 1 + 18);
+    // e at (γ, v) is the `run` result there.
+    let one = grainscope(&["run", "ice-bounce-8ms", "--set", "surface_energy=1", "--set", "velocity=20", "--json"]);
+    let v: serde_json::Value = serde_json::from_slice(&one.stdout).expect("json");
+    let last: Vec<&str> = lines[18].split(',').collect();
+    assert_eq!(last[3].parse::<f64>().ok(), v["e"].as_f64(), "{}", lines[18]);
+    for path in ["whole/sweep.png", "whole/sweep.svg", "whole/sweep.ron"] {
+        assert!(dir.path().join(path).exists(), "{path}");
+    }
+    // Shards, merged: the same bytes.
+    for k in 1..=3 {
+        let out = sweep(&d(&format!("shard{k}")), &format!("{k}/3"));
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    }
+    let merged = grainscope(&["sweep-merge", &d("shard1"), &d("shard2"), &d("shard3"), "--out", &d("merged")]);
+    assert!(merged.status.success(), "{}", String::from_utf8_lossy(&merged.stderr));
+    for f in ["sweep.csv", "sweep.ron"] {
+        assert_eq!(
+            std::fs::read(dir.path().join("merged").join(f)).ok(),
+            std::fs::read(dir.path().join("whole").join(f)).ok(),
+            "{f}"
+        );
+    }
+    // A shard missing: refused, naming what is missing.
+    let short = grainscope(&["sweep-merge", &d("shard1"), &d("shard2"), "--out", &d("short")]);
+    assert!(!short.status.success());
+    assert!(String::from_utf8_lossy(&short.stderr).contains("in no shard"));
+    // A run cut short: the rows it appended are reused, a torn line is not.
+    let resumed = dir.path().join("resumed");
+    std::fs::create_dir_all(&resumed).expect("dir");
+    std::fs::copy(dir.path().join("whole/sweep.ron"), resumed.join("sweep.ron")).expect("copy");
+    let partial = format!("{}\n{}\n{}\n{}\n{}", lines[0], lines[1], lines[5], lines[9], &lines[12][..6]);
+    std::fs::write(resumed.join("sweep.partial.csv"), partial).expect("write");
+    let again = sweep(resumed.to_str().expect("utf8"), "1/1");
+    assert!(again.status.success(), "{}", String::from_utf8_lossy(&again.stderr));
+    assert!(String::from_utf8_lossy(&again.stdout).contains("(3 already done, 0 failed)"));
+    assert_eq!(std::fs::read_to_string(resumed.join("sweep.csv")).expect("table"), table);
+    assert!(!resumed.join("sweep.partial.csv").exists());
+    // Another sweep into the same folder is refused; a bad range names itself.
+    let other = grainscope(&["sweep", "ice-bounce-8ms", "--vary", "velocity=lin:2:20:4", "--out", &d("whole")]);
+    assert!(!other.status.success());
+    let bad = grainscope(&["sweep", "ice-bounce-8ms", "--vary", "speed=lin:2:20:4", "--out", &d("bad")]);
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no parameter 'speed'"));
+}

@@ -1,0 +1,569 @@
+//! Sweeps: a scene's scalar results over a grid of parameter values, as one
+//! tidy table (a row per point: the varied parameters, then the scalars).
+//!
+//! A [`Plan`] is a preset's parameters and the parameters varied
+//! ([`Vary`], each `NAME=lin|log:FROM:TO:N`); its points are numbered in a
+//! fixed order (the last varied parameter fastest), so that a [`Shard`] of
+//! the plan, its rows and a merge of shards are deterministic: the rows of
+//! every shard together are the rows of the whole plan, byte for byte.
+//! Points run in parallel (rayon); one that fails records its error in its
+//! row and the sweep goes on. Nothing here touches files: the command line
+//! reads and writes the table.
+
+use crate::scene::{self, ControlKind, Progress, SceneError, SceneParams};
+use rayon::prelude::*;
+use std::fmt::Write as _;
+use std::sync::atomic::{AtomicUsize, Ordering};
+
+/// Why a sweep cannot be planned, or a table not read.
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum SweepError {
+    /// A `--vary` text that is not `NAME=lin|log:FROM:TO:N`.
+    #[error("'{0}' is not NAME=lin|log:FROM:TO:N (e.g. surface_energy=log:0.1:1:20)")]
+    Syntax(String),
+    /// A varied parameter the scene does not have, or not a number.
+    #[error("{0}")]
+    Parameter(String),
+    /// A shard that is not `K/N` with 1 ≤ K ≤ N, or `auto` outside a Slurm array.
+    #[error("{0}")]
+    Shard(String),
+    /// A table that does not belong to this plan or is malformed.
+    #[error("{0}")]
+    Table(String),
+}
+
+/// How the values of a varied parameter are spaced.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Spacing {
+    /// Evenly.
+    Lin,
+    /// Evenly in the logarithm (both ends positive).
+    Log,
+}
+
+/// One varied parameter: its key and its values.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Vary {
+    /// The parameter's documented key (SI units).
+    pub key: String,
+    /// Spacing of the values.
+    pub spacing: Spacing,
+    /// First value.
+    pub from: f64,
+    /// Last value.
+    pub to: f64,
+    /// Number of values (at least 1).
+    pub n: usize,
+}
+
+impl Vary {
+    /// Reads `NAME=lin|log:FROM:TO:N`.
+    pub fn parse(text: &str) -> Result<Vary, SweepError> {
+        let bad = || SweepError::Syntax(text.to_string());
+        let (key, rest) = text.split_once('=').ok_or_else(bad)?;
+        let parts: Vec<&str> = rest.split(':').collect();
+        let [spacing, from, to, n] = parts[..] else { return Err(bad()) };
+        let spacing = match spacing {
+            "lin" => Spacing::Lin,
+            "log" => Spacing::Log,
+            _ => return Err(bad()),
+        };
+        let number = |s: &str| s.trim().parse::<f64>().ok().filter(|v| v.is_finite());
+        let (Some(from), Some(to)) = (number(from), number(to)) else { return Err(bad()) };
+        let n: usize = n.trim().parse().map_err(|_| bad())?;
+        let key = key.trim().to_string();
+        if key.is_empty() || n == 0 || n > 1_000_000 {
+            return Err(bad());
+        }
+        if spacing == Spacing::Log && !(from > 0.0 && to > 0.0) {
+            return Err(SweepError::Syntax(format!("{text}: a log range needs positive ends")));
+        }
+        Ok(Vary { key, spacing, from, to, n })
+    }
+
+    /// The values, `from` first and `to` last.
+    pub fn values(&self) -> Vec<f64> {
+        if self.n == 1 {
+            return vec![self.from];
+        }
+        let last = (self.n - 1) as f64;
+        (0..self.n)
+            .map(|i| match (i, self.spacing) {
+                (0, _) => self.from,
+                (i, _) if i == self.n - 1 => self.to,
+                (i, Spacing::Lin) => self.from + (self.to - self.from) * i as f64 / last,
+                (i, Spacing::Log) => (self.from.ln() + (self.to / self.from).ln() * i as f64 / last).exp(),
+            })
+            .collect()
+    }
+
+    /// The text it was read from, in canonical form.
+    pub fn text(&self) -> String {
+        let s = match self.spacing {
+            Spacing::Lin => "lin",
+            Spacing::Log => "log",
+        };
+        format!("{}={s}:{}:{}:{}", self.key, self.from, self.to, self.n)
+    }
+}
+
+/// A deterministic slice of a plan: points K, K + N, K + 2N, … (1-based K).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Shard {
+    /// Which slice, 1 ≤ k ≤ n.
+    pub k: usize,
+    /// How many slices.
+    pub n: usize,
+}
+
+impl Shard {
+    /// The whole plan.
+    pub const ALL: Shard = Shard { k: 1, n: 1 };
+
+    /// Reads `K/N`, or `auto`: the Slurm job array's task (from
+    /// `SLURM_ARRAY_TASK_ID` and `SLURM_ARRAY_TASK_COUNT`, with
+    /// `SLURM_ARRAY_TASK_MIN` as the first task, 0 if unset) given as `env`.
+    pub fn parse(text: &str, env: impl Fn(&str) -> Option<String>) -> Result<Shard, SweepError> {
+        if text == "auto" {
+            let get = |name: &str| -> Result<usize, SweepError> {
+                let v = env(name).ok_or_else(|| {
+                    SweepError::Shard(format!("--shard auto needs {name}: run it as a task of a Slurm job array"))
+                })?;
+                v.trim().parse().map_err(|_| SweepError::Shard(format!("{name}={v} is not a whole number")))
+            };
+            let id = get("SLURM_ARRAY_TASK_ID")?;
+            let count = get("SLURM_ARRAY_TASK_COUNT")?;
+            let min = env("SLURM_ARRAY_TASK_MIN").and_then(|v| v.trim().parse::<usize>().ok()).unwrap_or(0);
+            let k = id.checked_sub(min).map(|k| k + 1);
+            return match k {
+                Some(k) if k <= count => Ok(Shard { k, n: count }),
+                _ => Err(SweepError::Shard(format!(
+                    "task {id} is outside the array of {count} tasks from {min} (use --array={min}-{})",
+                    min + count.max(1) - 1
+                ))),
+            };
+        }
+        let bad = || SweepError::Shard(format!("--shard {text}: expected K/N with 1 ≤ K ≤ N, or auto"));
+        let (k, n) = text.split_once('/').ok_or_else(bad)?;
+        let (k, n): (usize, usize) = (k.trim().parse().map_err(|_| bad())?, n.trim().parse().map_err(|_| bad())?);
+        if k == 0 || k > n {
+            return Err(bad());
+        }
+        Ok(Shard { k, n })
+    }
+
+    /// Whether point `index` belongs to this shard.
+    pub fn owns(&self, index: usize) -> bool {
+        index % self.n == self.k - 1
+    }
+}
+
+/// A preset's parameters and the parameters varied over them.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Plan {
+    /// The parameters every point starts from.
+    pub base: SceneParams,
+    /// The varied parameters, the last fastest.
+    pub vary: Vec<Vary>,
+    /// The SI unit of each varied parameter.
+    pub units: Vec<String>,
+    values: Vec<Vec<f64>>,
+}
+
+impl Plan {
+    /// A plan, checked: every varied key is a number of the scene, and every
+    /// value lies in its documented range.
+    pub fn new(base: SceneParams, vary: Vec<Vary>) -> Result<Plan, SweepError> {
+        if vary.is_empty() {
+            return Err(SweepError::Parameter("nothing to vary: give --vary NAME=lin|log:FROM:TO:N".into()));
+        }
+        let mut units = Vec::new();
+        let mut probe = base.clone();
+        let controls = probe.controls();
+        for v in &vary {
+            let c = controls.iter().find(|c| c.key == v.key).ok_or_else(|| {
+                let numbers: Vec<&str> = controls
+                    .iter()
+                    .filter(|c| matches!(c.kind, ControlKind::Number { .. } | ControlKind::Count { .. }))
+                    .map(|c| c.key)
+                    .collect();
+                SweepError::Parameter(format!(
+                    "{} has no parameter '{}' (numbers: {})",
+                    base.info().id,
+                    v.key,
+                    numbers.join(", ")
+                ))
+            })?;
+            if !matches!(c.kind, ControlKind::Number { .. } | ControlKind::Count { .. }) {
+                return Err(SweepError::Parameter(format!("'{}' is not a number and cannot be varied", v.key)));
+            }
+            units.push(c.si_unit.to_string());
+        }
+        drop(controls);
+        if vary.iter().enumerate().any(|(i, v)| vary[..i].iter().any(|w| w.key == v.key)) {
+            return Err(SweepError::Parameter("a parameter is varied twice".into()));
+        }
+        let total = vary.iter().try_fold(1usize, |acc, v| acc.checked_mul(v.n));
+        if total.is_none_or(|t| t > 100_000_000) {
+            return Err(SweepError::Parameter("more than 10⁸ points".into()));
+        }
+        let values: Vec<Vec<f64>> = vary.iter().map(Vary::values).collect();
+        // Every value is accepted on its own (a range check, not a computation).
+        for (v, vals) in vary.iter().zip(&values) {
+            for x in vals {
+                let mut trial = base.clone();
+                trial
+                    .set(&v.key, &x.to_string())
+                    .map_err(|e| SweepError::Parameter(format!("--vary {}: {e}", v.text())))?;
+            }
+        }
+        Ok(Plan { base, vary, units, values })
+    }
+
+    /// Number of points.
+    pub fn len(&self) -> usize {
+        self.values.iter().map(Vec::len).product()
+    }
+
+    /// Whether the plan has no points (never, for a checked plan).
+    pub fn is_empty(&self) -> bool {
+        self.len() == 0
+    }
+
+    /// The varied values of point `index` (the last parameter fastest).
+    pub fn point(&self, index: usize) -> Vec<f64> {
+        let mut rest = index;
+        let mut out = vec![0.0; self.values.len()];
+        for (k, vals) in self.values.iter().enumerate().rev() {
+            out[k] = vals[rest % vals.len()];
+            rest /= vals.len();
+        }
+        out
+    }
+
+    /// The parameters of point `index`.
+    pub fn params_at(&self, index: usize) -> Result<SceneParams, SceneError> {
+        let mut p = self.base.clone();
+        for (v, x) in self.vary.iter().zip(self.point(index)) {
+            p.set(&v.key, &x.to_string())?;
+        }
+        Ok(p)
+    }
+}
+
+/// The scalar columns of a table: keys and units.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct Columns {
+    /// Scalar keys, as in `run --json`.
+    pub keys: Vec<String>,
+    /// Their units (empty: dimensionless).
+    pub units: Vec<String>,
+}
+
+impl Columns {
+    /// The columns of the scene's result at the plan's base parameters: all
+    /// its scalars, or those named in `only` (in that order).
+    pub fn of(plan: &Plan, only: &[String], progress: &Progress) -> Result<Columns, SweepError> {
+        let out = scene::compute(&plan.base, progress)
+            .map_err(|e| SweepError::Parameter(format!("the preset itself does not compute: {e}")))?;
+        let all: Vec<(String, String)> = out.scalars.iter().map(|s| (s.key.to_string(), s.unit.to_string())).collect();
+        let chosen: Vec<(String, String)> = if only.is_empty() {
+            all
+        } else {
+            only.iter()
+                .map(|k| {
+                    all.iter().find(|(key, _)| key == k).cloned().ok_or_else(|| {
+                        let keys: Vec<&str> = all.iter().map(|(k, _)| k.as_str()).collect();
+                        SweepError::Parameter(format!("no scalar '{k}' (scalars: {})", keys.join(", ")))
+                    })
+                })
+                .collect::<Result<_, _>>()?
+        };
+        Ok(Columns {
+            keys: chosen.iter().map(|c| c.0.clone()).collect(),
+            units: chosen.into_iter().map(|c| c.1).collect(),
+        })
+    }
+}
+
+/// One point's row: its number, varied values, scalars (None where the scene
+/// reports none: a gap, not a zero) and its error, if it failed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Row {
+    /// The point's number in the plan.
+    pub index: usize,
+    /// The varied values.
+    pub values: Vec<f64>,
+    /// The scalars, in column order.
+    pub scalars: Vec<Option<f64>>,
+    /// Why the point has no result.
+    pub error: Option<String>,
+}
+
+/// Computes point `index` of `plan`.
+pub fn evaluate(plan: &Plan, columns: &Columns, index: usize, progress: &Progress) -> Row {
+    let values = plan.point(index);
+    let result = plan.params_at(index).and_then(|p| scene::compute(&p, progress));
+    match result {
+        Ok(out) => Row {
+            index,
+            values,
+            scalars: columns.keys.iter().map(|k| out.scalar(k).filter(|v| v.is_finite())).collect(),
+            error: None,
+        },
+        Err(e) => Row { index, values, scalars: vec![None; columns.keys.len()], error: Some(e.to_string()) },
+    }
+}
+
+/// Computes the points `indices` in parallel, calling `done` with each row as
+/// it finishes (from any thread), and returns the rows in point order.
+/// Cancelling `progress` stops starting new points.
+pub fn run(
+    plan: &Plan,
+    columns: &Columns,
+    indices: &[usize],
+    progress: &Progress,
+    done: &(dyn Fn(&Row) + Sync),
+) -> Result<Vec<Row>, SceneError> {
+    let finished = AtomicUsize::new(0);
+    let rows: Vec<Option<Row>> = indices
+        .par_iter()
+        .map(|&i| {
+            if progress.cancelled() {
+                return None;
+            }
+            let row = evaluate(plan, columns, i, &progress.quiet_child());
+            if row.error.as_deref() == Some(&SceneError::Cancelled.to_string()) {
+                return None;
+            }
+            done(&row);
+            let n = finished.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / indices.len().max(1) as f64);
+            Some(row)
+        })
+        .collect();
+    progress.check()?;
+    let mut rows: Vec<Row> = rows.into_iter().flatten().collect();
+    rows.sort_by_key(|r| r.index);
+    Ok(rows)
+}
+
+/// A number as the table writes it: the shortest text that reads back to
+/// the same value.
+fn number(v: f64) -> String {
+    format!("{v}")
+}
+
+/// A column's name with its unit, as in the header: `key [unit]`.
+fn titled(key: &str, unit: &str) -> String {
+    if unit.is_empty() { key.to_string() } else { format!("{key} [{unit}]") }
+}
+
+/// Quotes a CSV field where needed.
+fn field(s: &str) -> String {
+    if s.contains([',', '"', '\n', '\r']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() }
+}
+
+/// The table's header line (without line end).
+pub fn header(plan: &Plan, columns: &Columns) -> String {
+    let mut h = vec!["point".to_string()];
+    h.extend(plan.vary.iter().zip(&plan.units).map(|(v, u)| titled(&v.key, u)));
+    h.extend(columns.keys.iter().zip(&columns.units).map(|(k, u)| titled(k, u)));
+    h.push("error".into());
+    h.iter().map(|s| field(s)).collect::<Vec<_>>().join(",")
+}
+
+/// One row as a line of the table (without line end).
+pub fn line(row: &Row) -> String {
+    let mut s = row.index.to_string();
+    for v in &row.values {
+        let _ = write!(s, ",{}", number(*v));
+    }
+    for v in &row.scalars {
+        s.push(',');
+        if let Some(v) = v {
+            s.push_str(&number(*v));
+        }
+    }
+    s.push(',');
+    if let Some(e) = &row.error {
+        s.push_str(&field(e));
+    }
+    s
+}
+
+/// The whole table: header and rows in point order, each line ending in `\n`.
+pub fn table(plan: &Plan, columns: &Columns, rows: &[Row]) -> String {
+    let mut s = header(plan, columns);
+    s.push('\n');
+    for r in rows {
+        s.push_str(&line(r));
+        s.push('\n');
+    }
+    s
+}
+
+/// Reads the rows of a table written by [`table`] (or appended line by line)
+/// for this plan and these columns; a header of another plan is refused, and
+/// an incomplete last line (a write cut short) is skipped.
+pub fn read_rows(text: &str, plan: &Plan, columns: &Columns) -> Result<Vec<Row>, SweepError> {
+    let mut lines = text.split_inclusive('\n');
+    let expected = header(plan, columns);
+    match lines.next() {
+        Some(h) if h.trim_end_matches(['\n', '\r']) == expected => {}
+        Some(h) => {
+            return Err(SweepError::Table(format!(
+                "its header is for another sweep: '{}' (this sweep: '{expected}')",
+                h.trim_end()
+            )));
+        }
+        None => return Ok(Vec::new()),
+    }
+    let body: String = lines.filter(|l| l.ends_with('\n')).collect();
+    let mut reader = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(body.as_bytes());
+    let width = 2 + plan.vary.len() + columns.keys.len();
+    let mut rows = Vec::new();
+    for (n, record) in reader.records().enumerate() {
+        let bad = |why: &str| SweepError::Table(format!("row {}: {why}", n + 1));
+        let record = record.map_err(|e| bad(&e.to_string()))?;
+        if record.len() != width {
+            return Err(bad(&format!("{} fields, expected {width}", record.len())));
+        }
+        let index: usize = record[0].parse().map_err(|_| bad("no point number"))?;
+        if index >= plan.len() {
+            return Err(bad(&format!("point {index} is outside the plan's {} points", plan.len())));
+        }
+        let num = |s: &str| s.parse::<f64>().map_err(|_| bad(&format!("'{s}' is not a number")));
+        let values = (1..=plan.vary.len()).map(|k| num(&record[k])).collect::<Result<Vec<_>, _>>()?;
+        if values != plan.point(index) {
+            return Err(bad(&format!("point {index} has other values than this sweep gives it")));
+        }
+        let scalars = (0..columns.keys.len())
+            .map(|k| {
+                let s = &record[1 + plan.vary.len() + k];
+                if s.is_empty() { Ok(None) } else { num(s).map(Some) }
+            })
+            .collect::<Result<Vec<_>, _>>()?;
+        let error = Some(record[width - 1].to_string()).filter(|e| !e.is_empty());
+        rows.push(Row { index, values, scalars, error });
+    }
+    Ok(rows)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn plan() -> Plan {
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let vary = vec![
+            Vary::parse("velocity=log:1:100:3").expect("vary"),
+            Vary::parse("surface_energy=lin:0.2:1:5").expect("vary"),
+        ];
+        Plan::new(base, vary).expect("plan")
+    }
+
+    #[test]
+    fn values_hit_both_ends_and_space_as_asked() {
+        let v = Vary::parse("velocity=log:1:100:3").expect("vary");
+        assert_eq!(v.values(), vec![1.0, 10.000000000000002, 100.0]);
+        let l = Vary::parse("alpha=lin:3.2:3.8:4").expect("vary");
+        let x = l.values();
+        assert_eq!((x[0], x[3]), (3.2, 3.8));
+        assert!((x[1] - 3.4).abs() < 1e-12 && (x[2] - 3.6).abs() < 1e-12);
+        for bad in ["velocity", "velocity=log:0:1:3", "v=cubic:1:2:3", "v=lin:1:2:0", "v=lin:1:nan:3", "=lin:1:2:3"] {
+            assert!(Vary::parse(bad).is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn points_run_the_last_parameter_fastest_and_shards_partition_them() {
+        let p = plan();
+        assert_eq!(p.len(), 15);
+        assert_eq!(p.point(0), vec![1.0, 0.2]);
+        assert_eq!(p.point(1)[0], 1.0);
+        assert_eq!(p.point(5)[1], 0.2);
+        assert_eq!(p.point(14), vec![100.0, 1.0]);
+        for n in 1..6 {
+            let shards: Vec<Shard> = (1..=n).map(|k| Shard { k, n }).collect();
+            for i in 0..p.len() {
+                assert_eq!(shards.iter().filter(|s| s.owns(i)).count(), 1);
+            }
+        }
+    }
+
+    #[test]
+    fn shards_read_from_text_and_from_a_slurm_array() {
+        let none = |_: &str| None;
+        assert_eq!(Shard::parse("2/5", none), Ok(Shard { k: 2, n: 5 }));
+        for bad in ["0/5", "6/5", "x", "1/0", "auto"] {
+            assert!(Shard::parse(bad, none).is_err(), "{bad}");
+        }
+        let env = |id: &'static str, min: &'static str| {
+            move |k: &str| match k {
+                "SLURM_ARRAY_TASK_ID" => Some(id.to_string()),
+                "SLURM_ARRAY_TASK_COUNT" => Some("4".to_string()),
+                "SLURM_ARRAY_TASK_MIN" => Some(min.to_string()),
+                _ => None,
+            }
+        };
+        assert_eq!(Shard::parse("auto", env("0", "0")), Ok(Shard { k: 1, n: 4 }));
+        assert_eq!(Shard::parse("auto", env("4", "1")), Ok(Shard { k: 4, n: 4 }));
+        assert!(Shard::parse("auto", env("5", "1")).is_err());
+    }
+
+    #[test]
+    fn a_failed_point_and_a_gap_survive_the_table() {
+        let p = plan();
+        let columns = Columns { keys: vec!["e".into(), "v_s".into()], units: vec![String::new(), "m s^-1".into()] };
+        let rows = vec![
+            Row { index: 0, values: p.point(0), scalars: vec![Some(0.5), None], error: None },
+            Row {
+                index: 3,
+                values: p.point(3),
+                scalars: vec![None, None],
+                error: Some("no \"bounce\", at all".into()),
+            },
+        ];
+        let text = table(&p, &columns, &rows);
+        assert!(text.starts_with("point,velocity [m s^-1],surface_energy [J m^-2],e,v_s [m s^-1],error\n"), "{text}");
+        assert_eq!(read_rows(&text, &p, &columns).expect("reads"), rows);
+        // A line cut short by a crash is skipped, not misread.
+        let cut = &text[..text.len() - 5];
+        assert_eq!(read_rows(cut, &p, &columns).expect("reads"), rows[..1]);
+    }
+
+    #[test]
+    fn a_bad_plan_is_refused_with_the_reason() {
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let e = Plan::new(base.clone(), vec![Vary::parse("speed=lin:1:2:2").expect("vary")]).unwrap_err();
+        assert!(e.to_string().contains("no parameter 'speed'") && e.to_string().contains("velocity"), "{e}");
+        let e = Plan::new(base.clone(), vec![Vary::parse("velocity=lin:-1:2:2").expect("vary")]).unwrap_err();
+        assert!(e.to_string().contains("velocity"), "{e}");
+        assert!(Plan::new(base, Vec::new()).is_err());
+    }
+
+    #[test]
+    fn rows_round_trip_through_the_table_and_shards_merge_into_the_whole() {
+        let p = plan();
+        let progress = Progress::default();
+        let columns = Columns::of(&p, &["e".to_string(), "e_D".to_string()], &progress).expect("columns");
+        let all: Vec<usize> = (0..p.len()).collect();
+        let rows = run(&p, &columns, &all, &progress, &|_| {}).expect("runs");
+        let whole = table(&p, &columns, &rows);
+        // Sticking points have e = 0, bouncing ones not; e_D does not depend on γ.
+        assert!(rows.iter().all(|r| r.error.is_none() && r.scalars.iter().all(Option::is_some)));
+        let mut merged: Vec<Row> = Vec::new();
+        for k in 1..=4 {
+            let shard = Shard { k, n: 4 };
+            let mine: Vec<usize> = all.iter().copied().filter(|&i| shard.owns(i)).collect();
+            let part = run(&p, &columns, &mine, &progress, &|_| {}).expect("runs");
+            merged.extend(read_rows(&table(&p, &columns, &part), &p, &columns).expect("reads"));
+        }
+        merged.sort_by_key(|r| r.index);
+        assert_eq!(table(&p, &columns, &merged), whole);
+        // Another plan's table is refused.
+        let other = Plan::new(p.base.clone(), vec![Vary::parse("velocity=log:1:100:4").expect("vary")]).expect("plan");
+        assert!(read_rows(&whole, &other, &columns).is_err());
+    }
+}

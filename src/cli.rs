@@ -240,7 +240,7 @@ pub fn run(command: Command) -> Result<()> {
             let shard = crate::sweep::Shard::parse(&shard, |k| std::env::var(k).ok())?;
             let report = |done: usize, total: usize| {
                 // About twenty progress lines per run.
-                if done % (total / 20).max(1) == 0 || done == total {
+                if done.is_multiple_of((total / 20).max(1)) || done == total {
                     tell(format_args!("{done}/{total} points"));
                 }
             };

@@ -10,7 +10,7 @@
 //! row and the sweep goes on. Nothing here touches files: the command line
 //! reads and writes the table.
 
-use crate::scene::{self, ControlKind, Progress, SceneError, SceneParams};
+use crate::scene::{self, ControlKind, Progress, SceneError, SceneOutput, SceneParams};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -300,10 +300,41 @@ pub struct Row {
     pub error: Option<String>,
 }
 
-/// Computes point `index` of `plan`.
-pub fn evaluate(plan: &Plan, columns: &Columns, index: usize, progress: &Progress) -> Row {
+/// Computes the scene at the points `indices` of `plan` in parallel (rayon)
+/// and hands each result to `each` (from any thread, as it finishes); returns
+/// what `each` made, in the order of `indices`. Cancelling `progress` stops
+/// starting new points and gives [`SceneError::Cancelled`]. The engine of the
+/// command line's sweeps and the window's families alike.
+pub fn for_points<T: Send>(
+    plan: &Plan,
+    indices: &[usize],
+    progress: &Progress,
+    each: &(dyn Fn(usize, Result<SceneOutput, SceneError>) -> T + Sync),
+) -> Result<Vec<T>, SceneError> {
+    let finished = AtomicUsize::new(0);
+    let made: Vec<Option<T>> = indices
+        .par_iter()
+        .map(|&i| {
+            if progress.cancelled() {
+                return None;
+            }
+            let result = plan.params_at(i).and_then(|p| scene::compute(&p, &progress.quiet_child()));
+            if matches!(result, Err(SceneError::Cancelled)) {
+                return None;
+            }
+            let t = each(i, result);
+            let n = finished.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / indices.len().max(1) as f64);
+            Some(t)
+        })
+        .collect();
+    progress.check()?;
+    made.into_iter().map(|t| t.ok_or(SceneError::Cancelled)).collect()
+}
+
+/// The row of point `index` from its result.
+fn row_of(plan: &Plan, columns: &Columns, index: usize, result: Result<SceneOutput, SceneError>) -> Row {
     let values = plan.point(index);
-    let result = plan.params_at(index).and_then(|p| scene::compute(&p, progress));
     match result {
         Ok(out) => Row {
             index,
@@ -315,9 +346,8 @@ pub fn evaluate(plan: &Plan, columns: &Columns, index: usize, progress: &Progres
     }
 }
 
-/// Computes the points `indices` in parallel, calling `done` with each row as
-/// it finishes (from any thread), and returns the rows in point order.
-/// Cancelling `progress` stops starting new points.
+/// Computes the rows of the points `indices`, calling `done` with each row
+/// as it finishes (from any thread); returns them in point order.
 pub fn run(
     plan: &Plan,
     columns: &Columns,
@@ -325,25 +355,11 @@ pub fn run(
     progress: &Progress,
     done: &(dyn Fn(&Row) + Sync),
 ) -> Result<Vec<Row>, SceneError> {
-    let finished = AtomicUsize::new(0);
-    let rows: Vec<Option<Row>> = indices
-        .par_iter()
-        .map(|&i| {
-            if progress.cancelled() {
-                return None;
-            }
-            let row = evaluate(plan, columns, i, &progress.quiet_child());
-            if row.error.as_deref() == Some(&SceneError::Cancelled.to_string()) {
-                return None;
-            }
-            done(&row);
-            let n = finished.fetch_add(1, Ordering::Relaxed) + 1;
-            progress.set(n as f64 / indices.len().max(1) as f64);
-            Some(row)
-        })
-        .collect();
-    progress.check()?;
-    let mut rows: Vec<Row> = rows.into_iter().flatten().collect();
+    let mut rows = for_points(plan, indices, progress, &|i, result| {
+        let row = row_of(plan, columns, i, result);
+        done(&row);
+        row
+    })?;
     rows.sort_by_key(|r| r.index);
     Ok(rows)
 }

@@ -13,6 +13,7 @@ use crate::figure::{self, View};
 use crate::preset::Preset;
 use crate::scene::{self, ControlKind, SCENES, SceneParams};
 use crate::session::Pin;
+use crate::sweep::{Plan, Spacing, Vary};
 use std::path::Path;
 
 impl AppState {
@@ -338,26 +339,15 @@ impl AppState {
             let controls = p.controls();
             controls.iter().any(|c| c.key == self.sweep.key && matches!(c.kind, ControlKind::Number { log: true, .. }))
         };
-        let values: Vec<f64> = if log && from > 0.0 && to > 0.0 {
-            scene::logspace(from, to, n)
-        } else {
-            (0..n).map(|i| from + (to - from) * i as f64 / (n - 1) as f64).collect()
-        };
-        // Check every value before starting, so a bad range is reported at once.
-        for v in &values {
-            let mut trial = base.clone();
-            if let Err(e) = trial.set(&self.sweep.key, &v.to_string()) {
-                self.error = Some(format!("sweep not started: {e}"));
-                return;
+        let spacing = if log && from > 0.0 && to > 0.0 { Spacing::Log } else { Spacing::Lin };
+        let vary = Vary { key: self.sweep.key.clone(), spacing, from, to, n };
+        // Every value is checked before starting, so a bad range is reported at once.
+        match Plan::new(base, vec![vary]) {
+            Ok(plan) => {
+                fx.push(Effect::Submit(Job::Sweep { plan: Box::new(plan), first_color: self.session.pins.len() + 1 }))
             }
+            Err(e) => self.error = Some(format!("sweep not started: {e}")),
         }
-        let job = Job::Sweep {
-            base: Box::new(base),
-            key: self.sweep.key.clone(),
-            values,
-            first_color: self.session.pins.len() + 1,
-        };
-        fx.push(Effect::Submit(job));
     }
 
     /// Resets every scene's parameters to their defaults (one undo step).

@@ -42,12 +42,8 @@ pub enum Job {
     },
     /// One model curve set per value of parameter `key`, pinned as a family.
     Sweep {
-        /// The parameters the sweep starts from.
-        base: Box<SceneParams>,
-        /// The parameter swept.
-        key: String,
-        /// Its values (SI units).
-        values: Vec<f64>,
+        /// The parameters the sweep starts from and the one parameter varied.
+        plan: Box<crate::sweep::Plan>,
         /// Palette index of the first pin.
         first_color: usize,
     },
@@ -129,35 +125,33 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
             let mut c = caches.lock().map_err(|_| JobError::Cancelled)?;
             Ok(Done::Scene(scene, scene::compute_cached(&params, progress, &mut c)?))
         }
-        Job::Sweep { base, key, values, first_color } => {
-            let mut pins = Vec::new();
-            for (j, v) in values.iter().enumerate() {
-                progress.check()?;
-                progress.set(j as f64 / values.len() as f64);
-                let mut p = (*base).clone();
-                p.set(&key, &v.to_string()).map_err(SceneError::from)?;
-                let out = scene::compute(&p, &progress.quiet_child())?;
-                // Tagged with the swept value, except on figures that colour
-                // their curves by a value of their own (their colour bar stays).
-                let curves = out
-                    .figures
-                    .iter()
-                    .flat_map(|f| {
-                        let own = f.family.is_some();
-                        f.series.iter().filter(|s| s.style == Style::Line).map(move |s| {
-                            let s = if own { Series { family: None, ..(*s).clone() } } else { s.clone().at(*v) };
-                            (f.id.clone(), s)
+        Job::Sweep { plan, first_color } => {
+            let key = &plan.vary[0].key;
+            let pins =
+                crate::sweep::for_points(&plan, &(0..plan.len()).collect::<Vec<_>>(), progress, &|j, result| {
+                    let v = plan.point(j)[0];
+                    let out = result?;
+                    // Tagged with the swept value, except on figures that colour
+                    // their curves by a value of their own (their colour bar stays).
+                    let curves = out
+                        .figures
+                        .iter()
+                        .flat_map(|f| {
+                            let own = f.family.is_some();
+                            f.series.iter().filter(|s| s.style == Style::Line).map(move |s| {
+                                let s = if own { Series { family: None, ..(*s).clone() } } else { s.clone().at(v) };
+                                (f.id.clone(), s)
+                            })
                         })
+                        .collect();
+                    Ok(Pin {
+                        params: plan.params_at(j)?,
+                        label: format!("{key} = {}", figure::tick_label(v)),
+                        curves,
+                        color: first_color + j,
                     })
-                    .collect();
-                pins.push(Pin {
-                    params: p,
-                    label: format!("{key} = {}", figure::tick_label(*v)),
-                    curves,
-                    color: first_color + j,
-                });
-            }
-            Ok(Done::Sweep(pins))
+                })?;
+            Ok(Done::Sweep(pins.into_iter().collect::<Result<Vec<_>, SceneError>>()?))
         }
         Job::Export { figures, stamp, prefix } => {
             let mut files = Vec::new();
@@ -404,9 +398,12 @@ mod tests {
     fn a_cancelled_job_reports_nothing() {
         let mut r = ThreadRunner::new(|| {});
         let base = SceneParams::default_for("hysteresis").expect("scene");
-        r.submit(Job::Sweep { base: Box::new(base), key: "velocity".into(), values: vec![1.0; 200], first_color: 1 });
-        r.cancel(Lane::Compute);
-        assert!(!r.busy(Lane::Compute));
+        let vary = crate::sweep::Vary::parse("velocity=lin:1:2:200").expect("vary");
+        let plan = crate::sweep::Plan::new(base, vec![vary]).expect("plan");
+        r.submit(Job::Sweep { plan: Box::new(plan), first_color: 1 });
+        assert!(r.busy(Lane::Sweep) && !r.busy(Lane::Compute));
+        r.cancel(Lane::Sweep);
+        assert!(!r.busy(Lane::Sweep));
         std::thread::sleep(Duration::from_millis(50));
         assert!(r.poll().is_empty());
     }

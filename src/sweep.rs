@@ -364,6 +364,125 @@ pub fn run(
     Ok(rows)
 }
 
+/// How much one parameter moves a scalar around the current point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Influence {
+    /// The parameter's key.
+    pub key: String,
+    /// Its label.
+    pub label: String,
+    /// Its SI unit.
+    pub unit: String,
+    /// Its current value.
+    pub value: f64,
+    /// ∂ln X/∂ln p at the current value (central differences of ln X in
+    /// ln p); None where X or p is not positive or X is undefined nearby.
+    pub elasticity: Option<f64>,
+    /// Whether the elasticity agrees within 1 % (or 0.01) between steps of
+    /// 1 % and 0.5 % in p: a smooth dependence, not a jump or noise.
+    pub converged: bool,
+    /// X at p / factor and p × factor (clamped to the parameter's range).
+    pub range: [Option<f64>; 2],
+}
+
+/// For every numeric parameter of `base` (style-only ones aside), how
+/// scalar `output` depends on it: the elasticity ∂ln X/∂ln p at the current
+/// point and X over the factor `factor` around it; sorted with the largest
+/// change of X over the range first. Points run in parallel; 7 computations
+/// per parameter.
+pub fn what_matters(
+    base: &SceneParams,
+    output: &str,
+    factor: f64,
+    progress: &Progress,
+) -> Result<(f64, Vec<Influence>), SceneError> {
+    let factor = if factor.is_finite() && factor > 1.0 { factor } else { 2.0 };
+    let x0 = scene::compute(base, progress)?.scalar(output).ok_or_else(|| {
+        crate::physics::PhysicsError::Invalid(format!("{} reports no scalar '{output}'", base.info().id))
+    })?;
+    struct Knob {
+        key: &'static str,
+        label: &'static str,
+        unit: &'static str,
+        value: f64,
+        min: f64,
+        max: f64,
+    }
+    let mut probe = base.clone();
+    let knobs: Vec<Knob> = probe
+        .controls()
+        .iter()
+        .filter(|c| !c.style_only)
+        .filter_map(|c| match &c.kind {
+            ControlKind::Number { value, min, max, .. } if **value > 0.0 => {
+                Some(Knob { key: c.key, label: c.label, unit: c.si_unit, value: **value, min: *min, max: *max })
+            }
+            _ => None,
+        })
+        .collect();
+    // Per parameter: ln p ± h and ± h/2 (h = ln 1.01), then p / factor and p × factor.
+    let h = 1.01_f64.ln();
+    let offsets = [-h, h, -h / 2.0, h / 2.0, -factor.ln(), factor.ln()];
+    let jobs: Vec<(usize, usize)> = (0..knobs.len()).flat_map(|k| (0..offsets.len()).map(move |j| (k, j))).collect();
+    let done = AtomicUsize::new(0);
+    let results: Vec<Option<f64>> = jobs
+        .par_iter()
+        .map(|&(k, j)| {
+            if progress.cancelled() {
+                return None;
+            }
+            let knob = &knobs[k];
+            let v = (knob.value * offsets[j].exp()).clamp(knob.min, knob.max);
+            let mut p = base.clone();
+            let x = p.set(knob.key, &v.to_string()).ok().and_then(|_| {
+                scene::compute(&p, &progress.quiet_child())
+                    .ok()
+                    .and_then(|o| o.scalar(output))
+                    .filter(|x| x.is_finite())
+            });
+            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+            progress.set(n as f64 / jobs.len().max(1) as f64);
+            x
+        })
+        .collect();
+    progress.check()?;
+    let mut out: Vec<Influence> = knobs
+        .iter()
+        .enumerate()
+        .map(|(k, knob)| {
+            let r = &results[k * offsets.len()..(k + 1) * offsets.len()];
+            let slope = |lo: Option<f64>, hi: Option<f64>, step: f64| match (lo, hi) {
+                (Some(a), Some(b)) if a > 0.0 && b > 0.0 && x0 > 0.0 => Some((b.ln() - a.ln()) / (2.0 * step)),
+                _ => None,
+            };
+            // A parameter at the end of its range moves less than asked: no elasticity there.
+            let inside = knob.value * h.exp() <= knob.max && knob.value * (-h).exp() >= knob.min;
+            let coarse = slope(r[0], r[1], h).filter(|_| inside);
+            let fine = slope(r[2], r[3], h / 2.0).filter(|_| inside);
+            let converged = match (coarse, fine) {
+                (Some(a), Some(b)) => (a - b).abs() <= 0.01 * b.abs().max(1.0),
+                _ => false,
+            };
+            Influence {
+                key: knob.key.to_string(),
+                label: knob.label.to_string(),
+                unit: knob.unit.to_string(),
+                value: knob.value,
+                elasticity: fine.or(coarse),
+                converged,
+                range: [r[4], r[5]],
+            }
+        })
+        .collect();
+    let spread = |i: &Influence| {
+        let xs = [i.range[0], Some(x0), i.range[1]];
+        let xs: Vec<f64> = xs.iter().flatten().copied().collect();
+        xs.iter().copied().fold(f64::NEG_INFINITY, f64::max) - xs.iter().copied().fold(f64::INFINITY, f64::min)
+    };
+    out.sort_by(|a, b| spread(b).total_cmp(&spread(a)));
+    Ok((x0, out))
+}
+
 /// A number as the table writes it: the shortest text that reads back to
 /// the same value.
 fn number(v: f64) -> String {
@@ -547,6 +666,27 @@ mod tests {
         // A line cut short by a crash is skipped, not misread.
         let cut = &text[..text.len() - 5];
         assert_eq!(read_rows(cut, &p, &columns).expect("reads"), rows[..1]);
+    }
+
+    #[test]
+    fn what_matters_finds_the_jkr_exponents() {
+        // v_c = (14.18/m*)^{1/2} (γ⁵R⁴/E*²)^{1/6} (2.25): ∂ln v_c/∂ln γ = 5/6,
+        // and the relaxation time does not enter.
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let (v_c, rows) = what_matters(&base, "v_c", 2.0, &Progress::default()).expect("computes");
+        assert!(v_c > 0.0);
+        let row = |k: &str| rows.iter().find(|r| r.key == k).expect(k).clone();
+        let gamma = row("surface_energy");
+        assert!(gamma.converged);
+        assert!((gamma.elasticity.expect("defined") - 5.0 / 6.0).abs() < 1e-6, "{gamma:?}");
+        // Over a factor 2: v_c × 2^{±5/6}.
+        let [lo, hi] = gamma.range;
+        assert!((lo.expect("low") / v_c - 2f64.powf(-5.0 / 6.0)).abs() < 1e-9);
+        assert!((hi.expect("high") / v_c - 2f64.powf(5.0 / 6.0)).abs() < 1e-9);
+        assert_eq!(row("t_vis").elasticity, Some(0.0));
+        // Sorted by the change over the range: a parameter v_c ignores comes last.
+        assert!(rows.iter().position(|r| r.key == "surface_energy") < rows.iter().position(|r| r.key == "t_vis"));
+        assert!(what_matters(&base, "no_such_scalar", 2.0, &Progress::default()).is_err());
     }
 
     #[test]

@@ -164,3 +164,34 @@ fn a_family_draws_over_its_scene_in_the_window_and_in_lecture_mode() {
     );
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+#[test]
+fn what_matters_for_the_sticking_velocity() {
+    use grainscope::app::command::Command;
+    let Some(mut h) = harness(1024.0, 768.0) else { return };
+    let mut failures = Vec::new();
+    for lecture in [false, true] {
+        {
+            let app = h.state_mut();
+            app.state.session.scene = "hysteresis".into();
+            app.state.session.params.insert("hysteresis".into(), snapshot_params("hysteresis"));
+            app.state.session.lecture = lecture;
+            app.state.session.light = false;
+        }
+        settle(&mut h, "what matters");
+        h.state_mut().apply(Command::SetMatters("v_c".into(), 2.0));
+        h.state_mut().apply(Command::WhatMatters);
+        let start = Instant::now();
+        while h.state().state.matters.result.is_none() {
+            assert!(start.elapsed() < PATIENCE, "no answer after {PATIENCE:?}");
+            std::thread::sleep(Duration::from_millis(20));
+            h.run_steps(1);
+        }
+        settle(&mut h, "what matters");
+        let name = format!("matters-1024x768/hysteresis-v_c{}", if lecture { "-lecture" } else { "" });
+        failures
+            .extend(h.try_snapshot_options(&name, &SnapshotOptions::default()).err().map(|e| format!("{name}: {e}")));
+        h.state_mut().apply(Command::CloseMatters);
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

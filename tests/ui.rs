@@ -651,3 +651,25 @@ fn draw_family_survives_a_heavy_scenes_own_computation() {
         }
     }
 }
+
+#[test]
+fn what_matters_ranks_the_parameters_of_the_jkr_sticking_velocity() {
+    let mut h = harness();
+    h.run();
+    h.state_mut().apply(Command::SetMatters("v_c".into(), 2.0));
+    h.get_by_label("What matters").click();
+    let start = std::time::Instant::now();
+    while h.state().state.matters.result.is_none() && start.elapsed() < std::time::Duration::from_secs(60) {
+        h.step();
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
+    h.run_steps(2);
+    let s = &h.state().state;
+    let (_, v_c, rows) = s.matters.result.as_ref().expect("a result");
+    assert!(*v_c > 0.0);
+    // v_c ∝ γ^{5/6} (2.25).
+    let gamma = rows.iter().find(|r| r.key == "surface_energy").expect("γ");
+    assert!((gamma.elasticity.expect("defined") - 5.0 / 6.0).abs() < 1e-6);
+    h.get_by_label_contains("What moves JKR sticking velocity");
+    h.get_by_label("+0.833");
+}

@@ -106,6 +106,23 @@ impl AppState {
             }
             Command::SetSweep(s) => self.sweep = s,
             Command::DrawFamily => self.draw_family(&mut fx),
+            Command::SetMatters(output, factor) => {
+                self.matters.output = output;
+                self.matters.factor = factor;
+            }
+            Command::WhatMatters => {
+                if self.matters.output.is_empty() {
+                    self.error = Some("choose the result whose dependence to show".into());
+                } else {
+                    self.matters.open = true;
+                    fx.push(Effect::Submit(Job::WhatMatters {
+                        base: Box::new(self.params().clone()),
+                        output: self.matters.output.clone(),
+                        factor: self.matters.factor,
+                    }));
+                }
+            }
+            Command::CloseMatters => self.matters.open = false,
             Command::ResetAll => self.reset_all(),
             Command::SetLight(on) => self.session.light = on,
             Command::SetLecture(on) => self.session.lecture = on,

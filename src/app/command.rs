@@ -150,6 +150,12 @@ pub enum Command {
     SetSweep(Sweep),
     /// Draw a family over the sweep's values.
     DrawFamily,
+    /// The scalar and factor of the "what matters" view.
+    SetMatters(String, f64),
+    /// Compute what matters for the open scene's scalar, and show it.
+    WhatMatters,
+    /// Close the "what matters" view.
+    CloseMatters,
     /// Reset every scene's parameters.
     ResetAll,
     /// Light theme on or off.

@@ -39,7 +39,7 @@ impl GrainscopeApp {
                 match &job {
                     Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
                     Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
-                    Job::Sweep { .. } | Job::Scene { .. } => {}
+                    Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Scene { .. } => {}
                 }
                 self.runner.submit(job);
             }
@@ -84,9 +84,14 @@ impl GrainscopeApp {
                     self.state.status = format!("swept {} values", pins.len());
                     self.state.session.pins.extend(pins);
                 }
+                Ok(Done::Matters(base, x0, rows)) => {
+                    self.state.status =
+                        format!("what matters for {}: {} parameters", self.state.matters.output, rows.len());
+                    self.state.matters.result = Some((*base, x0, rows));
+                }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
                 Err(e) if finished.lane == Lane::Sweep => {
-                    self.state.error = Some(format!("family not drawn: {e}"));
+                    self.state.error = Some(format!("not computed: {e}"));
                 }
                 Err(e) if finished.lane == Lane::Compute => {
                     self.computing.stale = false;

@@ -47,6 +47,15 @@ pub enum Job {
         /// Palette index of the first pin.
         first_color: usize,
     },
+    /// Every parameter's influence on scalar `output` around `base`.
+    WhatMatters {
+        /// The parameters.
+        base: Box<SceneParams>,
+        /// The scalar's key.
+        output: String,
+        /// The factor around each parameter's value.
+        factor: f64,
+    },
     /// Figures rendered as PNG, SVG and CSV files carrying the state.
     Export {
         /// The figures as drawn.
@@ -70,7 +79,7 @@ impl Job {
     pub fn lane(&self) -> Lane {
         match self {
             Job::Scene { .. } => Lane::Compute,
-            Job::Sweep { .. } => Lane::Sweep,
+            Job::Sweep { .. } | Job::WhatMatters { .. } => Lane::Sweep,
             Job::Export { .. } => Lane::Export,
             Job::Movie { .. } => Lane::Movie,
         }
@@ -84,6 +93,8 @@ pub enum Done {
     Scene(usize, SceneOutput),
     /// A sweep's pins.
     Sweep(Vec<Pin>),
+    /// What matters: the parameters, X there, and each parameter's influence.
+    Matters(Box<SceneParams>, f64, Vec<crate::sweep::Influence>),
     /// Files to write: what they are ("export", "movie"), and (name, bytes).
     Files(&'static str, Vec<(String, Vec<u8>)>),
 }
@@ -152,6 +163,10 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
                     })
                 })?;
             Ok(Done::Sweep(pins.into_iter().collect::<Result<Vec<_>, SceneError>>()?))
+        }
+        Job::WhatMatters { base, output, factor } => {
+            let (x0, rows) = crate::sweep::what_matters(&base, &output, factor, progress)?;
+            Ok(Done::Matters(base, x0, rows))
         }
         Job::Export { figures, stamp, prefix } => {
             let mut files = Vec::new();

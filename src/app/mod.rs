@@ -253,6 +253,7 @@ impl GrainscopeApp {
             ui::deck_editor::window(&ctx, cx);
             ui::presenter::notes_window(&ctx, cx);
             ui::inspector::window(&ctx, cx);
+            ui::matters::window(&ctx, cx);
             ui::help::overlay(&ctx, cx);
         });
         // A whole slider drag is one step of the history.

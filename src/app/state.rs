@@ -133,6 +133,26 @@ pub enum Effect {
     Pause(bool),
 }
 
+/// The "what matters" view: which scalar, over which factor, and the last
+/// answer (for the scene and parameters it was computed at).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Matters {
+    /// The scalar's key.
+    pub output: String,
+    /// The factor around each parameter's value.
+    pub factor: f64,
+    /// Whether the view is shown.
+    pub open: bool,
+    /// The answer: the parameters it holds for, X there, and each parameter's influence.
+    pub result: Option<(SceneParams, f64, Vec<crate::sweep::Influence>)>,
+}
+
+impl Default for Matters {
+    fn default() -> Self {
+        Matters { output: String::new(), factor: 2.0, open: false, result: None }
+    }
+}
+
 /// Everything that defines what the user sees.
 #[derive(Debug)]
 pub struct AppState {
@@ -152,6 +172,8 @@ pub struct AppState {
     pub control_notice: Option<(String, String)>,
     /// The family tool's settings.
     pub sweep: Sweep,
+    /// The "what matters" view: its settings and last result.
+    pub matters: Matters,
     /// Axes kept fixed while parameters change, by figure id (when locked).
     pub locked: Option<HashMap<String, View>>,
     /// Whether the parameter panel is open over the plots in lecture mode.
@@ -198,6 +220,7 @@ impl AppState {
             notices: Vec::new(),
             control_notice: None,
             sweep: Sweep::default(),
+            matters: Matters::default(),
             locked: None,
             lecture_params: false,
             playback: Playback::default(),

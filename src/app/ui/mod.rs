@@ -8,6 +8,7 @@ pub mod figures;
 pub mod help;
 pub mod inspector;
 pub mod look;
+pub mod matters;
 pub mod monomer_card;
 pub mod plot;
 pub mod presenter;

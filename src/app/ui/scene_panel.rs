@@ -154,4 +154,42 @@ fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     if ui.button("Draw family").clicked() {
         cx.send(Command::DrawFamily);
     }
+    what_matters(ui, cx);
+}
+
+/// The "what matters" tool: a result of the scene and a factor.
+fn what_matters(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let scalars: Vec<(&'static str, &'static str)> =
+        cx.state.output().map(|o| o.scalars.iter().map(|s| (s.key, s.label)).collect()).unwrap_or_default();
+    if scalars.is_empty() {
+        return;
+    }
+    ui.add_space(4.0);
+    let mut output = cx.state.matters.output.clone();
+    if !scalars.iter().any(|s| s.0 == output) {
+        output = scalars[0].0.to_string();
+    }
+    let mut factor = cx.state.matters.factor;
+    ui.horizontal(|ui| {
+        let current = scalars.iter().find(|s| s.0 == output).map_or("", |s| s.1);
+        egui::ComboBox::from_label("result").selected_text(current).width(180.0).show_ui(ui, |ui| {
+            for (k, l) in &scalars {
+                ui.selectable_value(&mut output, k.to_string(), *l);
+            }
+        });
+    });
+    ui.horizontal(|ui| {
+        ui.add(egui::DragValue::new(&mut factor).range(1.1..=10.0).speed(0.05).prefix("each parameter ×÷ "));
+        if ui
+            .button("What matters")
+            .on_hover_text("every parameter's elasticity ∂ln X/∂ln p here, and X over the factor around it")
+            .clicked()
+        {
+            cx.send(Command::SetMatters(output.clone(), factor));
+            cx.send(Command::WhatMatters);
+        }
+    });
+    if output != cx.state.matters.output || factor != cx.state.matters.factor {
+        cx.send(Command::SetMatters(output, factor));
+    }
 }

@@ -68,6 +68,24 @@ pub enum Command {
         #[arg(long, value_name = "DIR")]
         out: PathBuf,
     },
+    /// What matters for one scalar: every numeric parameter's elasticity
+    /// ∂ln X/∂ln p at the preset's point and X over a factor around it, sorted.
+    Matters {
+        /// Preset file, shipped preset name or exported figure.
+        preset: String,
+        /// The scalar (a key of `run --json`).
+        #[arg(long, value_name = "KEY")]
+        output: String,
+        /// Each parameter divided and multiplied by this factor (> 1).
+        #[arg(long, default_value_t = 2.0)]
+        factor: f64,
+        /// Override a parameter by its documented key, e.g. `--set velocity=4`.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Print one JSON object instead of a table.
+        #[arg(long)]
+        json: bool,
+    },
     /// Merge the folders of a sharded sweep into the files of the whole run.
     SweepMerge {
         /// The shards' output folders.
@@ -252,6 +270,43 @@ pub fn run(command: Command) -> Result<()> {
                 s.failed,
                 s.files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
             ))
+        }
+        Command::Matters { preset, output, factor, set, json } => {
+            let mut p = resolve(&preset)?;
+            apply_sets(&mut p, &set)?;
+            if !(factor.is_finite() && factor > 1.0) {
+                bail!("--factor {factor}: expected a number above 1");
+            }
+            let (x0, rows) = crate::sweep::what_matters(&p.scene, &output, factor, &Progress::default())?;
+            if json {
+                let rows: Vec<serde_json::Value> = rows
+                    .iter()
+                    .map(|r| {
+                        serde_json::json!({"key": r.key, "unit": r.unit, "value": r.value, "elasticity": r.elasticity,
+                            "converged": r.converged, "low": r.range[0], "high": r.range[1]})
+                    })
+                    .collect();
+                return say(serde_json::json!({"output": output, "value": x0, "factor": factor, "parameters": rows}));
+            }
+            say(format_args!("{output} = {x0}; each parameter divided and multiplied by {factor}"))?;
+            say(format_args!(
+                "{:<26} {:>12} {:>11} {:>12} {:>12}",
+                "parameter", "value", "elasticity", "X at p/f", "X at p*f"
+            ))?;
+            let num = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.5e}"));
+            for r in &rows {
+                let e =
+                    r.elasticity.map_or("-".to_string(), |e| format!("{e:+.4}{}", if r.converged { "" } else { "?" }));
+                say(format_args!(
+                    "{:<26} {:>12} {:>11} {:>12} {:>12}",
+                    r.key,
+                    format!("{:.4e}", r.value),
+                    e,
+                    num(r.range[0]),
+                    num(r.range[1])
+                ))?;
+            }
+            Ok(())
         }
         Command::SweepMerge { shards, out } => {
             let files = crate::sweep_files::merge(&shards, &out)?;

@@ -326,3 +326,18 @@ fn a_sweep_resumes_and_its_shards_merge_into_the_same_bytes() {
     let bad = grainscope(&["sweep", "ice-bounce-8ms", "--vary", "speed=lin:2:20:4", "--out", &d("bad")]);
     assert!(String::from_utf8_lossy(&bad.stderr).contains("no parameter 'speed'"));
 }
+
+#[test]
+fn matters_reports_the_jkr_exponent_of_the_sticking_velocity() {
+    let out = grainscope(&["matters", "ice-bounce-8ms", "--output", "v_c", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    let first = &v["parameters"][0];
+    assert_eq!(first["key"], "surface_energy");
+    assert!((first["elasticity"].as_f64().expect("number") - 5.0 / 6.0).abs() < 1e-6, "{first}");
+    let bad = grainscope(&["matters", "ice-bounce-8ms", "--output", "nothing"]);
+    assert!(!bad.status.success());
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("no scalar 'nothing'"));
+    let bad = grainscope(&["matters", "ice-bounce-8ms", "--output", "v_c", "--factor", "0.5"]);
+    assert!(!bad.status.success());
+}

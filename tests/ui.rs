@@ -673,3 +673,34 @@ fn what_matters_ranks_the_parameters_of_the_jkr_sticking_velocity() {
     h.get_by_label_contains("What moves JKR sticking velocity");
     h.get_by_label("+0.833");
 }
+
+#[test]
+fn what_matters_in_a_heavy_scene_answers_coarsely_first() {
+    let mut h = harness();
+    h.run();
+    let i = grainscope::scene::SCENES.iter().position(|s| s.id == "formation-zone").expect("scene");
+    h.state_mut().apply(Command::OpenScene(i));
+    // Two disks instead of thirty, so that the test stays short.
+    let mut p = h.state().params().clone();
+    for (k, v) in [("n_mass", "2"), ("n_z", "1")] {
+        p.set(k, v).expect("a documented key");
+    }
+    h.state_mut().apply(Command::SetParams(Box::new(p)));
+    h.state_mut().apply(Command::SetMatters("widest_zone".into(), 2.0));
+    h.state_mut().apply(Command::WhatMatters);
+    let start = std::time::Instant::now();
+    while h.state().state.matters.result.is_none() && start.elapsed() < std::time::Duration::from_secs(120) {
+        h.step();
+        std::thread::sleep(std::time::Duration::from_millis(20));
+    }
+    h.run_steps(2);
+    eprintln!("coarse answer after {:?}", start.elapsed());
+    let s = &h.state().state;
+    assert!(s.matters.coarse, "the first answer of a heavy scene is the coarse one");
+    let (at, _, rows) = s.matters.result.as_ref().expect("a coarse answer");
+    assert_eq!(at, h.state().params(), "the answer belongs to the open parameters");
+    assert!(rows.iter().any(|r| r.key == "alpha"));
+    assert!(h.query_all_by_label_contains("coarse first answer").next().is_some());
+    // The full pass runs on; closing the view leaves it be.
+    assert!(h.state().busy());
+}

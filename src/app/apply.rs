@@ -115,10 +115,13 @@ impl AppState {
                     self.error = Some("choose the result whose dependence to show".into());
                 } else {
                     self.matters.open = true;
+                    // A heavy scene answers first with its coarse parameters.
+                    let coarse = SCENES[self.index()].heavy && self.params().coarse().is_some();
                     fx.push(Effect::Submit(Job::WhatMatters {
                         base: Box::new(self.params().clone()),
                         output: self.matters.output.clone(),
                         factor: self.matters.factor,
+                        coarse,
                     }));
                 }
             }

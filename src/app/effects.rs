@@ -84,10 +84,19 @@ impl GrainscopeApp {
                     self.state.status = format!("swept {} values", pins.len());
                     self.state.session.pins.extend(pins);
                 }
-                Ok(Done::Matters(base, x0, rows)) => {
-                    self.state.status =
-                        format!("what matters for {}: {} parameters", self.state.matters.output, rows.len());
-                    self.state.matters.result = Some((*base, x0, rows));
+                Ok(Done::Matters(base, x0, rows, coarse)) => {
+                    let m = &mut self.state.matters;
+                    self.state.status = if coarse {
+                        format!("what matters for {}: a coarse first answer; computing the full one", m.output)
+                    } else {
+                        format!("what matters for {}: {} parameters", m.output, rows.len())
+                    };
+                    m.coarse = coarse;
+                    let (output, factor) = (m.output.clone(), m.factor);
+                    m.result = Some(((*base).clone(), x0, rows));
+                    if coarse {
+                        self.carry_out(Effect::Submit(Job::WhatMatters { base, output, factor, coarse: false }));
+                    }
                 }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
                 Err(e) if finished.lane == Lane::Sweep => {

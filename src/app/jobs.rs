@@ -55,6 +55,8 @@ pub enum Job {
         output: String,
         /// The factor around each parameter's value.
         factor: f64,
+        /// Whether to answer with the scene's coarse parameters (a first pass).
+        coarse: bool,
     },
     /// Figures rendered as PNG, SVG and CSV files carrying the state.
     Export {
@@ -93,8 +95,9 @@ pub enum Done {
     Scene(usize, SceneOutput),
     /// A sweep's pins.
     Sweep(Vec<Pin>),
-    /// What matters: the parameters, X there, and each parameter's influence.
-    Matters(Box<SceneParams>, f64, Vec<crate::sweep::Influence>),
+    /// What matters: the parameters, X there, each parameter's influence,
+    /// and whether it is the coarse first pass.
+    Matters(Box<SceneParams>, f64, Vec<crate::sweep::Influence>, bool),
     /// Files to write: what they are ("export", "movie"), and (name, bytes).
     Files(&'static str, Vec<(String, Vec<u8>)>),
 }
@@ -164,9 +167,10 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
                 })?;
             Ok(Done::Sweep(pins.into_iter().collect::<Result<Vec<_>, SceneError>>()?))
         }
-        Job::WhatMatters { base, output, factor } => {
-            let (x0, rows) = crate::sweep::what_matters(&base, &output, factor, progress)?;
-            Ok(Done::Matters(base, x0, rows))
+        Job::WhatMatters { base, output, factor, coarse } => {
+            let at = if coarse { base.coarse().unwrap_or_else(|| (*base).clone()) } else { (*base).clone() };
+            let (x0, rows) = crate::sweep::what_matters(&at, &output, factor, progress)?;
+            Ok(Done::Matters(base, x0, rows, coarse))
         }
         Job::Export { figures, stamp, prefix } => {
             let mut files = Vec::new();

@@ -145,11 +145,14 @@ pub struct Matters {
     pub open: bool,
     /// The answer: the parameters it holds for, X there, and each parameter's influence.
     pub result: Option<(SceneParams, f64, Vec<crate::sweep::Influence>)>,
+    /// Whether the answer is the coarse first pass of a heavy scene (its
+    /// cheaper parameters), with the full one still to come.
+    pub coarse: bool,
 }
 
 impl Default for Matters {
     fn default() -> Self {
-        Matters { output: String::new(), factor: 2.0, open: false, result: None }
+        Matters { output: String::new(), factor: 2.0, open: false, result: None, coarse: false }
     }
 }
 

@@ -49,6 +49,16 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                 egui::RichText::new(format!("here {} {unit}; each parameter ×÷ {}", human(*x0), human(factor)))
                     .size(text),
             );
+            if m.coarse {
+                ui.colored_label(
+                    ui.visuals().warn_fg_color,
+                    egui::RichText::new(format!(
+                        "coarse first answer (the scene's quick preview settings); the full one is {:.0} % computed",
+                        100.0 * cx.work.progress
+                    ))
+                    .size(text),
+                );
+            }
             chart(ui, rows, *x0, text);
             ui.small(
                 "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \

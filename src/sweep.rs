@@ -483,6 +483,66 @@ pub fn what_matters(
     Ok((x0, out))
 }
 
+/// Scalar `output` against parameter `key` over its whole documented range
+/// (`n` points, log-spaced where the control is logarithmic), as a figure:
+/// the curve (broken where the scalar is undefined), the current value
+/// marked. Points run in parallel.
+pub fn curve(
+    base: &SceneParams,
+    output: &str,
+    key: &str,
+    n: usize,
+    progress: &Progress,
+) -> Result<crate::figure::Figure, SceneError> {
+    use crate::figure::{Axis, Figure, Series, Style};
+    let mut probe = base.clone();
+    let (label, unit, value, min, max, log) = probe
+        .controls()
+        .iter()
+        .find_map(|c| match &c.kind {
+            ControlKind::Number { value, min, max, log, .. } if c.key == key => {
+                Some((c.label, c.si_unit, **value, *min, *max, *log))
+            }
+            _ => None,
+        })
+        .ok_or_else(|| crate::physics::PhysicsError::Invalid(format!("no numeric parameter '{key}'")))?;
+    if !(min.is_finite() && max.is_finite()) {
+        return Err(crate::physics::PhysicsError::Invalid(format!("'{key}' has no finite range to draw")).into());
+    }
+    let log = log && min > 0.0;
+    let spacing = if log { Spacing::Log } else { Spacing::Lin };
+    let plan = Plan::new(base.clone(), vec![Vary { key: key.to_string(), spacing, from: min, to: max, n: n.max(2) }])
+        .map_err(|e| crate::physics::PhysicsError::Invalid(e.to_string()))?;
+    let indices: Vec<usize> = (0..plan.len()).collect();
+    let xs = for_points(&plan, &indices, progress, &|i, r| {
+        (plan.point(i)[0], r.ok().and_then(|o| o.scalar(output)).filter(|x| x.is_finite()))
+    })?;
+    let here = scene::compute(base, progress)?;
+    let (y_label, y_unit, y0) = here
+        .scalars
+        .iter()
+        .find(|s| s.key == output)
+        .map(|s| (s.label, s.unit, s.value))
+        .ok_or_else(|| crate::physics::PhysicsError::Invalid(format!("no scalar '{output}'")))?;
+    let positive = xs.iter().filter_map(|p| p.1).all(|y| y > 0.0) && y0 > 0.0;
+    let x_axis = if log { Axis::log(label, unit) } else { Axis::linear(label, unit) };
+    let y_axis = if positive { Axis::log(y_label, y_unit) } else { Axis::linear(y_label, y_unit) };
+    let mut fig = Figure::new("sensitivity", &format!("{y_label} against {label}"), x_axis, y_axis);
+    let mut pieces: Vec<Vec<[f64; 2]>> = vec![Vec::new()];
+    for (x, y) in xs {
+        match y {
+            Some(y) => pieces.last_mut().into_iter().for_each(|p| p.push([x, y])),
+            None if pieces.last().is_some_and(|p| !p.is_empty()) => pieces.push(Vec::new()),
+            None => {}
+        }
+    }
+    for (j, piece) in pieces.into_iter().filter(|p| !p.is_empty()).enumerate() {
+        let style = if piece.len() == 1 { Style::Points } else { Style::Line };
+        fig = fig.with(Series::new(if j == 0 { output } else { "" }, piece, style, 0));
+    }
+    Ok(fig.with(Series::new("current value", vec![[value, y0]], Style::Marker, 1)))
+}
+
 /// A number as the table writes it: the shortest text that reads back to
 /// the same value.
 fn number(v: f64) -> String {
@@ -687,6 +747,20 @@ mod tests {
         // Sorted by the change over the range: a parameter v_c ignores comes last.
         assert!(rows.iter().position(|r| r.key == "surface_energy") < rows.iter().position(|r| r.key == "t_vis"));
         assert!(what_matters(&base, "no_such_scalar", 2.0, &Progress::default()).is_err());
+    }
+
+    #[test]
+    fn a_curve_spans_the_range_and_marks_the_current_value() {
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let fig = curve(&base, "v_c", "surface_energy", 20, &Progress::default()).expect("computes");
+        let line = &fig.series[0];
+        assert_eq!(line.points.len(), 20);
+        // v_c ∝ γ^{5/6} along the whole range.
+        let [a, b] = [line.points[0], line.points[19]];
+        assert!(((b[1] / a[1]).ln() / (b[0] / a[0]).ln() - 5.0 / 6.0).abs() < 1e-9);
+        let marker = fig.series.last().expect("marker");
+        assert_eq!(marker.points[0][0], 0.74);
+        assert!(curve(&base, "v_c", "projectile", 20, &Progress::default()).is_err());
     }
 
     #[test]

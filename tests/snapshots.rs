@@ -187,6 +187,13 @@ fn what_matters_for_the_sticking_velocity() {
             std::thread::sleep(Duration::from_millis(20));
             h.run_steps(1);
         }
+        // The sticking velocity against γ over its whole range.
+        h.state_mut().apply(Command::MattersCurve("surface_energy".into()));
+        while h.state().state.matters.curve.is_none() {
+            assert!(start.elapsed() < PATIENCE, "no curve after {PATIENCE:?}");
+            std::thread::sleep(Duration::from_millis(20));
+            h.run_steps(1);
+        }
         settle(&mut h, "what matters");
         let name = format!("matters-1024x768/hysteresis-v_c{}", if lecture { "-lecture" } else { "" });
         failures

@@ -126,6 +126,14 @@ impl AppState {
                 }
             }
             Command::CloseMatters => self.matters.open = false,
+            Command::MattersCurve(key) => {
+                self.matters.curve = None;
+                fx.push(Effect::Submit(Job::Curve {
+                    base: Box::new(self.params().clone()),
+                    output: self.matters.output.clone(),
+                    key,
+                }));
+            }
             Command::ResetAll => self.reset_all(),
             Command::SetLight(on) => self.session.light = on,
             Command::SetLecture(on) => self.session.lecture = on,

@@ -156,6 +156,8 @@ pub enum Command {
     WhatMatters,
     /// Close the "what matters" view.
     CloseMatters,
+    /// Draw the "what matters" result against parameter `key` over its range.
+    MattersCurve(String),
     /// Reset every scene's parameters.
     ResetAll,
     /// Light theme on or off.

@@ -39,7 +39,7 @@ impl GrainscopeApp {
                 match &job {
                     Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
                     Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
-                    Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Scene { .. } => {}
+                    Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Curve { .. } | Job::Scene { .. } => {}
                 }
                 self.runner.submit(job);
             }
@@ -97,6 +97,10 @@ impl GrainscopeApp {
                     if coarse {
                         self.carry_out(Effect::Submit(Job::WhatMatters { base, output, factor, coarse: false }));
                     }
+                }
+                Ok(Done::Curve(base, fig)) => {
+                    self.state.status = format!("drew {}", fig.title);
+                    self.state.matters.curve = Some((*base, *fig));
                 }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
                 Err(e) if finished.lane == Lane::Sweep => {

@@ -58,6 +58,15 @@ pub enum Job {
         /// Whether to answer with the scene's coarse parameters (a first pass).
         coarse: bool,
     },
+    /// Scalar `output` against parameter `key` over its range.
+    Curve {
+        /// The parameters.
+        base: Box<SceneParams>,
+        /// The scalar's key.
+        output: String,
+        /// The parameter's key.
+        key: String,
+    },
     /// Figures rendered as PNG, SVG and CSV files carrying the state.
     Export {
         /// The figures as drawn.
@@ -81,7 +90,7 @@ impl Job {
     pub fn lane(&self) -> Lane {
         match self {
             Job::Scene { .. } => Lane::Compute,
-            Job::Sweep { .. } | Job::WhatMatters { .. } => Lane::Sweep,
+            Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Curve { .. } => Lane::Sweep,
             Job::Export { .. } => Lane::Export,
             Job::Movie { .. } => Lane::Movie,
         }
@@ -95,6 +104,8 @@ pub enum Done {
     Scene(usize, SceneOutput),
     /// A sweep's pins.
     Sweep(Vec<Pin>),
+    /// A curve of a scalar against a parameter, for the parameters given.
+    Curve(Box<SceneParams>, Box<Figure>),
     /// What matters: the parameters, X there, each parameter's influence,
     /// and whether it is the coarse first pass.
     Matters(Box<SceneParams>, f64, Vec<crate::sweep::Influence>, bool),
@@ -171,6 +182,10 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
             let at = if coarse { base.coarse().unwrap_or_else(|| (*base).clone()) } else { (*base).clone() };
             let (x0, rows) = crate::sweep::what_matters(&at, &output, factor, progress)?;
             Ok(Done::Matters(base, x0, rows, coarse))
+        }
+        Job::Curve { base, output, key } => {
+            let fig = crate::sweep::curve(&base, &output, &key, 50, progress)?;
+            Ok(Done::Curve(base, Box::new(fig)))
         }
         Job::Export { figures, stamp, prefix } => {
             let mut files = Vec::new();

@@ -148,11 +148,13 @@ pub struct Matters {
     /// Whether the answer is the coarse first pass of a heavy scene (its
     /// cheaper parameters), with the full one still to come.
     pub coarse: bool,
+    /// The result against one parameter over its whole range (parameters, figure).
+    pub curve: Option<(SceneParams, crate::figure::Figure)>,
 }
 
 impl Default for Matters {
     fn default() -> Self {
-        Matters { output: String::new(), factor: 2.0, open: false, result: None, coarse: false }
+        Matters { output: String::new(), factor: 2.0, open: false, result: None, coarse: false, curve: None }
     }
 }
 

@@ -27,9 +27,11 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
         .map_or(key.clone(), |s| format!("{} ({key})", s.label));
     let unit = cx.state.output().and_then(|o| o.scalars.iter().find(|s| s.key == key)).map_or("", |s| s.unit);
     let mut open = true;
+    let mut clicked: Option<String> = None;
     egui::Window::new("What matters")
         .open(&mut open)
         .default_width(620.0)
+        .default_height(0.85 * ctx.content_rect().height())
         .collapsible(true)
         .resizable(true)
         .vscroll(true)
@@ -59,20 +61,37 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                     .size(text),
                 );
             }
-            chart(ui, rows, *x0, text);
+            if let Some(key) = chart(ui, rows, *x0, text) {
+                clicked = Some(key);
+            }
+            if let Some((at, fig)) = &m.curve {
+                ui.separator();
+                if at != cx.state.params() {
+                    ui.colored_label(ui.visuals().warn_fg_color, "drawn for earlier parameters");
+                }
+                let look = super::look::plot_look(ui, lecture);
+                let size = egui::vec2(ui.available_width().max(300.0), if lecture { 250.0 } else { 240.0 });
+                super::plot::show(ui, fig, &super::plot::Overlay::default(), size, false, look, None);
+            }
             ui.small(
                 "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \
                  noise); bars: X with the parameter divided (blue) and multiplied (orange) by the factor, \
-                 within its range, on a log scale of X/X₀; sorted by the change of X",
+                 within its range, on a log scale of X/X₀; sorted by the change of X. Click a parameter to draw X \
+                 against it over its whole range.",
             );
         });
     if !open {
         cx.send(Command::CloseMatters);
     }
+    if let Some(key) = clicked {
+        cx.send(Command::MattersCurve(key));
+    }
 }
 
 /// The tornado chart with a row of numbers per parameter.
-fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32) {
+/// Returns the key of a parameter whose name was clicked (to draw X against it).
+fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32) -> Option<String> {
+    let mut clicked = None;
     // Log scale of X/X₀ where every value is positive, else linear in X − X₀.
     let positive = x0 > 0.0 && rows.iter().flat_map(|r| r.range.iter().flatten()).all(|&x| x > 0.0);
     let pos = |x: f64| if positive { (x / x0).ln() } else { x - x0 };
@@ -85,7 +104,13 @@ fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32
         }
         ui.end_row();
         for r in rows {
-            ui.label(egui::RichText::new(&r.label).size(text)).on_hover_text(&r.key);
+            if ui
+                .link(egui::RichText::new(&r.label).size(text))
+                .on_hover_text(format!("{}: click to draw X against it over its whole range", r.key))
+                .clicked()
+            {
+                clicked = Some(r.key.clone());
+            }
             ui.label(egui::RichText::new(format!("{} {}", human(r.value), r.unit)).size(text));
             let e = match r.elasticity {
                 Some(e) if e.abs() < 5e-4 => "0".to_string(),
@@ -117,4 +142,5 @@ fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32
             ui.end_row();
         }
     });
+    clicked
 }

@@ -75,6 +75,15 @@ fn settle(h: &mut Harness<'static, GrainscopeApp>, what: &str) {
     h.run_steps(3);
 }
 
+/// Opens scene `id` with its snapshot parameters in the given look.
+fn open(h: &mut Harness<'static, GrainscopeApp>, id: &str, lecture: bool, light: bool) {
+    let app = h.state_mut();
+    app.state.session.scene = id.to_string();
+    app.state.session.params.insert(id.to_string(), snapshot_params(id));
+    app.state.session.lecture = lecture;
+    app.state.session.light = light;
+}
+
 /// Opens scene `id` in the given look and compares its picture with the kept
 /// one; an error names what differs.
 fn check(
@@ -84,13 +93,7 @@ fn check(
     lecture: bool,
     light: bool,
 ) -> Result<(), String> {
-    {
-        let app = h.state_mut();
-        app.state.session.scene = id.to_string();
-        app.state.session.params.insert(id.to_string(), snapshot_params(id));
-        app.state.session.lecture = lecture;
-        app.state.session.light = light;
-    }
+    open(h, id, lecture, light);
     settle(h, name);
     h.try_snapshot_options(name, &SnapshotOptions::default()).map_err(|e| format!("{name}: {e}"))
 }
@@ -130,13 +133,7 @@ fn check_family(
     sweep: grainscope::app::command::Sweep,
 ) -> Result<(), String> {
     use grainscope::app::command::Command;
-    {
-        let app = h.state_mut();
-        app.state.session.scene = id.to_string();
-        app.state.session.params.insert(id.to_string(), snapshot_params(id));
-        app.state.session.lecture = lecture;
-        app.state.session.light = false;
-    }
+    open(h, id, lecture, false);
     settle(h, name);
     h.state_mut().apply(Command::ClearPins);
     h.state_mut().apply(Command::SetSweep(sweep));
@@ -171,13 +168,7 @@ fn what_matters_for_the_sticking_velocity() {
     let Some(mut h) = harness(1024.0, 768.0) else { return };
     let mut failures = Vec::new();
     for lecture in [false, true] {
-        {
-            let app = h.state_mut();
-            app.state.session.scene = "hysteresis".into();
-            app.state.session.params.insert("hysteresis".into(), snapshot_params("hysteresis"));
-            app.state.session.lecture = lecture;
-            app.state.session.light = false;
-        }
+        open(&mut h, "hysteresis", lecture, false);
         settle(&mut h, "what matters");
         h.state_mut().apply(Command::SetMatters("v_c".into(), 2.0));
         h.state_mut().apply(Command::WhatMatters);

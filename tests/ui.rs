@@ -586,18 +586,20 @@ fn the_monomer_card_is_shared_between_scenes() {
     assert!((number(h.state().params(), "monomer_radius") - 5e-7).abs() < 1e-15, "not linked");
 }
 
-/// Runs frames until the family sweep has pinned its curves (or an error or
-/// 60 s); the runner's results arrive from other threads.
-fn wait_for_pins(h: &mut Harness<'static, GrainscopeApp>) {
+/// Runs frames until `done` holds (or `secs` pass); the runner's results
+/// arrive from other threads.
+fn wait_until(h: &mut Harness<'static, GrainscopeApp>, secs: u64, done: impl Fn(&GrainscopeApp) -> bool) {
     let start = std::time::Instant::now();
-    while h.state().state.session.pins.is_empty()
-        && h.state().state.error.is_none()
-        && start.elapsed() < std::time::Duration::from_secs(60)
-    {
+    while !done(h.state()) && start.elapsed() < std::time::Duration::from_secs(secs) {
         h.step();
         std::thread::sleep(std::time::Duration::from_millis(10));
     }
     h.run_steps(2);
+}
+
+/// Runs frames until the family sweep has pinned its curves (or an error).
+fn wait_for_pins(h: &mut Harness<'static, GrainscopeApp>) {
+    wait_until(h, 60, |a| !a.state.session.pins.is_empty() || a.state.error.is_some());
 }
 
 #[test]
@@ -658,12 +660,7 @@ fn what_matters_ranks_the_parameters_of_the_jkr_sticking_velocity() {
     h.run();
     h.state_mut().apply(Command::SetMatters("v_c".into(), 2.0));
     h.get_by_label("What matters").click();
-    let start = std::time::Instant::now();
-    while h.state().state.matters.result.is_none() && start.elapsed() < std::time::Duration::from_secs(60) {
-        h.step();
-        std::thread::sleep(std::time::Duration::from_millis(10));
-    }
-    h.run_steps(2);
+    wait_until(&mut h, 60, |a| a.state.matters.result.is_some());
     let s = &h.state().state;
     let (_, v_c, rows) = s.matters.result.as_ref().expect("a result");
     assert!(*v_c > 0.0);
@@ -688,13 +685,7 @@ fn what_matters_in_a_heavy_scene_answers_coarsely_first() {
     h.state_mut().apply(Command::SetParams(Box::new(p)));
     h.state_mut().apply(Command::SetMatters("widest_zone".into(), 2.0));
     h.state_mut().apply(Command::WhatMatters);
-    let start = std::time::Instant::now();
-    while h.state().state.matters.result.is_none() && start.elapsed() < std::time::Duration::from_secs(120) {
-        h.step();
-        std::thread::sleep(std::time::Duration::from_millis(20));
-    }
-    h.run_steps(2);
-    eprintln!("coarse answer after {:?}", start.elapsed());
+    wait_until(&mut h, 120, |a| a.state.matters.result.is_some());
     let s = &h.state().state;
     assert!(s.matters.coarse, "the first answer of a heavy scene is the coarse one");
     let (at, _, rows) = s.matters.result.as_ref().expect("a coarse answer");

@@ -11,9 +11,8 @@ use super::playback;
 use super::state::{AppState, Effect, Inspected, Then};
 use crate::figure::{self, View};
 use crate::preset::Preset;
-use crate::scene::{self, ControlKind, SCENES, SceneParams};
+use crate::scene::{self, SCENES, SceneParams};
 use crate::session::Pin;
-use crate::sweep::{Plan, Spacing, Vary};
 use std::path::Path;
 
 impl AppState {
@@ -110,30 +109,9 @@ impl AppState {
                 self.matters.output = output;
                 self.matters.factor = factor;
             }
-            Command::WhatMatters => {
-                if self.matters.output.is_empty() {
-                    self.error = Some("choose the result whose dependence to show".into());
-                } else {
-                    self.matters.open = true;
-                    // A heavy scene answers first with its coarse parameters.
-                    let coarse = SCENES[self.index()].heavy && self.params().coarse().is_some();
-                    fx.push(Effect::Submit(Job::WhatMatters {
-                        base: Box::new(self.params().clone()),
-                        output: self.matters.output.clone(),
-                        factor: self.matters.factor,
-                        coarse,
-                    }));
-                }
-            }
+            Command::WhatMatters => self.what_matters(&mut fx),
             Command::CloseMatters => self.matters.open = false,
-            Command::MattersCurve(key) => {
-                self.matters.curve = None;
-                fx.push(Effect::Submit(Job::Curve {
-                    base: Box::new(self.params().clone()),
-                    output: self.matters.output.clone(),
-                    key,
-                }));
-            }
+            Command::MattersCurve(key) => self.matters_curve(key, &mut fx),
             Command::ResetAll => self.reset_all(),
             Command::SetLight(on) => self.session.light = on,
             Command::SetLecture(on) => self.session.lecture = on,
@@ -356,26 +334,6 @@ impl AppState {
         let color = self.session.pins.len() + 1;
         let params = self.params().clone();
         self.session.pins.push(Pin { params, label: String::new(), curves, color });
-    }
-
-    fn draw_family(&mut self, fx: &mut Vec<Effect>) {
-        let base = self.params().clone();
-        let (from, to, n) = (self.sweep.from, self.sweep.to, self.sweep.steps.clamp(2, 12));
-        // Log-spaced where the control is logarithmic (and the range positive).
-        let log = {
-            let mut p = base.clone();
-            let controls = p.controls();
-            controls.iter().any(|c| c.key == self.sweep.key && matches!(c.kind, ControlKind::Number { log: true, .. }))
-        };
-        let spacing = if log && from > 0.0 && to > 0.0 { Spacing::Log } else { Spacing::Lin };
-        let vary = Vary { key: self.sweep.key.clone(), spacing, from, to, n };
-        // Every value is checked before starting, so a bad range is reported at once.
-        match Plan::new(base, vec![vary]) {
-            Ok(plan) => {
-                fx.push(Effect::Submit(Job::Sweep { plan: Box::new(plan), first_color: self.session.pins.len() + 1 }))
-            }
-            Err(e) => self.error = Some(format!("sweep not started: {e}")),
-        }
     }
 
     /// Resets every scene's parameters to their defaults (one undo step).

@@ -7,6 +7,7 @@
 
 mod apply;
 mod apply_deck;
+mod apply_sweep;
 pub mod command;
 pub mod desktop;
 mod effects;

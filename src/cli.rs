@@ -277,36 +277,21 @@ pub fn run(command: Command) -> Result<()> {
             if !(factor.is_finite() && factor > 1.0) {
                 bail!("--factor {factor}: expected a number above 1");
             }
-            let (x0, rows) = crate::sweep::what_matters(&p.scene, &output, factor, &Progress::default())?;
+            let m = crate::sensitivity::what_matters(&p.scene, &output, factor, &Progress::default())?;
             if json {
-                let rows: Vec<serde_json::Value> = rows
+                let rows: Vec<serde_json::Value> = m
+                    .rows
                     .iter()
                     .map(|r| {
                         serde_json::json!({"key": r.key, "unit": r.unit, "value": r.value, "elasticity": r.elasticity,
-                            "converged": r.converged, "low": r.range[0], "high": r.range[1]})
+                            "converged": r.converged, "low": r.range[0], "high": r.range[1],
+                            "low_sd": r.range_sd[0], "high_sd": r.range_sd[1], "below_noise": r.below_noise})
                     })
                     .collect();
-                return say(serde_json::json!({"output": output, "value": x0, "factor": factor, "parameters": rows}));
+                return say(serde_json::json!({"output": output, "value": m.here.mean, "sd": m.here.sd,
+                    "seeds": m.here.runs, "factor": factor, "parameters": rows}));
             }
-            say(format_args!("{output} = {x0}; each parameter divided and multiplied by {factor}"))?;
-            say(format_args!(
-                "{:<26} {:>12} {:>11} {:>12} {:>12}",
-                "parameter", "value", "elasticity", "X at p/f", "X at p*f"
-            ))?;
-            let num = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.5e}"));
-            for r in &rows {
-                let e =
-                    r.elasticity.map_or("-".to_string(), |e| format!("{e:+.4}{}", if r.converged { "" } else { "?" }));
-                say(format_args!(
-                    "{:<26} {:>12} {:>11} {:>12} {:>12}",
-                    r.key,
-                    format!("{:.4e}", r.value),
-                    e,
-                    num(r.range[0]),
-                    num(r.range[1])
-                ))?;
-            }
-            Ok(())
+            say(format_args!("{}", crate::sensitivity::matters_text(&m, &output, factor)))
         }
         Command::SweepMerge { shards, out } => {
             let files = crate::sweep_files::merge(&shards, &out)?;
@@ -395,6 +380,7 @@ fn fit_command(
             wall: geometry == Geometry::Wall,
             ..Default::default()
         }),
+        sensitivity: None,
     };
     let mut overrides = vec![
         format!("radius_1={radius}"),

@@ -32,7 +32,12 @@ pub fn deck(deck: &LoadedDeck, dir: &Path, progress: &dyn Fn(usize, &str)) -> Re
         let out = scene::compute(params, &Progress::default())
             .with_context(|| format!("slide {} ('{}')", i + 1, slide.title))?;
         let folder = slide_folder(i, slide);
-        let preset = Preset { title: slide.title.clone(), description: slide.notes.clone(), scene: params.clone() };
+        let preset = Preset {
+            title: slide.title.clone(),
+            description: slide.notes.clone(),
+            scene: params.clone(),
+            sensitivity: None,
+        };
         let files = crate::export::write_outputs(&out, Some(&preset), &dir.join(&folder))?;
         written.extend(files);
         let info = params.info();

@@ -21,6 +21,7 @@ pub mod preset;
 pub mod provenance;
 pub mod reproduce;
 pub mod scene;
+pub mod sensitivity;
 pub mod session;
 pub mod solver;
 pub mod sweep;

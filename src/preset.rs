@@ -30,6 +30,10 @@ pub struct Preset {
     pub description: String,
     /// The scene and its parameters.
     pub scene: SceneParams,
+    /// The sensitivity view the file was exported from, if any: opening
+    /// the file reopens it.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub sensitivity: Option<crate::sensitivity::View>,
 }
 
 /// Why a preset could not be read or written.

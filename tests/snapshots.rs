@@ -179,7 +179,9 @@ fn what_matters_for_the_sticking_velocity() {
             h.run_steps(1);
         }
         // The sticking velocity against γ over its whole range.
-        h.state_mut().apply(Command::MattersCurve("surface_energy".into()));
+        // A map in the normal window, a curve in lecture mode.
+        let second = if lecture { "" } else { "radius_1" };
+        h.state_mut().apply(Command::DrawSensitivity("surface_energy".into(), second.into()));
         while h.state().state.matters.curve.is_none() {
             assert!(start.elapsed() < PATIENCE, "no curve after {PATIENCE:?}");
             std::thread::sleep(Duration::from_millis(20));

@@ -662,13 +662,66 @@ fn what_matters_ranks_the_parameters_of_the_jkr_sticking_velocity() {
     h.get_by_label("What matters").click();
     wait_until(&mut h, 60, |a| a.state.matters.result.is_some());
     let s = &h.state().state;
-    let (_, v_c, rows) = s.matters.result.as_ref().expect("a result");
-    assert!(*v_c > 0.0);
+    let (_, m) = s.matters.result.as_ref().expect("a result");
+    assert!(m.here.mean.is_some_and(|v| v > 0.0));
     // v_c ∝ γ^{5/6} (2.25).
-    let gamma = rows.iter().find(|r| r.key == "surface_energy").expect("γ");
+    let gamma = m.rows.iter().find(|r| r.key == "surface_energy").expect("γ");
     assert!((gamma.elasticity.expect("defined") - 5.0 / 6.0).abs() < 1e-6);
-    h.get_by_label_contains("What moves JKR sticking velocity");
+    h.get_by_label("What moves");
     h.get_by_label("+0.833");
+}
+
+#[test]
+fn the_sensitivity_key_opens_the_view_and_a_map_draws_over_two_parameters() {
+    let mut h = harness();
+    h.run();
+    assert!(!h.state().state.matters.open);
+    h.key_press(egui::Key::M);
+    h.run();
+    assert!(h.state().state.matters.open, "M opens the sensitivity view");
+    wait_until(&mut h, 60, |a| a.state.matters.result.is_some());
+    // The first result of the scene is chosen when none was.
+    let output = h.state().state.matters.output.clone();
+    assert!(!output.is_empty());
+    h.state_mut().apply(Command::DrawSensitivity("surface_energy".into(), "t_vis".into()));
+    wait_until(&mut h, 60, |a| a.state.matters.curve.is_some());
+    let (at, fig) = h.state().state.matters.curve.clone().expect("a map");
+    assert_eq!(&at, h.state().params());
+    let heat = fig.heatmap.expect("a colour map");
+    assert_eq!(heat.values.len(), heat.x.len() * heat.y.len());
+    assert_eq!(fig.x.label, "surface energy γ");
+}
+
+#[test]
+fn an_exported_sensitivity_view_reopens_from_its_file() {
+    let dir = tempfile::tempdir().expect("temp dir");
+    let mut h = harness();
+    h.run();
+    h.state_mut().apply(Command::SetMatters("v_c".into(), 3.0));
+    h.state_mut().apply(Command::WhatMatters);
+    h.state_mut().apply(Command::DrawSensitivity("surface_energy".into(), String::new()));
+    wait_until(&mut h, 60, |a| a.state.matters.result.is_some() && a.state.matters.curve.is_some());
+    h.state_mut().state.session.export_dir = dir.path().display().to_string();
+    h.state_mut().apply(Command::ExportSensitivity);
+    h.run();
+    let png = std::fs::read_dir(dir.path())
+        .expect("folder")
+        .flatten()
+        .map(|e| e.path())
+        .find(|p| p.extension().is_some_and(|x| x == "png"))
+        .expect("the curve as PNG");
+    assert!(dir.path().join("hysteresis-v_c-what-matters.csv").exists(), "the table");
+    // A fresh window opens the file: the scene, the view, its result and curve.
+    let mut h = harness();
+    h.run();
+    let bytes = std::fs::read(&png).expect("read");
+    let name = png.display().to_string();
+    h.state_mut().apply(Command::OpenBytes(grainscope::app::platform::Picked { name, bytes }));
+    h.run();
+    wait_until(&mut h, 60, |a| a.state.matters.result.is_some() && a.state.matters.curve.is_some());
+    let m = &h.state().state.matters;
+    assert!(m.open);
+    assert_eq!((m.output.as_str(), m.factor, m.x.as_str(), m.y.as_str()), ("v_c", 3.0, "surface_energy", ""));
 }
 
 #[test]
@@ -688,9 +741,9 @@ fn what_matters_in_a_heavy_scene_answers_coarsely_first() {
     wait_until(&mut h, 120, |a| a.state.matters.result.is_some());
     let s = &h.state().state;
     assert!(s.matters.coarse, "the first answer of a heavy scene is the coarse one");
-    let (at, _, rows) = s.matters.result.as_ref().expect("a coarse answer");
+    let (at, m) = s.matters.result.as_ref().expect("a coarse answer");
     assert_eq!(at, h.state().params(), "the answer belongs to the open parameters");
-    assert!(rows.iter().any(|r| r.key == "alpha"));
+    assert!(m.rows.iter().any(|r| r.key == "alpha"));
     assert!(h.query_all_by_label_contains("coarse first answer").next().is_some());
     // The full pass runs on; closing the view leaves it be.
     assert!(h.state().busy());

@@ -111,7 +111,8 @@ impl AppState {
             }
             Command::WhatMatters => self.what_matters(&mut fx),
             Command::CloseMatters => self.matters.open = false,
-            Command::MattersCurve(key) => self.matters_curve(key, &mut fx),
+            Command::DrawSensitivity(x, y) => self.draw_sensitivity(x, y, &mut fx),
+            Command::ExportSensitivity => self.export_sensitivity(&mut fx),
             Command::ResetAll => self.reset_all(),
             Command::SetLight(on) => self.session.light = on,
             Command::SetLecture(on) => self.session.lecture = on,
@@ -183,6 +184,7 @@ impl AppState {
                 self.status = "scene reset to its defaults (Ctrl+Z undoes)".into();
             }
             Action::Export => self.export_all(fx),
+            Action::Sensitivity => self.what_matters(fx),
             Action::NextSlide => self.step_slide(1),
             Action::PreviousSlide => self.step_slide(-1),
             Action::FirstSlide => self.step_slide(isize::MIN / 2),
@@ -235,6 +237,16 @@ impl AppState {
         self.session.scene = id.to_string();
         let shared = preset.scene.monomer_card().filter(|_| !preset.scene.own_monomer());
         self.session.params.insert(id.to_string(), preset.scene);
+        // A file exported from the sensitivity view reopens it.
+        if let Some(view) = preset.sensitivity {
+            self.matters.output = view.output;
+            self.matters.factor = if view.factor.is_finite() && view.factor > 1.0 { view.factor } else { 2.0 };
+            self.matters.x = view.x;
+            self.matters.y = view.y;
+            self.matters.result = None;
+            self.matters.curve = None;
+            self.matters.reopen = true;
+        }
         // The preset's monomer becomes the monomer of every linked scene.
         if let Some(card) = shared {
             self.share_monomer(self.index(), &card);
@@ -296,6 +308,7 @@ impl AppState {
             title: format!("{} (saved)", info.title),
             description: String::new(),
             scene: self.params().clone(),
+            sensitivity: None,
         };
         preset.to_ron().map(String::into_bytes).map_err(|e| e.to_string())
     }

@@ -4,6 +4,7 @@
 
 use super::jobs::Job;
 use super::state::{AppState, Effect};
+use crate::preset::Preset;
 use crate::scene::{ControlKind, SCENES};
 use crate::sweep::{Plan, Spacing, Vary};
 
@@ -29,12 +30,21 @@ impl AppState {
         }
     }
 
-    /// Computes what matters for the chosen result (a heavy scene's coarse
-    /// parameters first), and shows the view.
+    /// Opens the sensitivity view and computes what matters for the chosen
+    /// result (the first result of the scene when none is chosen; a heavy
+    /// scene's coarse parameters first).
     pub(super) fn what_matters(&mut self, fx: &mut Vec<Effect>) {
-        if self.matters.output.is_empty() {
-            self.error = Some("choose the result whose dependence to show".into());
-            return;
+        // A result of another scene (or none) gives way to the scene's first.
+        let first = self.output().and_then(|o| o.scalars.first()).map(|s| s.key.to_string());
+        let foreign = self.output().is_some_and(|o| !o.scalars.iter().any(|s| s.key == self.matters.output));
+        if self.matters.output.is_empty() || foreign {
+            match first {
+                Some(k) => self.matters.output = k,
+                None => {
+                    self.error = Some("the scene reports no result yet to ask what matters for".into());
+                    return;
+                }
+            }
         }
         self.matters.open = true;
         let coarse = SCENES[self.index()].heavy && self.params().coarse().is_some();
@@ -46,13 +56,54 @@ impl AppState {
         }));
     }
 
-    /// Draws the chosen result against parameter `key` over its range.
-    pub(super) fn matters_curve(&mut self, key: String, fx: &mut Vec<Effect>) {
+    /// Draws the chosen result against parameter `x` over its range, or over
+    /// `x` and `y` as a map (`y` empty: a curve).
+    pub(super) fn draw_sensitivity(&mut self, x: String, y: String, fx: &mut Vec<Effect>) {
         self.matters.curve = None;
+        self.matters.x = x.clone();
+        self.matters.y = y.clone();
         fx.push(Effect::Submit(Job::Curve {
             base: Box::new(self.params().clone()),
             output: self.matters.output.clone(),
-            key,
+            key: x,
+            second: (!y.is_empty()).then_some(y),
         }));
+    }
+
+    /// Writes the sensitivity view to the export folder: its curve or map
+    /// as PNG, SVG and CSV and the "what matters" table as CSV, each file
+    /// carrying the scene's state and the view, so that opening any of them
+    /// reopens the view.
+    pub(super) fn export_sensitivity(&mut self, fx: &mut Vec<Effect>) {
+        let preset = Preset { sensitivity: Some(self.matters.view()), ..self.current_preset() };
+        let stamp = match crate::provenance::Stamp::of(&preset) {
+            Ok(s) => s,
+            Err(e) => {
+                self.error = Some(format!("export failed: {e}"));
+                return;
+            }
+        };
+        let prefix = format!("{}-{}-", self.params().info().id, self.matters.output);
+        let mut files = Vec::new();
+        if let Some((_, m)) = &self.matters.result {
+            let table = crate::sensitivity::matters_csv(m, &self.matters.output, self.matters.factor);
+            files.push((format!("{prefix}what-matters.csv"), stamp.csv(table.as_bytes())));
+        }
+        if let Some((_, fig)) = &self.matters.curve {
+            for ext in ["png", "svg", "csv"] {
+                match crate::provenance::figure_bytes(fig, ext, crate::figure::EXPORT_SIZE, Some(&stamp)) {
+                    Ok(bytes) => files.push((format!("{prefix}{}.{ext}", fig.id), bytes)),
+                    Err(e) => {
+                        self.error = Some(format!("export failed, earlier files untouched: {e}"));
+                        return;
+                    }
+                }
+            }
+        }
+        if files.is_empty() {
+            self.error = Some("nothing to export yet: the view has no result".into());
+            return;
+        }
+        fx.push(Effect::WriteAll { folder: self.session.export_dir.clone(), files, what: "sensitivity view" });
     }
 }

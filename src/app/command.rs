@@ -56,6 +56,8 @@ pub enum Action {
     NotesWindow,
     /// Restore the slide as the deck defines it.
     ResetSlide,
+    /// Open the sensitivity view: what matters for the chosen result.
+    Sensitivity,
 }
 
 /// A text field of the window whose content is kept in the session.
@@ -156,8 +158,12 @@ pub enum Command {
     WhatMatters,
     /// Close the "what matters" view.
     CloseMatters,
-    /// Draw the "what matters" result against parameter `key` over its range.
-    MattersCurve(String),
+    /// Draw the "what matters" result against parameter `x` over its range,
+    /// or over `x` and `y` as a map (`y` empty: a curve).
+    DrawSensitivity(String, String),
+    /// Export the sensitivity view (its curve or map as PNG, SVG and CSV,
+    /// and the "what matters" table as CSV), each file carrying the view.
+    ExportSensitivity,
     /// Reset every scene's parameters.
     ResetAll,
     /// Light theme on or off.

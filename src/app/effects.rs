@@ -45,6 +45,7 @@ impl GrainscopeApp {
             }
             Effect::Cancel => {
                 self.runner.cancel(Lane::Sweep);
+                self.runner.cancel(Lane::Curve);
                 self.runner.cancel(Lane::Compute);
                 self.computing.stale = false;
                 self.computing.requested[state.index()] = None;
@@ -84,16 +85,16 @@ impl GrainscopeApp {
                     self.state.status = format!("swept {} values", pins.len());
                     self.state.session.pins.extend(pins);
                 }
-                Ok(Done::Matters(base, x0, rows, coarse)) => {
+                Ok(Done::Matters(base, answer, coarse)) => {
                     let m = &mut self.state.matters;
                     self.state.status = if coarse {
                         format!("what matters for {}: a coarse first answer; computing the full one", m.output)
                     } else {
-                        format!("what matters for {}: {} parameters", m.output, rows.len())
+                        format!("what matters for {}: {} parameters", m.output, answer.rows.len())
                     };
                     m.coarse = coarse;
                     let (output, factor) = (m.output.clone(), m.factor);
-                    m.result = Some(((*base).clone(), x0, rows));
+                    m.result = Some(((*base).clone(), answer));
                     if coarse {
                         self.carry_out(Effect::Submit(Job::WhatMatters { base, output, factor, coarse: false }));
                     }
@@ -103,7 +104,7 @@ impl GrainscopeApp {
                     self.state.matters.curve = Some((*base, *fig));
                 }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
-                Err(e) if finished.lane == Lane::Sweep => {
+                Err(e) if matches!(finished.lane, Lane::Sweep | Lane::Curve) => {
                     self.state.error = Some(format!("not computed: {e}"));
                 }
                 Err(e) if finished.lane == Lane::Compute => {
@@ -142,7 +143,7 @@ impl GrainscopeApp {
         for c in dropped {
             self.apply(c);
         }
-        if self.runner.busy(Lane::Sweep) {
+        if self.runner.busy(Lane::Sweep) || self.runner.busy(Lane::Curve) {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         if self.runner.busy(Lane::Compute) {

@@ -19,13 +19,21 @@ use std::sync::{Arc, Mutex};
 pub enum Lane {
     /// The open scene's result: the newest wins.
     Compute,
-    /// A family sweep, beside the scene's own computation: the newest wins.
+    /// A family sweep or "what matters", beside the scene's own
+    /// computation: the newest wins.
     Sweep,
+    /// A sensitivity curve or map, beside "what matters": the newest wins.
+    Curve,
     /// Figures rendered for an export: the newest wins.
     Export,
     /// A history rendered as a movie: the newest wins.
     Movie,
 }
+
+/// Points of a sensitivity curve.
+const CURVE_POINTS: usize = 50;
+/// Points along each side of a sensitivity map.
+const MAP_POINTS: usize = 24;
 
 /// A piece of work, as plain data.
 #[derive(Debug, Clone)]
@@ -58,7 +66,8 @@ pub enum Job {
         /// Whether to answer with the scene's coarse parameters (a first pass).
         coarse: bool,
     },
-    /// Scalar `output` against parameter `key` over its range.
+    /// Scalar `output` against parameter `key` over its range, or over
+    /// `key` and `second` as a map.
     Curve {
         /// The parameters.
         base: Box<SceneParams>,
@@ -66,6 +75,8 @@ pub enum Job {
         output: String,
         /// The parameter's key.
         key: String,
+        /// The map's second parameter, if any.
+        second: Option<String>,
     },
     /// Figures rendered as PNG, SVG and CSV files carrying the state.
     Export {
@@ -90,7 +101,8 @@ impl Job {
     pub fn lane(&self) -> Lane {
         match self {
             Job::Scene { .. } => Lane::Compute,
-            Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Curve { .. } => Lane::Sweep,
+            Job::Sweep { .. } | Job::WhatMatters { .. } => Lane::Sweep,
+            Job::Curve { .. } => Lane::Curve,
             Job::Export { .. } => Lane::Export,
             Job::Movie { .. } => Lane::Movie,
         }
@@ -108,7 +120,7 @@ pub enum Done {
     Curve(Box<SceneParams>, Box<Figure>),
     /// What matters: the parameters, X there, each parameter's influence,
     /// and whether it is the coarse first pass.
-    Matters(Box<SceneParams>, f64, Vec<crate::sweep::Influence>, bool),
+    Matters(Box<SceneParams>, crate::sensitivity::Matters, bool),
     /// Files to write: what they are ("export", "movie"), and (name, bytes).
     Files(&'static str, Vec<(String, Vec<u8>)>),
 }
@@ -180,11 +192,14 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
         }
         Job::WhatMatters { base, output, factor, coarse } => {
             let at = if coarse { base.coarse().unwrap_or_else(|| (*base).clone()) } else { (*base).clone() };
-            let (x0, rows) = crate::sweep::what_matters(&at, &output, factor, progress)?;
-            Ok(Done::Matters(base, x0, rows, coarse))
+            let m = crate::sensitivity::what_matters(&at, &output, factor, progress)?;
+            Ok(Done::Matters(base, m, coarse))
         }
-        Job::Curve { base, output, key } => {
-            let fig = crate::sweep::curve(&base, &output, &key, 50, progress)?;
+        Job::Curve { base, output, key, second } => {
+            let fig = match second {
+                Some(y) => crate::sensitivity::map(&base, &output, &key, &y, MAP_POINTS, progress)?,
+                None => crate::sensitivity::curve(&base, &output, &key, CURVE_POINTS, progress)?,
+            };
             Ok(Done::Curve(base, Box::new(fig)))
         }
         Job::Export { figures, stamp, prefix } => {

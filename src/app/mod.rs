@@ -23,7 +23,7 @@ pub mod ui;
 pub use crate::session::{Pin, Session};
 pub use desktop::{SESSION_ENV, open_named, run, session_path};
 
-use command::Command;
+use command::{Action, Command};
 use jobs::{Job, Lane, Runner, ThreadRunner};
 use platform::Platform;
 use shortcuts::Mode;
@@ -121,7 +121,10 @@ impl GrainscopeApp {
 
     /// Whether a result is still being computed.
     pub fn busy(&self) -> bool {
-        self.runner.busy(Lane::Compute) || self.runner.busy(Lane::Sweep) || self.computing.stale
+        self.runner.busy(Lane::Compute)
+            || self.runner.busy(Lane::Sweep)
+            || self.runner.busy(Lane::Curve)
+            || self.computing.stale
     }
 
     /// The frame (inside the axes) of figure `figure` as drawn in the last
@@ -138,6 +141,14 @@ impl GrainscopeApp {
     /// Starts (or computes at once, for a cheap scene) the open scene's
     /// result if its computed parameters changed.
     fn request(&mut self) {
+        // A file that carried a sensitivity view: compute it for the opened scene.
+        if std::mem::take(&mut self.state.matters.reopen) {
+            self.apply(Command::Act(Action::Sensitivity));
+            let (x, y) = (self.state.matters.x.clone(), self.state.matters.y.clone());
+            if !x.is_empty() {
+                self.apply(Command::DrawSensitivity(x, y));
+            }
+        }
         let i = self.state.index();
         let key = self.state.params().compute_key();
         if self.computing.requested[i].as_ref() == Some(&key) {
@@ -160,12 +171,13 @@ impl GrainscopeApp {
 
     /// How the computation stands, for the panels.
     fn work(&self) -> Work {
-        let sweeping = self.runner.busy(Lane::Sweep);
-        let running = self.runner.busy(Lane::Compute) || sweeping;
+        // The progress shown: a sweep's, else a curve's, else the scene's.
+        let lane = [Lane::Sweep, Lane::Curve].into_iter().find(|&l| self.runner.busy(l)).unwrap_or(Lane::Compute);
+        let running = self.runner.busy(Lane::Compute) || lane != Lane::Compute;
         Work {
             running,
             stale: self.computing.stale,
-            progress: self.runner.progress(if sweeping { Lane::Sweep } else { Lane::Compute }),
+            progress: self.runner.progress(lane),
             paused: self.runner.paused(Lane::Compute),
             pausable: self.computing.live_scene.is_some_and(|i| self.state.params_of(i).pausable()),
         }

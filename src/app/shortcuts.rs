@@ -168,6 +168,12 @@ pub const SHORTCUTS: &[Shortcut] = &[
         text: "reset the scene's parameters",
     },
     Shortcut {
+        keys: &[key(Key::M)],
+        action: Action::Sensitivity,
+        mode: Mode::Explorer,
+        text: "sensitivity: what matters for the chosen result, its curve or map",
+    },
+    Shortcut {
         keys: &[command(Key::E)],
         action: Action::Export,
         mode: Mode::Anywhere,

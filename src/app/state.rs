@@ -144,17 +144,46 @@ pub struct Matters {
     /// Whether the view is shown.
     pub open: bool,
     /// The answer: the parameters it holds for, X there, and each parameter's influence.
-    pub result: Option<(SceneParams, f64, Vec<crate::sweep::Influence>)>,
+    pub result: Option<(SceneParams, crate::sensitivity::Matters)>,
     /// Whether the answer is the coarse first pass of a heavy scene (its
     /// cheaper parameters), with the full one still to come.
     pub coarse: bool,
-    /// The result against one parameter over its whole range (parameters, figure).
+    /// The result against one parameter over its whole range, or a map
+    /// over two (parameters, figure).
     pub curve: Option<(SceneParams, crate::figure::Figure)>,
+    /// The parameter of the curve (the map's horizontal axis); empty for none.
+    pub x: String,
+    /// The map's second parameter; empty for a curve.
+    pub y: String,
+    /// Whether a file just opened asks for the view: computed on the next frame.
+    pub reopen: bool,
 }
 
 impl Default for Matters {
     fn default() -> Self {
-        Matters { output: String::new(), factor: 2.0, open: false, result: None, coarse: false, curve: None }
+        Matters {
+            output: String::new(),
+            factor: 2.0,
+            open: false,
+            result: None,
+            coarse: false,
+            curve: None,
+            x: String::new(),
+            y: String::new(),
+            reopen: false,
+        }
+    }
+}
+
+impl Matters {
+    /// The view as a file remembers it.
+    pub fn view(&self) -> crate::sensitivity::View {
+        crate::sensitivity::View {
+            output: self.output.clone(),
+            factor: self.factor,
+            x: self.x.clone(),
+            y: self.y.clone(),
+        }
     }
 }
 
@@ -274,7 +303,7 @@ impl AppState {
     /// The open scene's state as a preset.
     pub fn current_preset(&self) -> Preset {
         let params = self.params().clone();
-        Preset { title: params.info().title.to_string(), description: String::new(), scene: params }
+        Preset { title: params.info().title.to_string(), description: String::new(), scene: params, sensitivity: None }
     }
 
     /// The open scene's time cursor (fraction of its history), if it has one.

@@ -79,6 +79,14 @@ pub trait Scene:
     fn coarse(&self) -> Option<Self> {
         None
     }
+
+    /// Scalar `key` alone, where the scene can compute it without its
+    /// figures (for sweeps, which need one number per point). The value must
+    /// equal that of `compute(..).scalar(key)` exactly. None (the default):
+    /// the sweep computes the whole scene.
+    fn scalar(&self, _key: &str, _progress: &Progress) -> Option<Result<f64, SceneError>> {
+        None
+    }
 }
 
 /// What a computation may use besides its parameters.

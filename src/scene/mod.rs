@@ -27,7 +27,9 @@ pub use core::{
     Caches, Context, Extra, Progress, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, Trajectory,
     logspace,
 };
-pub use registry::{Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, scenes_by_chapter};
+pub use registry::{
+    Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, scalar, scenes_by_chapter,
+};
 pub use timeline::{Cursor, Mark};
 
 /// Collisions of adhesive viscoelastic spheres (thesis ch. 1–2).

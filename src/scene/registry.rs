@@ -106,6 +106,13 @@ macro_rules! scenes {
             }
 
             /// Computes the scene without validating first.
+            /// The scene's own quick path to scalar `key`, if it has one.
+            fn quick_scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::scalar(p, key, progress), )*)*
+                }
+            }
+
             fn dispatch(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
                 match self {
                     $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::compute(p, ctx), )*)*
@@ -307,6 +314,17 @@ pub fn compute_cached(
         out.scalars.extend(monomer::scalars(&m, false));
     }
     Ok(out)
+}
+
+/// Scalar `key` of the scene at `params` (None where the scene reports no
+/// such scalar), through the scene's quick path where it has one (the same
+/// value, without the figures), else from the whole computation.
+pub fn scalar(params: &SceneParams, key: &str, progress: &Progress) -> Result<Option<f64>, SceneError> {
+    params.validate()?;
+    match params.quick_scalar(key, progress) {
+        Some(value) => value.map(Some),
+        None => Ok(compute(params, progress)?.scalar(key)),
+    }
 }
 
 /// The first of two names (lets the registry repeat a chapter per scene).

@@ -1,7 +1,8 @@
-//! The "what matters" view: for one result of the open scene, every
+//! The sensitivity view: for one result of the open scene, every
 //! parameter's elasticity ∂ln X/∂ln p at the current point and the result's
 //! range over a factor around each parameter's value, sorted, as a tornado
-//! chart with the numbers beside it.
+//! chart with the numbers beside it; below it the result over one
+//! parameter's whole range (a curve) or two (a map).
 
 use super::Cx;
 use crate::app::command::Command;
@@ -19,78 +20,160 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     }
     let lecture = cx.state.session.lecture;
     let text = if lecture { 16.0 } else { 13.0 };
-    let (key, factor) = (m.output.clone(), m.factor);
-    let label = cx
-        .state
-        .output()
-        .and_then(|o| o.scalars.iter().find(|s| s.key == key))
-        .map_or(key.clone(), |s| format!("{} ({key})", s.label));
-    let unit = cx.state.output().and_then(|o| o.scalars.iter().find(|s| s.key == key)).map_or("", |s| s.unit);
+    let factor = m.factor;
+    let scalars: Vec<(&'static str, &'static str, &'static str)> =
+        cx.state.output().map(|o| o.scalars.iter().map(|s| (s.key, s.label, s.unit)).collect()).unwrap_or_default();
+    let mut params: Vec<(&'static str, &'static str)> = Vec::new();
+    {
+        let mut p = cx.state.params().clone();
+        for c in p.controls() {
+            if matches!(c.kind, crate::scene::ControlKind::Number { .. }) && !c.style_only {
+                params.push((c.key, c.label));
+            }
+        }
+    }
+    let (mut output, mut x, mut y) = (m.output.clone(), m.x.clone(), m.y.clone());
+    let unit = scalars.iter().find(|s| s.0 == output).map_or("", |s| s.2);
     let mut open = true;
     let mut clicked: Option<String> = None;
-    egui::Window::new("What matters")
+    let (mut recompute, mut draw, mut export) = (false, false, false);
+    egui::Window::new("Sensitivity")
         .open(&mut open)
-        .default_width(620.0)
+        .default_width(640.0)
         .default_height(0.85 * ctx.content_rect().height())
         .collapsible(true)
         .resizable(true)
         .vscroll(true)
         .show(ctx, |ui| {
-            ui.label(egui::RichText::new(format!("What moves {label}")).strong().size(text + 1.0));
-            let Some((at, x0, rows)) = &m.result else {
-                ui.label(egui::RichText::new("computing…").size(text));
-                return;
-            };
-            if at != cx.state.params() {
-                ui.colored_label(
-                    ui.visuals().warn_fg_color,
-                    "the parameters changed since: press “What matters” again for the current point",
-                );
+            ui.horizontal_wrapped(|ui| {
+                let shown = scalars.iter().find(|s| s.0 == output).map_or(output.clone(), |s| s.1.to_string());
+                let label = ui.label(egui::RichText::new("What moves").size(text));
+                egui::ComboBox::from_id_salt("sensitivity-output")
+                    .selected_text(shown)
+                    .width(220.0)
+                    .show_ui(ui, |ui| {
+                        for (k, l, _) in &scalars {
+                            ui.selectable_value(&mut output, k.to_string(), *l);
+                        }
+                    })
+                    .response
+                    .labelled_by(label.id);
+                recompute |= ui.button("What matters").on_hover_text("compute the chart for this result (M)").clicked();
+                export |= ui
+                    .button("Export")
+                    .on_hover_text("the chart's table (CSV) and the curve or map (PNG, SVG, CSV) to the export folder; opening any of them reopens this view")
+                    .clicked();
+            });
+            match &m.result {
+                None => {
+                    ui.label(egui::RichText::new("computing…").size(text));
+                }
+                Some((at, answer)) => {
+                    if at != cx.state.params() {
+                        ui.colored_label(
+                            ui.visuals().warn_fg_color,
+                            "the parameters changed since: press “What matters” again for the current point",
+                        );
+                    }
+                    let here = answer.here.mean.map_or("undefined".to_string(), human);
+                    let noise = match answer.here.sd {
+                        Some(sd) => format!(" ± {} (σ over {} seeds)", human(sd), answer.here.runs),
+                        None => String::new(),
+                    };
+                    ui.label(
+                        egui::RichText::new(format!("here {here}{noise} {unit}; each parameter ×÷ {}", human(factor)))
+                            .size(text),
+                    );
+                    if m.coarse {
+                        ui.colored_label(
+                            ui.visuals().warn_fg_color,
+                            egui::RichText::new(format!(
+                                "coarse first answer (the scene's quick preview settings); the full one is {:.0} % computed",
+                                100.0 * cx.work.progress
+                            ))
+                            .size(text),
+                        );
+                    }
+                    if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text) {
+                        clicked = Some(key);
+                    }
+                }
             }
-            ui.label(
-                egui::RichText::new(format!("here {} {unit}; each parameter ×÷ {}", human(*x0), human(factor)))
-                    .size(text),
-            );
-            if m.coarse {
-                ui.colored_label(
-                    ui.visuals().warn_fg_color,
-                    egui::RichText::new(format!(
-                        "coarse first answer (the scene's quick preview settings); the full one is {:.0} % computed",
-                        100.0 * cx.work.progress
-                    ))
-                    .size(text),
-                );
-            }
-            if let Some(key) = chart(ui, rows, *x0, text) {
-                clicked = Some(key);
-            }
+            ui.separator();
+            ui.horizontal_wrapped(|ui| {
+                let name = |k: &str| params.iter().find(|p| p.0 == k).map_or("(choose)".to_string(), |p| p.1.to_string());
+                let label = ui.label(egui::RichText::new("Across").size(text));
+                egui::ComboBox::from_id_salt("sensitivity-x")
+                    .selected_text(name(&x))
+                    .width(170.0)
+                    .show_ui(ui, |ui| {
+                        for (k, l) in &params {
+                            ui.selectable_value(&mut x, k.to_string(), *l);
+                        }
+                    })
+                    .response
+                    .labelled_by(label.id);
+                let label = ui.label(egui::RichText::new("and").size(text));
+                let shown_y = if y.is_empty() { "— (a curve)".to_string() } else { name(&y) };
+                egui::ComboBox::from_id_salt("sensitivity-y")
+                    .selected_text(shown_y)
+                    .width(170.0)
+                    .show_ui(ui, |ui| {
+                        ui.selectable_value(&mut y, String::new(), "— (a curve)");
+                        for (k, l) in &params {
+                            ui.selectable_value(&mut y, k.to_string(), *l);
+                        }
+                    })
+                    .response
+                    .labelled_by(label.id);
+                draw |= ui
+                    .add_enabled(!x.is_empty(), egui::Button::new("Draw"))
+                    .on_hover_text("the result over the whole range of one parameter (a curve) or two (a map)")
+                    .clicked();
+            });
             if let Some((at, fig)) = &m.curve {
-                ui.separator();
                 if at != cx.state.params() {
                     ui.colored_label(ui.visuals().warn_fg_color, "drawn for earlier parameters");
                 }
                 let look = super::look::plot_look(ui, lecture);
-                let size = egui::vec2(ui.available_width().max(300.0), if lecture { 250.0 } else { 240.0 });
+                let height = if fig.heatmap.is_some() { 340.0 } else { 260.0 };
+                let size = egui::vec2(ui.available_width().max(300.0), height);
                 super::plot::show(ui, fig, &super::plot::Overlay::default(), size, false, look, None);
+            } else if !m.x.is_empty() {
+                ui.label(egui::RichText::new(format!("drawing… {:.0} %", 100.0 * cx.work.progress)).size(text));
             }
             ui.small(
                 "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \
                  noise); bars: X with the parameter divided (blue) and multiplied (orange) by the factor, \
-                 within its range, on a log scale of X/X₀; sorted by the change of X. Click a parameter to draw X \
+                 within its range, on a log scale of X/X₀; sorted by the change of X. Monte Carlo results are \
+                 means over the seeds, with σ; “~” marks an effect below that noise. Click a parameter to draw X \
                  against it over its whole range.",
             );
         });
     if !open {
         cx.send(Command::CloseMatters);
+        return;
+    }
+    if output != cx.state.matters.output {
+        cx.send(Command::SetMatters(output, factor));
+        cx.send(Command::WhatMatters);
+    } else if recompute {
+        cx.send(Command::WhatMatters);
     }
     if let Some(key) = clicked {
-        cx.send(Command::MattersCurve(key));
+        cx.send(Command::DrawSensitivity(key, String::new()));
+    } else if draw && !x.is_empty() {
+        let y = if y == x { String::new() } else { y };
+        cx.send(Command::DrawSensitivity(x, y));
+    }
+    if export {
+        cx.send(Command::ExportSensitivity);
     }
 }
 
 /// The tornado chart with a row of numbers per parameter.
 /// Returns the key of a parameter whose name was clicked (to draw X against it).
-fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32) -> Option<String> {
+fn chart(ui: &mut egui::Ui, rows: &[crate::sensitivity::Influence], x0: f64, text: f32) -> Option<String> {
     let mut clicked = None;
     // Log scale of X/X₀ where every value is positive, else linear in X − X₀.
     let positive = x0 > 0.0 && rows.iter().flat_map(|r| r.range.iter().flatten()).all(|&x| x > 0.0);
@@ -117,6 +200,7 @@ fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32
                 Some(e) => format!("{e:+.3}{}", if r.converged { "" } else { " ?" }),
                 None => "—".to_string(),
             };
+            let e = if r.below_noise { format!("~ {e}") } else { e };
             ui.label(egui::RichText::new(e).size(text).monospace());
             let (rect, resp) = ui.allocate_exact_size(egui::vec2(bar_width, text + 2.0), egui::Sense::hover());
             let painter = ui.painter_at(rect);
@@ -133,11 +217,15 @@ fn chart(ui: &mut egui::Ui, rows: &[crate::sweep::Influence], x0: f64, text: f32
             }
             painter.vline(rect.center().x, rect.y_range(), ui.visuals().widgets.noninteractive.fg_stroke);
             let range = |x: Option<f64>| x.map_or("undefined".to_string(), human);
+            let sd = |s: Option<f64>| s.map_or(String::new(), |s| format!(" ± {}", human(s)));
+            let noise = if r.below_noise { " (below the noise of the seeds)" } else { "" };
             resp.on_hover_text(format!(
-                "X = {} at p ÷ factor, {} here, {} at p × factor",
+                "X = {}{} at p ÷ factor, {} here, {}{} at p × factor{noise}",
                 range(r.range[0]),
+                sd(r.range_sd[0]),
                 human(x0),
-                range(r.range[1])
+                range(r.range[1]),
+                sd(r.range_sd[1])
             ));
             ui.end_row();
         }

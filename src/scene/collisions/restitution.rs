@@ -240,6 +240,21 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
         self.collision.material_changed();
     }
 
+    /// The sticking velocity by its own search (as the e(v) panel finds it),
+    /// and the two closed-form velocities, without the figures.
+    fn scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
+        let setup = || self.check_ranges().map(|_| self.collision.setup()).map_err(SceneError::from);
+        match key {
+            "v_stick" => Some(setup().and_then(|s| {
+                progress.check()?;
+                Ok(sticking_search(&s, &self.collision.options(), V_STICK_PRECISION)?.velocity)
+            })),
+            "v_c" => Some(setup().map(|s| s.pair.jkr_sticking_velocity())),
+            "v_y" => Some(setup().map(|s| s.yield_velocity())),
+            _ => None,
+        }
+    }
+
     /// Computes the scene, reusing panels of `cache` whose inputs did not change.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         let (p, progress) = (self, ctx.progress);

@@ -381,14 +381,26 @@ pub fn matters_csv(m: &Matters, output: &str, factor: f64) -> String {
     t
 }
 
-/// The label and unit of scalar `output` at `base`, and its value there.
+/// The label and unit of scalar `output` of `base`'s scene (from one whole
+/// computation per scene and scalar, then remembered).
 fn scalar_meta(base: &SceneParams, output: &str, progress: &Progress) -> Result<(String, String), SceneError> {
+    static NAMES: OnceLock<Mutex<HashMap<String, (String, String)>>> = OnceLock::new();
+    let names = NAMES.get_or_init(|| Mutex::new(HashMap::new()));
+    let key = format!("{}\u{1f}{output}", base.info().id);
+    if let Some(found) = names.lock().ok().and_then(|n| n.get(&key).cloned()) {
+        return Ok(found);
+    }
     let here = scene::compute(base, progress)?;
-    here.scalars
+    let found = here
+        .scalars
         .iter()
         .find(|s| s.key == output)
         .map(|s| (s.label.to_string(), s.unit.to_string()))
-        .ok_or_else(|| PhysicsError::Invalid(format!("no scalar '{output}' in {}", base.info().id)).into())
+        .ok_or_else(|| PhysicsError::Invalid(format!("no scalar '{output}' in {}", base.info().id)))?;
+    if let Ok(mut n) = names.lock() {
+        n.insert(key, found.clone());
+    }
+    Ok(found)
 }
 
 /// The parameter `key` of `base`, with a finite range to draw over.
@@ -535,7 +547,8 @@ pub fn map(
         .map(|t| t.value)
         .collect();
     let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
-    let key = format!("contours of {output}");
+    let names: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
+    let key = format!("{output} = {}{unit_text}", names.join(", "));
     for level in levels {
         let at = if log { level.log10() } else { level };
         let pts = figure::contour::contour(
@@ -605,7 +618,7 @@ mod tests {
             p.set("radius_1", &radius.to_string()).expect("R1");
             p.set("radius_2", &radius.to_string()).expect("R2");
             let full = scene::compute(&p, &Progress::default()).expect("computes");
-            for key in ["v_stick", "v_c", "v_y"] {
+            for key in ["v_stick", "v_c", "v_y", "e_max"] {
                 let quick = scene::scalar(&p, key, &Progress::default()).expect("computes");
                 assert_eq!(quick.map(f64::to_bits), full.scalar(key).map(f64::to_bits), "{key} at γ = {gamma}");
             }

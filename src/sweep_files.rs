@@ -195,8 +195,12 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Vec<PathBuf>> {
 }
 
 /// The first scalar against the first varied parameter; with a second varied
-/// parameter, one line per value of it (up to 12). None without a scalar.
+/// parameter, one line per value of it (up to 12), or a map over both with
+/// more values. None without a scalar or with more than two parameters.
 fn figure_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
+    if plan.vary.len() == 2 && plan.vary[1].n > 12 {
+        return map_of(plan, columns, rows);
+    }
     let key = columns.keys.first()?;
     let axis = |v: &Vary, unit: &str| match v.spacing {
         Spacing::Log => Axis::log(&v.key, unit),
@@ -229,6 +233,52 @@ fn figure_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
             let style = if piece.len() == 1 { Style::Points } else { Style::Line };
             let label = if j == 0 { name.clone() } else { String::new() };
             fig = fig.with(Series::new(&label, piece, style, k));
+        }
+    }
+    Some(fig)
+}
+
+/// The first scalar over two varied parameters as a map: the second (the
+/// faster) across, the first up; undefined points blank.
+fn map_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
+    let key = columns.keys.first()?;
+    let (vy, vx) = (&plan.vary[0], &plan.vary[1]);
+    let axis = |v: &Vary, unit: &str| match v.spacing {
+        Spacing::Log => Axis::log(&v.key, unit),
+        Spacing::Lin => Axis::linear(&v.key, unit),
+    };
+    let scale = |v: &Vary| if v.spacing == Spacing::Log { figure::Scale::Log } else { figure::Scale::Linear };
+    let z: Vec<f64> = rows.iter().map(|r| r.scalars[0].unwrap_or(f64::NAN)).collect();
+    let (xs, ys) = (vx.values(), vy.values());
+    if z.len() != xs.len() * ys.len() {
+        return None;
+    }
+    let defined: Vec<f64> = z.iter().copied().filter(|v| v.is_finite()).collect();
+    let (lo, hi) = defined.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
+    let log = !defined.is_empty() && lo > 0.0 && hi > 10.0 * lo;
+    let shown: Vec<f64> = z.iter().map(|&v| if log { v.log10() } else { v }).collect();
+    let mut fig = Figure::new(
+        "sweep",
+        &format!("{key} over {} and {}", vx.key, vy.key),
+        axis(vx, &plan.units[1]),
+        axis(vy, &plan.units[0]),
+    );
+    let colour = if log { format!("log₁₀ {key}") } else { key.clone() };
+    fig.heatmap = Some(figure::Heatmap::new(xs.clone(), ys.clone(), shown.clone(), &colour, &columns.units[0]));
+    let levels: Vec<f64> =
+        figure::ticks::ticks(lo, hi, if log { figure::Scale::Log } else { figure::Scale::Linear }, 6)
+            .into_iter()
+            .filter(|t| t.is_major() && t.value > lo && t.value < hi)
+            .map(|t| t.value)
+            .collect();
+    let names: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
+    let legend = format!("{key} = {} {}", names.join(", "), columns.units[0]).trim_end().to_string();
+    for level in levels {
+        let at = if log { level.log10() } else { level };
+        let pts = figure::contour::contour(&xs, &ys, &shown, at, (scale(vx), scale(vy)));
+        if !pts.is_empty() {
+            let name = format!("{key} = {} {}", figure::human(level), columns.units[0]).trim_end().to_string();
+            fig = fig.with(Series::new(&name, pts, Style::Line, 6).keyed(legend.clone()));
         }
     }
     Some(fig)

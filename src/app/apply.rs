@@ -111,6 +111,7 @@ impl AppState {
             }
             Command::WhatMatters => self.what_matters(&mut fx),
             Command::CloseMatters => self.matters.open = false,
+            Command::MattersFigure(on) => self.matters.figure = on,
             Command::DrawSensitivity(x, y) => self.draw_sensitivity(x, y, &mut fx),
             Command::ExportSensitivity => self.export_sensitivity(&mut fx),
             Command::ResetAll => self.reset_all(),

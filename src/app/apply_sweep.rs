@@ -47,6 +47,7 @@ impl AppState {
             }
         }
         self.matters.open = true;
+        self.matters.figure = false;
         let coarse = SCENES[self.index()].heavy && self.params().coarse().is_some();
         fx.push(Effect::Submit(Job::WhatMatters {
             base: Box::new(self.params().clone()),
@@ -60,6 +61,7 @@ impl AppState {
     /// `x` and `y` as a map (`y` empty: a curve).
     pub(super) fn draw_sensitivity(&mut self, x: String, y: String, fx: &mut Vec<Effect>) {
         self.matters.curve = None;
+        self.matters.figure = true;
         self.matters.x = x.clone();
         self.matters.y = y.clone();
         fx.push(Effect::Submit(Job::Curve {

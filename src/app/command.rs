@@ -158,6 +158,8 @@ pub enum Command {
     WhatMatters,
     /// Close the "what matters" view.
     CloseMatters,
+    /// Show the view's curve or map (true) or its "what matters" chart.
+    MattersFigure(bool),
     /// Draw the "what matters" result against parameter `x` over its range,
     /// or over `x` and `y` as a map (`y` empty: a curve).
     DrawSensitivity(String, String),

@@ -157,6 +157,9 @@ pub struct Matters {
     pub y: String,
     /// Whether a file just opened asks for the view: computed on the next frame.
     pub reopen: bool,
+    /// Whether the view shows its curve or map (else its chart): one at a
+    /// time, so that each gets the window's height.
+    pub figure: bool,
 }
 
 impl Default for Matters {
@@ -171,6 +174,7 @@ impl Default for Matters {
             x: String::new(),
             y: String::new(),
             reopen: false,
+            figure: false,
         }
     }
 }

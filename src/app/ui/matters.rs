@@ -37,6 +37,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let mut open = true;
     let mut clicked: Option<String> = None;
     let (mut recompute, mut draw, mut export) = (false, false, false);
+    let mut tab: Option<bool> = None;
     egui::Window::new("Sensitivity")
         .open(&mut open)
         .default_width(640.0)
@@ -58,48 +59,12 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                     })
                     .response
                     .labelled_by(label.id);
-                recompute |= ui.button("What matters").on_hover_text("compute the chart for this result (M)").clicked();
+                recompute |= ui.button("Recompute").on_hover_text("the chart for this result at the current parameters (M)").clicked();
                 export |= ui
                     .button("Export")
                     .on_hover_text("the chart's table (CSV) and the curve or map (PNG, SVG, CSV) to the export folder; opening any of them reopens this view")
                     .clicked();
             });
-            match &m.result {
-                None => {
-                    ui.label(egui::RichText::new("computing…").size(text));
-                }
-                Some((at, answer)) => {
-                    if at != cx.state.params() {
-                        ui.colored_label(
-                            ui.visuals().warn_fg_color,
-                            "the parameters changed since: press “What matters” again for the current point",
-                        );
-                    }
-                    let here = answer.here.mean.map_or("undefined".to_string(), human);
-                    let noise = match answer.here.sd {
-                        Some(sd) => format!(" ± {} (σ over {} seeds)", human(sd), answer.here.runs),
-                        None => String::new(),
-                    };
-                    ui.label(
-                        egui::RichText::new(format!("here {here}{noise} {unit}; each parameter ×÷ {}", human(factor)))
-                            .size(text),
-                    );
-                    if m.coarse {
-                        ui.colored_label(
-                            ui.visuals().warn_fg_color,
-                            egui::RichText::new(format!(
-                                "coarse first answer (the scene's quick preview settings); the full one is {:.0} % computed",
-                                100.0 * cx.work.progress
-                            ))
-                            .size(text),
-                        );
-                    }
-                    if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text) {
-                        clicked = Some(key);
-                    }
-                }
-            }
-            ui.separator();
             ui.horizontal_wrapped(|ui| {
                 let name = |k: &str| params.iter().find(|p| p.0 == k).map_or("(choose)".to_string(), |p| p.1.to_string());
                 let label = ui.label(egui::RichText::new("Across").size(text));
@@ -131,24 +96,78 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                     .on_hover_text("the result over the whole range of one parameter (a curve) or two (a map)")
                     .clicked();
             });
-            if let Some((at, fig)) = &m.curve {
-                if at != cx.state.params() {
-                    ui.colored_label(ui.visuals().warn_fg_color, "drawn for earlier parameters");
+            ui.horizontal(|ui| {
+                if ui.selectable_label(!m.figure, egui::RichText::new("What matters").size(text)).clicked() {
+                    tab = Some(false);
                 }
-                let look = super::look::plot_look(ui, lecture);
-                let height = if fig.heatmap.is_some() { 340.0 } else { 260.0 };
-                let size = egui::vec2(ui.available_width().max(300.0), height);
-                super::plot::show(ui, fig, &super::plot::Overlay::default(), size, false, look, None);
-            } else if !m.x.is_empty() {
-                ui.label(egui::RichText::new(format!("drawing… {:.0} %", 100.0 * cx.work.progress)).size(text));
+                if ui.selectable_label(m.figure, egui::RichText::new("Curve or map").size(text)).clicked() {
+                    tab = Some(true);
+                }
+            });
+            ui.separator();
+            if m.figure {
+                if let Some((at, fig)) = &m.curve {
+                    if at != cx.state.params() {
+                        ui.colored_label(ui.visuals().warn_fg_color, "drawn for earlier parameters");
+                    }
+                    let look = super::look::plot_look(ui, lecture);
+                    let height = (0.62 * ctx.content_rect().height()).clamp(260.0, 620.0);
+                    let size = egui::vec2(ui.available_width().max(300.0), height);
+                    super::plot::show(ui, fig, &super::plot::Overlay::default(), size, false, look, None);
+                    if fig.heatmap.as_ref().is_some_and(|h| h.values.iter().any(|v| !v.is_finite()))
+                        || fig.series.iter().any(|s| s.name.is_empty() && s.style == crate::figure::Style::Line)
+                    {
+                        ui.small("blank or broken where the result is undefined (e.g. the spheres stick at every velocity)");
+                    }
+                } else if m.x.is_empty() {
+                    ui.label(egui::RichText::new("choose a parameter under “Across” (or click one in the chart)").size(text));
+                } else {
+                    ui.label(egui::RichText::new(format!("drawing… {:.0} %", 100.0 * cx.work.progress)).size(text));
+                }
+            } else {
+                match &m.result {
+                    None => {
+                        ui.label(egui::RichText::new("computing…").size(text));
+                    }
+                    Some((at, answer)) => {
+                        if at != cx.state.params() {
+                            ui.colored_label(
+                                ui.visuals().warn_fg_color,
+                                "the parameters changed since: press “What matters” again for the current point",
+                            );
+                        }
+                        let here = answer.here.mean.map_or("undefined".to_string(), human);
+                        let noise = match answer.here.sd {
+                            Some(sd) => format!(" ± {} (σ over {} seeds)", human(sd), answer.here.runs),
+                            None => String::new(),
+                        };
+                        ui.label(
+                            egui::RichText::new(format!("here {here}{noise} {unit}; each parameter ×÷ {}", human(factor)))
+                                .size(text),
+                        );
+                        if m.coarse {
+                            ui.colored_label(
+                                ui.visuals().warn_fg_color,
+                                egui::RichText::new(format!(
+                                    "coarse first answer (the scene's quick preview settings); the full one is {:.0} % computed",
+                                    100.0 * cx.work.progress
+                                ))
+                                .size(text),
+                            );
+                        }
+                        if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text) {
+                            clicked = Some(key);
+                        }
+                    }
+                }
+                ui.small(
+                    "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \
+                     noise); bars: X with the parameter divided (blue) and multiplied (orange) by the factor, \
+                     within its range, on a log scale of X/X₀; sorted by the change of X. Monte Carlo results are \
+                     means over the seeds, with σ; “~” marks an effect below that noise. Click a parameter to draw X \
+                     against it over its whole range.",
+                );
             }
-            ui.small(
-                "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \
-                 noise); bars: X with the parameter divided (blue) and multiplied (orange) by the factor, \
-                 within its range, on a log scale of X/X₀; sorted by the change of X. Monte Carlo results are \
-                 means over the seeds, with σ; “~” marks an effect below that noise. Click a parameter to draw X \
-                 against it over its whole range.",
-            );
         });
     if !open {
         cx.send(Command::CloseMatters);
@@ -168,6 +187,9 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     }
     if export {
         cx.send(Command::ExportSensitivity);
+    }
+    if let Some(on) = tab {
+        cx.send(Command::MattersFigure(on));
     }
 }
 

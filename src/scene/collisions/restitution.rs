@@ -241,7 +241,8 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
     }
 
     /// The sticking velocity by its own search (as the e(v) panel finds it),
-    /// and the two closed-form velocities, without the figures.
+    /// the two closed-form velocities, and the largest e from the e(v) panel
+    /// alone, without the other figures.
     fn scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
         let setup = || self.check_ranges().map(|_| self.collision.setup()).map_err(SceneError::from);
         match key {
@@ -250,6 +251,13 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
                 Ok(sticking_search(&s, &self.collision.options(), V_STICK_PRECISION)?.velocity)
             })),
             "v_c" => Some(setup().map(|s| s.pair.jkr_sticking_velocity())),
+            // The e(v) panel alone: e(R) and v_s(R) do not enter it.
+            "e_max" => Some(setup().and_then(|_| {
+                let velocities = logspace(self.v_min, self.v_max, self.n_velocities);
+                let done = AtomicUsize::new(0);
+                let panel = velocity_panel(self, &velocities, progress, &done, velocities.len() + 20)?;
+                Ok(panel.scalars.iter().find(|s| s.key == "e_max").map_or(f64::NAN, |s| s.value))
+            })),
             "v_y" => Some(setup().map(|s| s.yield_velocity())),
             _ => None,
         }

@@ -1,7 +1,8 @@
 //! Speed of the sensitivity tools: a 50-point curve of an analytic scene,
 //! the restitution scene's "what matters" (through the quick path to v_s,
 //! and through whole computations), a 24 × 24 map, each from a cold cache and
-//! again from a warm one. Run with `cargo bench --bench sensitivity`.
+//! again from a warm one, and the formation zone's ranking (coarse, then
+//! full: about two minutes). Run with `cargo bench --bench sensitivity`.
 
 use grainscope::scene::{Progress, SceneParams};
 use grainscope::sensitivity::{curve, map, what_matters};
@@ -42,6 +43,15 @@ fn main() {
     });
     time("map: v_stick over γ and T_vis, 24 × 24 (restitution)", || {
         map(&restitution, "v_stick", "surface_energy", "t_vis", 24, &progress).expect("map")
+    });
+    // The formation zone of Fig. 5.10: the window's coarse first answer, then the full one.
+    let zone = grainscope::preset::resolve("batch-fig-5-10").expect("shipped").scene;
+    let coarse = zone.coarse().expect("a coarse preview");
+    time("what matters: widest_zone, coarse first answer (Fig. 5.10)", || {
+        what_matters(&coarse, "widest_zone", 2.0, &progress).expect("matters")
+    });
+    time("what matters: widest_zone, full (Fig. 5.10)", || {
+        what_matters(&zone, "widest_zone", 2.0, &progress).expect("matters")
     });
     let kernels = scene("kernel-tests");
     time("what matters: events, seed by seed (kernel tests)", || {

@@ -46,7 +46,15 @@ pub struct Session {
     pub preset_path: String,
     /// Path typed for importing measurements.
     pub data_path: String,
+    /// How each scene shows its panels, by scene identifier: the identifier
+    /// of the one figure shown alone, or [`ALL_PANELS`] for every panel at
+    /// once; a scene without an entry shows them all when they fit at a
+    /// legible size, else one at a time.
+    pub panels: BTreeMap<String, String>,
 }
+
+/// The entry of [`Session::panels`] that shows every panel of a scene at once.
+pub const ALL_PANELS: &str = "all";
 
 impl Default for Session {
     fn default() -> Self {
@@ -62,6 +70,7 @@ impl Default for Session {
             export_dir: "exports".into(),
             preset_path: "presets/my-preset.ron".into(),
             data_path: "assets/examples/wall-mica-synthetic.csv".into(),
+            panels: BTreeMap::new(),
         }
     }
 }

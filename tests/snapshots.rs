@@ -110,6 +110,16 @@ fn every_scene_in_lecture_mode_at_projector_size() {
 }
 
 #[test]
+fn every_scene_in_the_window_at_projector_size() {
+    let Some(mut h) = harness(1024.0, 768.0) else { return };
+    let failures: Vec<String> = SCENES
+        .iter()
+        .filter_map(|s| check(&mut h, s.id, &format!("window-1024x768/scenes/{}", s.id), false, false).err())
+        .collect();
+    assert!(failures.is_empty(), "{} of {} snapshots differ:\n{}", failures.len(), SCENES.len(), failures.join("\n"));
+}
+
+#[test]
 fn the_ordinary_layout_dark_and_light_at_projector_and_desktop_sizes() {
     let first = SCENES[0].id;
     let mut failures = Vec::new();

@@ -111,6 +111,10 @@ impl AppState {
             }
             Command::WhatMatters => self.what_matters(&mut fx),
             Command::CloseMatters => self.matters.open = false,
+            Command::ShowPanel(id) => {
+                let scene = self.params().info().id.to_string();
+                self.session.panels.insert(scene, id);
+            }
             Command::MattersFigure(on) => self.matters.figure = on,
             Command::DrawSensitivity(x, y) => self.draw_sensitivity(x, y, &mut fx),
             Command::ExportSensitivity => self.export_sensitivity(&mut fx),

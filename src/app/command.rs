@@ -158,6 +158,9 @@ pub enum Command {
     WhatMatters,
     /// Close the "what matters" view.
     CloseMatters,
+    /// Show the open scene's figure with this identifier alone, or every
+    /// panel at once ([`crate::session::ALL_PANELS`]); remembered per scene.
+    ShowPanel(String),
     /// Show the view's curve or map (true) or its "what matters" chart.
     MattersFigure(bool),
     /// Draw the "what matters" result against parameter `x` over its range,

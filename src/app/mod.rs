@@ -229,15 +229,21 @@ impl GrainscopeApp {
                 .show(ui, |ui| self.panel(|cx| ui::presenter::notes(ui, cx)));
         }
         if !self.state.session.lecture {
-            egui::Panel::left("controls").resizable(true).default_size(360.0).show(ui, |ui| {
-                // The content never asks for more than the panel's width, so
-                // the panel changes width only when the user drags its edge.
-                let width = ui.available_width();
-                egui::ScrollArea::vertical().show(ui, |ui| {
-                    ui.set_max_width(width);
-                    self.panel(|cx| ui::scene_panel::show(ui, cx))
-                });
-            });
+            // A width the user drags within bounds: never more than ~40 % of
+            // the window, so that the figures keep the larger part of it.
+            let widest = (0.4 * ctx.content_rect().width()).max(320.0);
+            egui::Panel::left("controls").resizable(true).default_size(360.0).size_range(300.0..=widest).show(
+                ui,
+                |ui| {
+                    // The content never asks for more than the panel's width, so
+                    // the panel changes width only when the user drags its edge.
+                    let width = ui.available_width();
+                    egui::ScrollArea::vertical().show(ui, |ui| {
+                        ui.set_max_width(width);
+                        self.panel(|cx| ui::scene_panel::show(ui, cx))
+                    });
+                },
+            );
         }
         self.request();
         egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx)));

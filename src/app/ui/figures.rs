@@ -33,6 +33,79 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     });
 }
 
+/// The identifier of the contact sketch among a scene's panels.
+const SKETCH: &str = "contact-sketch";
+/// Height of the strip that picks the panel shown.
+const STRIP: f32 = 30.0;
+
+/// The strip of a multi-panel scene: every panel at once, or one of them
+/// alone (the one shown, if any, highlighted). Returns the choice clicked.
+fn strip(
+    ui: &mut egui::Ui,
+    ids: &[(String, String)],
+    alone: Option<usize>,
+    fits: bool,
+    lecture: bool,
+) -> Option<Command> {
+    let text = if lecture { 16.0 } else { 13.0 };
+    let mut picked = None;
+    // Titles shortened to fit a tab, in full where two would read alike.
+    let short = |title: &str| -> String {
+        if title.chars().count() > 44 {
+            format!("{}…", title.chars().take(43).collect::<String>().trim_end())
+        } else {
+            title.to_string()
+        }
+    };
+    let shorts: Vec<String> = ids.iter().map(|(_, t)| short(t)).collect();
+    let names: Vec<String> = ids
+        .iter()
+        .zip(&shorts)
+        .map(|((_, t), s)| if shorts.iter().filter(|o| *o == s).count() > 1 { t.clone() } else { s.clone() })
+        .collect();
+    // Many panels (a grid of experiments): a menu instead of a strip of tabs.
+    if ids.len() > 4 {
+        ui.horizontal(|ui| {
+            let label = ui.label(egui::RichText::new("Show").size(text));
+            let shown = alone.and_then(|k| names.get(k).cloned()).unwrap_or_else(|| "all panels".into());
+            egui::ComboBox::from_id_salt("panel-choice")
+                .selected_text(egui::RichText::new(shown).size(text))
+                .width(ui.available_width().min(420.0))
+                .show_ui(ui, |ui| {
+                    if ui.selectable_label(alone.is_none(), "all panels").clicked() {
+                        picked = Some(Command::ShowPanel(crate::session::ALL_PANELS.into()));
+                    }
+                    for (k, ((id, _), name)) in ids.iter().zip(&names).enumerate() {
+                        if ui.selectable_label(alone == Some(k), name).clicked() {
+                            picked = Some(Command::ShowPanel(id.clone()));
+                        }
+                    }
+                })
+                .response
+                .labelled_by(label.id);
+        });
+        return picked;
+    }
+    ui.horizontal_wrapped(|ui| {
+        let all = ui
+            .selectable_label(alone.is_none(), egui::RichText::new("All panels").size(text))
+            .on_hover_text(if fits { "every panel at once" } else { "every panel at once (small on this screen)" });
+        if all.clicked() {
+            picked = Some(Command::ShowPanel(crate::session::ALL_PANELS.into()));
+        }
+        ui.separator();
+        for (k, ((id, title), name)) in ids.iter().zip(&names).enumerate() {
+            let r = ui
+                .selectable_label(alone == Some(k), egui::RichText::new(name).size(text))
+                .on_hover_text(format!("{title}: this panel alone, across the whole figure area"));
+            if r.clicked() {
+                picked = Some(Command::ShowPanel(id.clone()));
+            }
+        }
+    });
+    picked
+}
+
 /// The "Lock axes" switch: keeps every plot's range while parameters change.
 fn lock_axes(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let mut lock = cx.state.locked.is_some();
@@ -80,21 +153,50 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     // a legible size, as many columns as fit, and the grid scrolls; the
     // first figure leads above them at twice the width.
     let multiples = n_panels > 6 && enlarged.is_none();
-    let avail = ui.available_size();
-    let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
-    let cols = match n_panels {
-        _ if multiples => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
-        1 => 1,
-        2..=4 => 2,
-        _ => 3,
+    // Panels below this size leave a plot area under ~400 × 260 px once
+    // titles, ticks and legends are placed: one at a time then.
+    let legible = egui::vec2(420.0, 340.0);
+    let grid = |avail: egui::Vec2| {
+        let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
+        let cols = match n_panels {
+            _ if multiples => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
+            1 => 1,
+            2..=4 => 2,
+            _ => 3,
+        };
+        // A narrow area (beside a ladder, a small window) takes fewer columns.
+        let cols = cols.min(((avail.x + 12.0) / (min_w + 12.0)).max(1.0) as usize);
+        let rows = n_panels.div_ceil(cols);
+        let raw = egui::vec2(avail.x / cols as f32 - 12.0, avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 });
+        (cols, raw, egui::vec2(raw.x.max(min_w), raw.y.max(min_h)))
     };
-    // A narrow area (beside a ladder, a small window) takes fewer columns.
-    let cols = cols.min(((avail.x + 12.0) / (min_w + 12.0)).max(1.0) as usize);
-    let rows = n_panels.div_ceil(cols);
-    let size = egui::vec2(
-        (avail.x / cols as f32 - 12.0).max(min_w),
-        (avail.y / rows as f32 - if lecture { 8.0 } else { 40.0 }).max(min_h),
-    );
+    // The panels one at a time (a strip to pick one) where they do not all
+    // fit at a legible size, or where the user picked one; remembered per scene.
+    let ids: Vec<(String, String)> = out
+        .figures
+        .iter()
+        .map(|f| (f.id.clone(), f.title.clone()))
+        .chain(trajectory.as_ref().map(|_| (SKETCH.to_string(), "Contact sketch".to_string())))
+        .collect();
+    let choice = state.session.panels.get(state.params().info().id);
+    let fits = {
+        let (_, raw, _) = grid(ui.available_size() - egui::vec2(0.0, STRIP));
+        raw.x >= legible.x && raw.y >= legible.y
+    };
+    let alone: Option<usize> = match choice.map(String::as_str) {
+        _ if enlarged.is_some() || n_panels < 2 => None,
+        Some(crate::session::ALL_PANELS) => None,
+        Some(id) if ids.iter().any(|(i, _)| i == id) => ids.iter().position(|(i, _)| i == id),
+        _ if fits => None,
+        _ => Some(0),
+    };
+    if n_panels > 1 && enlarged.is_none() {
+        if let Some(c) = strip(ui, &ids, alone, fits, lecture) {
+            cx.out.push(c);
+        }
+    }
+    let avail = ui.available_size();
+    let (cols, _, size) = grid(avail);
     let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
     let cursor_fraction = full_cursor.as_ref().map_or(0.0, |c| c.fraction);
     let cursor = full_cursor.filter(|c| state.marks_shown(c));
@@ -183,6 +285,12 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             }
             (None, None) => {}
         };
+        if let Some(k) = alone {
+            // One panel across the whole figure area.
+            let big = egui::vec2(avail.x - 12.0, avail.y - if lecture { 8.0 } else { 40.0 });
+            draw(ui, out.figures.get(k), big);
+            return;
+        }
         let lead = if multiples { Some(0) } else { enlarged };
         let items: Vec<Option<&Figure>> = out
             .figures

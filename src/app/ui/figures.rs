@@ -190,10 +190,11 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         _ if fits => None,
         _ => Some(0),
     };
-    if n_panels > 1 && enlarged.is_none() {
-        if let Some(c) = strip(ui, &ids, alone, fits, lecture) {
-            cx.out.push(c);
-        }
+    if n_panels > 1
+        && enlarged.is_none()
+        && let Some(c) = strip(ui, &ids, alone, fits, lecture)
+    {
+        cx.out.push(c);
     }
     let avail = ui.available_size();
     let (cols, _, size) = grid(avail);

@@ -120,6 +120,37 @@ fn every_scene_in_the_window_at_projector_size() {
 }
 
 #[test]
+fn every_slide_of_the_shipped_decks_in_presenter_mode_at_projector_size() {
+    use grainscope::app::command::Command;
+    let Some(mut h) = harness(1024.0, 768.0) else { return };
+    let mut failures = Vec::new();
+    let mut slides = 0;
+    for (file, _) in grainscope::deck::SHIPPED {
+        let name = file.trim_end_matches(".ron");
+        let mut deck = grainscope::deck::resolve(name).expect("a shipped deck");
+        // Monte Carlo slides cut to one short run, as in the scene snapshots.
+        for p in &mut deck.params {
+            if p.set("max_events_millions", "0.02").is_ok() {
+                p.set("runs", "1").expect("a Monte Carlo scene has runs");
+            }
+        }
+        let n = deck.deck.slides.len();
+        h.state_mut().apply(Command::Present(Box::new(deck), 0));
+        for i in 0..n {
+            h.state_mut().apply(Command::GoToSlide(i));
+            settle(&mut h, name);
+            let shot = format!("presenter-1024x768/{name}-{:02}", i + 1);
+            failures.extend(
+                h.try_snapshot_options(&shot, &SnapshotOptions::default()).err().map(|e| format!("{shot}: {e}")),
+            );
+            slides += 1;
+        }
+        h.state_mut().apply(Command::StopPresenting);
+    }
+    assert!(failures.is_empty(), "{} of {slides} slides differ:\n{}", failures.len(), failures.join("\n"));
+}
+
+#[test]
 fn the_ordinary_layout_dark_and_light_at_projector_and_desktop_sizes() {
     let first = SCENES[0].id;
     let mut failures = Vec::new();

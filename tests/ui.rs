@@ -361,6 +361,13 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     let deck = grainscope::deck::Deck::from_ron(DECK, "test", None).expect("deck");
     let mut h = harness_sized(1024.0, 768.0);
     settle(&mut h);
+    // The explorer before the deck: another scene, and hysteresis at 9 m/s.
+    let mut mine = h.state().params().clone();
+    mine.set("velocity", "9").expect("velocity");
+    h.state_mut().apply(Command::SetParams(Box::new(mine)));
+    let rocking = grainscope::scene::SCENES.iter().position(|s| s.id == "rocking").expect("scene");
+    h.state_mut().apply(Command::OpenScene(rocking));
+    settle(&mut h);
     h.state_mut().apply(Command::Present(Box::new(deck), 0));
     settle(&mut h);
     assert_eq!(scene_id(&h), "hysteresis");
@@ -406,6 +413,9 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     settle(&mut h);
     assert!(h.state().state.presenter.as_ref().is_none());
     assert!(!h.state().state.session.lecture, "leaving restores the look from before");
+    // ... and the scene and parameters from before.
+    assert_eq!(scene_id(&h), "rocking");
+    assert_eq!(number(&h.state().state.session.params["hysteresis"], "velocity"), 9.0);
 }
 
 /// A slider drag is one undo step: Ctrl+Z restores the value from before
@@ -707,6 +717,8 @@ fn panels_that_do_not_fit_show_one_at_a_time_and_the_choice_is_kept_per_scene() 
 #[test]
 fn the_sensitivity_key_opens_the_view_and_a_map_draws_over_two_parameters() {
     let mut h = harness();
+    let i = grainscope::scene::SCENES.iter().position(|s| s.id == "hysteresis").expect("scene");
+    h.state_mut().apply(Command::OpenScene(i));
     h.run();
     assert!(!h.state().state.matters.open);
     h.key_press(egui::Key::M);

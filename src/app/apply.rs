@@ -45,11 +45,7 @@ impl AppState {
             Command::ApplyPreset(p, origin) => self.apply_preset(*p, &origin),
             Command::Present(deck, at) => self.present(*deck, at),
             Command::GoToSlide(i) => self.go_to_slide(i),
-            Command::StopPresenting => {
-                if let Some(p) = self.presenter.take() {
-                    self.session.lecture = p.lecture_before;
-                }
-            }
+            Command::StopPresenting => self.stop_presenting(),
             Command::OpenBytes(picked) => self.open_bytes(picked, Then::Open),
             Command::OpenPath(path) => fx.push(Effect::Read(path, Then::Open)),
             Command::LoadDataPath => fx.push(Effect::Read(self.session.data_path.clone(), Then::Import)),
@@ -111,10 +107,14 @@ impl AppState {
             }
             Command::WhatMatters => self.what_matters(&mut fx),
             Command::CloseMatters => self.matters.open = false,
-            Command::ShowPanel(id) => {
-                let scene = self.params().info().id.to_string();
-                self.session.panels.insert(scene, id);
-            }
+            Command::ShowPanel(id) => match &mut self.presenter {
+                // On a slide the choice holds for the slide; in the explorer, for the scene.
+                Some(p) => p.panel = Some(id),
+                None => {
+                    let scene = self.params().info().id.to_string();
+                    self.session.panels.insert(scene, id);
+                }
+            },
             Command::MattersFigure(on) => self.matters.figure = on,
             Command::DrawSensitivity(x, y) => self.draw_sensitivity(x, y, &mut fx),
             Command::ExportSensitivity => self.export_sensitivity(&mut fx),
@@ -176,8 +176,8 @@ impl AppState {
             Action::Leave => {
                 if self.help {
                     self.help = false;
-                } else if let Some(p) = self.presenter.take() {
-                    self.session.lecture = p.lecture_before;
+                } else if self.presenter.is_some() {
+                    self.stop_presenting();
                 } else {
                     self.session.lecture = false;
                 }

@@ -11,12 +11,20 @@ impl AppState {
     /// Starts presenting `deck` at slide `at` (0-based): the lecture look,
     /// the slide's state applied.
     pub fn present(&mut self, deck: LoadedDeck, at: usize) {
-        let lecture_before = match &self.presenter {
-            Some(p) => p.lecture_before,
-            None => self.session.lecture,
+        let (lecture_before, explorer_before) = match self.presenter.take() {
+            Some(p) => (p.lecture_before, p.explorer_before),
+            None => (self.session.lecture, (self.session.scene.clone(), self.session.params.clone())),
         };
         let n = deck.deck.slides.len();
-        self.presenter = Some(Presenter { deck, index: 0, notes: false, notes_window: false, lecture_before });
+        self.presenter = Some(Presenter {
+            deck,
+            index: 0,
+            notes: false,
+            notes_window: false,
+            lecture_before,
+            explorer_before,
+            panel: None,
+        });
         self.session.lecture = true;
         self.go_to_slide(at.min(n.saturating_sub(1)));
     }
@@ -26,6 +34,7 @@ impl AppState {
         let Some(p) = &mut self.presenter else { return };
         let Some(params) = p.deck.params.get(i).cloned() else { return };
         p.index = i;
+        p.panel = p.deck.deck.slides[i].enlarge.clone();
         let title = p.deck.deck.slides[i].title.clone();
         let id = params.info().id;
         self.session.params.insert(id.to_string(), params);
@@ -35,6 +44,20 @@ impl AppState {
         self.playback.playing = false;
         self.status = format!("slide {}: {title}", i + 1);
         self.error = None;
+    }
+
+    /// Leaves presenter mode: back to the scene, parameters and lecture
+    /// mode the user had before the deck.
+    pub(super) fn stop_presenting(&mut self) {
+        if let Some(p) = self.presenter.take() {
+            self.session.lecture = p.lecture_before;
+            let (scene, params) = p.explorer_before;
+            self.session.params = params;
+            if let Some(k) = SCENES.iter().position(|s| s.id == scene) {
+                self.open_scene(k);
+            }
+            self.status = "left the deck: back to the scene as it was".into();
+        }
     }
 
     /// Moves `by` slides (stays at the ends).

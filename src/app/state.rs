@@ -33,6 +33,13 @@ pub struct Presenter {
     pub notes_window: bool,
     /// Whether lecture mode was on before presenting (restored on leaving).
     pub lecture_before: bool,
+    /// The scene and every scene's parameters before presenting: leaving
+    /// the deck returns to them.
+    pub explorer_before: (String, std::collections::BTreeMap<String, SceneParams>),
+    /// The figure shown alone on this slide (the slide's enlarged figure
+    /// when it names one, or the one picked), or every panel
+    /// ([`crate::session::ALL_PANELS`]); None: as the screen allows.
+    pub panel: Option<String>,
 }
 
 impl Presenter {

@@ -1,5 +1,5 @@
 //! The figure area: the open scene's figures laid out as panels (a lead
-//! figure, small multiples, an enlarged slide figure), with pins, the time
+//! figure, small multiples, or one panel alone with a strip to pick it), with pins, the time
 //! cursor and the inspected point drawn over them, a ladder of linked
 //! numbers or the contact sketch beside them, and their export buttons.
 
@@ -142,17 +142,10 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         Extra::Paths(_) | Extra::Model(_) | Extra::Ladder(_) | Extra::None => None,
     };
     let n_panels = out.figures.len() + usize::from(trajectory.is_some());
-    // A slide may enlarge one figure: it leads across the full width,
-    // the others share one row below it.
-    let enlarged = state
-        .presenter
-        .as_ref()
-        .and_then(|p| p.slide().enlarge.clone())
-        .and_then(|id| out.figures.iter().position(|f| f.id == id));
     // Many panels (a grid of experiments) are small multiples: each keeps
     // a legible size, as many columns as fit, and the grid scrolls; the
     // first figure leads above them at twice the width.
-    let multiples = n_panels > 6 && enlarged.is_none();
+    let multiples = n_panels > 6;
     // Panels below this size leave a plot area under ~400 × 260 px once
     // titles, ticks and legends are placed: one at a time then.
     let legible = egui::vec2(420.0, 340.0);
@@ -178,20 +171,23 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         .map(|f| (f.id.clone(), f.title.clone()))
         .chain(trajectory.as_ref().map(|_| (SKETCH.to_string(), "Contact sketch".to_string())))
         .collect();
-    let choice = state.session.panels.get(state.params().info().id);
+    let choice = match &state.presenter {
+        Some(p) => p.panel.as_ref(),
+        None => state.session.panels.get(state.params().info().id),
+    };
     let fits = {
         let (_, raw, _) = grid(ui.available_size() - egui::vec2(0.0, STRIP));
         raw.x >= legible.x && raw.y >= legible.y
     };
     let alone: Option<usize> = match choice.map(String::as_str) {
-        _ if enlarged.is_some() || n_panels < 2 => None,
+        _ if n_panels < 2 => None,
         Some(crate::session::ALL_PANELS) => None,
         Some(id) if ids.iter().any(|(i, _)| i == id) => ids.iter().position(|(i, _)| i == id),
         _ if fits => None,
         _ => Some(0),
     };
+    // (A slide that enlarges a figure shows it alone, the others a click away.)
     if n_panels > 1
-        && enlarged.is_none()
         && let Some(c) = strip(ui, &ids, alone, fits, lecture)
     {
         cx.out.push(c);
@@ -240,11 +236,6 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
                 look.legend = !legends_shown.contains(&signature);
                 legends_shown.push(signature);
             }
-            // Beside an enlarged figure the small plots keep their
-            // height: no legend (hovering still names each curve).
-            if enlarged.is_some_and(|k| out.figures.get(k).is_some_and(|f| f.id != fig.id)) {
-                look.legend = false;
-            }
             ui.vertical(|ui| {
                 let shown = plot::show(ui, fig, &overlay, size, stale, look, locked);
                 memo.plot_rects.push(shown.response.rect);
@@ -292,7 +283,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             draw(ui, out.figures.get(k), big);
             return;
         }
-        let lead = if multiples { Some(0) } else { enlarged };
+        let lead = if multiples { Some(0) } else { None };
         let items: Vec<Option<&Figure>> = out
             .figures
             .iter()
@@ -301,22 +292,6 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             .map(|(_, f)| Some(f))
             .chain(trajectory.as_ref().map(|_| None))
             .collect();
-        if let Some(k) = enlarged {
-            // The enlarged figure fills most of the width; the others
-            // stack beside it.
-            let side_w = if items.is_empty() { 0.0 } else { (0.34 * avail.x).max(220.0) };
-            let lead_size = egui::vec2(avail.x - side_w - 16.0, avail.y - 8.0);
-            let each = egui::vec2(side_w - 8.0, ((avail.y - 8.0) / items.len().max(1) as f32 - 10.0).max(140.0));
-            ui.horizontal_top(|ui| {
-                draw(ui, out.figures.get(k), lead_size);
-                ui.vertical(|ui| {
-                    for item in &items {
-                        draw(ui, *item, each);
-                    }
-                });
-            });
-            return;
-        }
         if let Some(fig) = lead.and_then(|k| out.figures.get(k)) {
             draw(ui, Some(fig), lead_size);
         }

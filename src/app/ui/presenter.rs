@@ -13,7 +13,9 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let title = p.slide().title.clone();
     let (notes, notes_window) = (p.notes, p.notes_window);
     let highlight = p.slide().highlight.clone();
-    ui.horizontal(|ui| {
+    // The title in full (it wraps); the buttons follow it, on the next line
+    // where the title leaves no room.
+    ui.horizontal_wrapped(|ui| {
         if ui.button("◀").on_hover_text("previous slide (←, Page Up)").clicked() {
             cx.send(Command::Act(Action::PreviousSlide));
         }
@@ -22,36 +24,32 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             cx.send(Command::Act(Action::NextSlide));
         }
         ui.separator();
-        // The buttons keep the right end; a long title is cut before them.
-        ui.with_layout(egui::Layout::right_to_left(egui::Align::Center), |ui| {
-            if ui.button("Leave").on_hover_text("leave presenter mode (Esc)").clicked() {
-                cx.send(Command::StopPresenting);
-            }
-            if ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked() {
-                cx.send(Command::Act(Action::ResetSlide));
-            }
-            let mut params = cx.state.lecture_params;
-            if ui
-                .toggle_value(&mut params, "Parameters")
-                .on_hover_text("every parameter of the scene, over the plots")
-                .changed()
-            {
-                cx.send(Command::SetLectureParams(params));
-            }
-            if ui.selectable_label(notes, "Notes").on_hover_text("speaker notes under the plots (N)").clicked() {
-                cx.send(Command::Act(Action::ToggleNotes));
-            }
-            if ui
-                .selectable_label(notes_window, "Notes window")
-                .on_hover_text("speaker notes in a window of their own, for a second screen (W)")
-                .clicked()
-            {
-                cx.send(Command::Act(Action::NotesWindow));
-            }
-            ui.with_layout(egui::Layout::left_to_right(egui::Align::Center), |ui| {
-                ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).truncate());
-            });
-        });
+        ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).wrap());
+        ui.separator();
+        if ui.selectable_label(notes, "Notes").on_hover_text("speaker notes under the plots (N)").clicked() {
+            cx.send(Command::Act(Action::ToggleNotes));
+        }
+        if ui
+            .selectable_label(notes_window, "Notes window")
+            .on_hover_text("speaker notes in a window of their own, for a second screen (W)")
+            .clicked()
+        {
+            cx.send(Command::Act(Action::NotesWindow));
+        }
+        let mut params = cx.state.lecture_params;
+        if ui
+            .toggle_value(&mut params, "Parameters")
+            .on_hover_text("every parameter of the scene, over the plots")
+            .changed()
+        {
+            cx.send(Command::SetLectureParams(params));
+        }
+        if ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked() {
+            cx.send(Command::Act(Action::ResetSlide));
+        }
+        if ui.button("Leave").on_hover_text("leave presenter mode (Esc)").clicked() {
+            cx.send(Command::StopPresenting);
+        }
     });
     if !highlight.is_empty() {
         // The slide's highlighted controls in one row, after the headline.

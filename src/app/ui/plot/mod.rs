@@ -18,7 +18,20 @@ mod paint;
 use paint::{corner_rect, heatmap, legend_size_one, paint_bar, paint_entry, paint_legend};
 
 fn rgb(c: [u8; 3], faded: bool) -> Color32 {
-    if faded { Color32::from_rgba_unmultiplied(c[0], c[1], c[2], 150) } else { Color32::from_rgb(c[0], c[1], c[2]) }
+    if faded { Color32::from_rgba_unmultiplied(c[0], c[1], c[2], 110) } else { Color32::from_rgb(c[0], c[1], c[2]) }
+}
+
+/// A band across the top of a plot that says what it shows is not the
+/// result yet (a coarse preview, a live view of a run, or the result of the
+/// parameters before): an audience must not read it as the answer.
+fn provisional(ui: &egui::Ui, frame: Rect, look: Look) {
+    let painter = ui.painter_at(frame);
+    let text = "provisional: the full result is computing";
+    let galley = painter.layout_no_wrap(text.into(), egui::FontId::proportional(look.text), Color32::BLACK);
+    let size = galley.size() + Vec2::new(16.0, 8.0);
+    let band = Rect::from_min_size(egui::pos2(frame.center().x - size.x / 2.0, frame.top() + 6.0), size);
+    painter.rect_filled(band, 4.0, Color32::from_rgba_unmultiplied(255, 196, 64, 230));
+    painter.galley(band.min + Vec2::new(8.0, 4.0), galley, Color32::BLACK);
 }
 
 fn transform(v: f64, scale: Scale) -> Option<f64> {
@@ -323,6 +336,9 @@ pub fn show(
                 let px = [plot_size.x as f64 / (bx.1 - bx.0), plot_size.y as f64 / (by.1 - by.0)];
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look, px));
                 let frame = *shown.transform.frame();
+                if stale {
+                    provisional(ui, frame, look);
+                }
                 // A click (not a drag) at a point of the plot, in axis units.
                 let clicked =
                     shown.response.clicked().then(|| shown.response.interact_pointer_pos()).flatten().map(|pos| {

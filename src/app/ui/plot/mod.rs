@@ -201,10 +201,25 @@ fn pin_range(overlay: &Overlay) -> Option<(f64, f64)> {
     (overlay.family.is_some() && lo <= hi).then_some((lo, hi))
 }
 
+/// Colours of pinned curves: Paul Tol's "muted" scheme (colour-blind safe),
+/// the hues that the figures' own Okabe–Ito colours do not use, so that a
+/// pin never reads as one of the scene's reference curves.
+const PIN_PALETTE: [[u8; 3]; 8] = [
+    [51, 34, 136],
+    [204, 102, 119],
+    [17, 119, 51],
+    [170, 68, 153],
+    [136, 34, 85],
+    [153, 153, 51],
+    [68, 170, 153],
+    [221, 204, 119],
+];
+
 fn pin_color(s: &Series, overlay: &Overlay) -> [u8; 3] {
     match (&overlay.family, s.family, pin_range(overlay)) {
         (Some(f), Some(v), Some((lo, hi))) => colormap(family_fraction(v, lo, hi, f.scale)),
-        _ => crate::figure::PALETTE[s.color % crate::figure::PALETTE.len()],
+        // Pins are numbered from 1.
+        _ => PIN_PALETTE[s.color.saturating_sub(1) % PIN_PALETTE.len()],
     }
 }
 

@@ -261,8 +261,9 @@ pub fn show(
             .iter()
             .map(|e| ui.painter().layout_no_wrap(e.text.clone(), font.clone(), Color32::WHITE).size().x)
             .fold(0.0f32, f32::max);
-        let legend_size = Vec2::new(text_w + 46.0, legend.len() as f32 * row + 10.0);
-        let bar_w = if bar.is_some() { 34.0 + 5.5 * look.text } else { 0.0 };
+        // Swatch, gaps and a margin after the longest entry.
+        let legend_size = Vec2::new(text_w + 54.0, legend.len() as f32 * row + 10.0);
+        let bar_w = if bar.is_some() { 36.0 + 6.0 * look.text } else { 0.0 };
         let mut plot_size = Vec2::new(size.x - bar_w, size.y - look.text * 1.6 - 6.0);
         // Whether the legend found no free corner in the last frame, measured
         // on the plot as drawn (its frame and range); it then goes outside.

@@ -174,7 +174,7 @@ pub(super) fn paint_bar(ui: &egui::Ui, b: &ColourBar, rect: Rect, look: Look) {
     }
     let text_color = ui.visuals().text_color();
     painter.rect_stroke(bar, 0.0, Stroke::new(1.0, text_color), egui::StrokeKind::Inside);
-    let font = egui::FontId::proportional(look.text * 0.9);
+    let font = egui::FontId::proportional(look.text);
     let mut widest: f32 = 0.0;
     let bar_ticks = if b.hi > b.lo { ticks(b.lo, b.hi, b.scale, 5) } else { Vec::new() };
     for t in &bar_ticks {
@@ -199,7 +199,7 @@ pub(super) fn paint_bar(ui: &egui::Ui, b: &ColourBar, rect: Rect, look: Look) {
         );
         widest = r.width();
     }
-    let galley = painter.layout_no_wrap(b.title.clone(), egui::FontId::proportional(look.text * 0.9), text_color);
+    let galley = painter.layout_no_wrap(b.title.clone(), egui::FontId::proportional(look.text), text_color);
     let x = (bar.right() + 10.0 + widest).min(rect.right() - galley.size().y);
     let pos = Pos2::new(x, bar.center().y + galley.size().x / 2.0);
     painter.add(egui::epaint::TextShape::new(pos, galley, text_color).with_angle(-std::f32::consts::FRAC_PI_2));

@@ -415,12 +415,52 @@ fn knob(base: &SceneParams, key: &str) -> Result<Knob, SceneError> {
     Ok(k)
 }
 
-/// `n` values over a parameter's whole range (log-spaced where its control
-/// is logarithmic), and whether they are log-spaced.
-fn span(k: &Knob, n: usize) -> (Vec<f64>, bool) {
-    let log = k.log && k.min > 0.0;
-    let spacing = if log { Spacing::Log } else { Spacing::Lin };
-    (Vary { key: k.key.to_string(), spacing, from: k.min, to: k.max, n: n.max(2) }.values(), log)
+/// `n` values over a parameter's whole range, log-spaced where its control
+/// is logarithmic.
+fn span(k: &Knob, n: usize) -> Vary {
+    let spacing = if k.log && k.min > 0.0 { Spacing::Log } else { Spacing::Lin };
+    Vary { key: k.key.to_string(), spacing, from: k.min, to: k.max, n: n.max(2) }
+}
+
+/// `fig` (whose axes give the scales) with a map of scalar `zs` over the
+/// grid `xs` × `ys` (row by row in y; None undefined, left blank): a colour
+/// map, log₁₀ where the scalar is positive and spans more than a decade,
+/// and contours at the labelled ticks of its range, named by their levels.
+/// `names` are the scalar's key (in the contour legend), label (on the
+/// colour bar) and unit. The sensitivity maps and the command line's
+/// two-parameter sweeps draw their maps here.
+pub fn map_figure(
+    mut fig: Figure,
+    (xs, ys): (&[f64], &[f64]),
+    zs: &[Option<f64>],
+    names: (&str, &str, &str),
+) -> Figure {
+    let (key, label, unit) = names;
+    let defined: Vec<f64> = zs.iter().flatten().copied().filter(|z| z.is_finite()).collect();
+    let (lo, hi) = defined.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &z| (a.min(z), b.max(z)));
+    let log = !defined.is_empty() && lo > 0.0 && hi > 10.0 * lo;
+    let shown: Vec<f64> = zs.iter().map(|z| z.map_or(f64::NAN, |z| if log { z.log10() } else { z })).collect();
+    let colour = if log { format!("log₁₀ {label}") } else { label.to_string() };
+    fig.heatmap = Some(Heatmap::new(xs.to_vec(), ys.to_vec(), shown.clone(), &colour, unit));
+    let scale = if log { Scale::Log } else { Scale::Linear };
+    let levels: Vec<f64> = figure::ticks::ticks(lo, hi, scale, 6)
+        .into_iter()
+        .filter(|t| t.is_major() && t.value > lo && t.value < hi)
+        .map(|t| t.value)
+        .collect();
+    let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+    let list: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
+    let legend = format!("{key} = {}{unit_text}", list.join(", "));
+    let scales = (fig.x.scale, fig.y.scale);
+    for level in levels {
+        let at = if log { level.log10() } else { level };
+        let pts = figure::contour::contour(xs, ys, &shown, at, scales);
+        if !pts.is_empty() {
+            let name = format!("{key} = {}{unit_text}", figure::human(level));
+            fig = fig.with(Series::new(name, pts, Style::Line, 6).keyed(legend.clone()));
+        }
+    }
+    fig
 }
 
 /// An axis for a parameter.
@@ -434,7 +474,8 @@ fn axis_of(k: &Knob, log: bool) -> Axis {
 /// the seeds for a Monte Carlo scene, and the current value marked.
 pub fn curve(base: &SceneParams, output: &str, key: &str, n: usize, progress: &Progress) -> Result<Figure, SceneError> {
     let k = knob(base, key)?;
-    let (xs, log) = span(&k, n);
+    let vary = span(&k, n);
+    let (xs, log) = (vary.values(), vary.spacing == Spacing::Log);
     let points: Vec<SceneParams> = xs.iter().filter_map(|&x| with(base, key, x)).collect();
     if points.len() != xs.len() {
         return Err(PhysicsError::Invalid(format!("'{key}' refuses values inside its own range")).into());
@@ -501,68 +542,21 @@ pub fn map(
         return Err(PhysicsError::Invalid("a map needs two different parameters".into()).into());
     }
     let (kx, ky) = (knob(base, key_x)?, knob(base, key_y)?);
-    let (xs, log_x) = span(&kx, n);
-    let (ys, log_y) = span(&ky, n);
-    let plan = Plan::new(
-        base.clone(),
-        vec![
-            Vary {
-                key: key_y.into(),
-                spacing: if log_y { Spacing::Log } else { Spacing::Lin },
-                from: ys[0],
-                to: ys[ys.len() - 1],
-                n: ys.len(),
-            },
-            Vary {
-                key: key_x.into(),
-                spacing: if log_x { Spacing::Log } else { Spacing::Lin },
-                from: xs[0],
-                to: xs[xs.len() - 1],
-                n: xs.len(),
-            },
-        ],
-    )
-    .map_err(|e| PhysicsError::Invalid(e.to_string()))?;
+    let (vx, vy) = (span(&kx, n), span(&ky, n));
+    let (xs, ys) = (vx.values(), vy.values());
+    let (log_x, log_y) = (vx.spacing == Spacing::Log, vy.spacing == Spacing::Log);
     // The plan's last parameter runs fastest: x, row by row in y, as a heatmap wants.
+    let plan = Plan::new(base.clone(), vec![vy, vx]).map_err(|e| PhysicsError::Invalid(e.to_string()))?;
     let points: Vec<SceneParams> = (0..plan.len()).map(|i| plan.params_at(i)).collect::<Result<_, _>>()?;
     let zs: Vec<Option<f64>> = values(&points, output, progress)?.iter().map(|v| v.mean).collect();
     let (label, unit) = scalar_meta(base, output, progress)?;
-    let defined: Vec<f64> = zs.iter().flatten().copied().collect();
-    let (lo, hi) = defined.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &z| (a.min(z), b.max(z)));
-    let log = !defined.is_empty() && lo > 0.0 && hi > 10.0 * lo;
-    let shown: Vec<f64> = zs.iter().map(|z| z.map_or(f64::NAN, |z| if log { z.log10() } else { z })).collect();
-    let mut fig = Figure::new(
+    let fig = Figure::new(
         "sensitivity-map",
         &format!("{label} over {} and {}", kx.label, ky.label),
         axis_of(&kx, log_x),
         axis_of(&ky, log_y),
     );
-    let colour = if log { format!("log₁₀ {label}") } else { label.clone() };
-    fig.heatmap = Some(Heatmap::new(xs.clone(), ys.clone(), shown.clone(), &colour, &unit));
-    // Contours at the labelled ticks of X's range, each named by its level.
-    let scale = if log { Scale::Log } else { Scale::Linear };
-    let levels: Vec<f64> = figure::ticks::ticks(lo, hi, scale, 6)
-        .into_iter()
-        .filter(|t| t.is_major() && t.value > lo && t.value < hi)
-        .map(|t| t.value)
-        .collect();
-    let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
-    let names: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
-    let key = format!("{output} = {}{unit_text}", names.join(", "));
-    for level in levels {
-        let at = if log { level.log10() } else { level };
-        let pts = figure::contour::contour(
-            &xs,
-            &ys,
-            &shown,
-            at,
-            (if log_x { Scale::Log } else { Scale::Linear }, if log_y { Scale::Log } else { Scale::Linear }),
-        );
-        if !pts.is_empty() {
-            let name = format!("{output} = {}{unit_text}", figure::human(level));
-            fig = fig.with(Series::new(name, pts, Style::Line, 6).keyed(key.clone()));
-        }
-    }
+    let fig = map_figure(fig, (&xs, &ys), &zs, (output, &label, &unit));
     Ok(fig.with(Series::new("current point", vec![[kx.value, ky.value]], Style::Marker, 1)))
 }
 

@@ -247,39 +247,17 @@ fn map_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
         Spacing::Log => Axis::log(&v.key, unit),
         Spacing::Lin => Axis::linear(&v.key, unit),
     };
-    let scale = |v: &Vary| if v.spacing == Spacing::Log { figure::Scale::Log } else { figure::Scale::Linear };
-    let z: Vec<f64> = rows.iter().map(|r| r.scalars[0].unwrap_or(f64::NAN)).collect();
+    let zs: Vec<Option<f64>> = rows.iter().map(|r| r.scalars[0]).collect();
     let (xs, ys) = (vx.values(), vy.values());
-    if z.len() != xs.len() * ys.len() {
+    if zs.len() != xs.len() * ys.len() {
         return None;
     }
-    let defined: Vec<f64> = z.iter().copied().filter(|v| v.is_finite()).collect();
-    let (lo, hi) = defined.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| (a.min(v), b.max(v)));
-    let log = !defined.is_empty() && lo > 0.0 && hi > 10.0 * lo;
-    let shown: Vec<f64> = z.iter().map(|&v| if log { v.log10() } else { v }).collect();
-    let mut fig = Figure::new(
+    let fig = Figure::new(
         "sweep",
         &format!("{key} over {} and {}", vx.key, vy.key),
         axis(vx, &plan.units[1]),
         axis(vy, &plan.units[0]),
     );
-    let colour = if log { format!("log₁₀ {key}") } else { key.clone() };
-    fig.heatmap = Some(figure::Heatmap::new(xs.clone(), ys.clone(), shown.clone(), &colour, &columns.units[0]));
-    let levels: Vec<f64> =
-        figure::ticks::ticks(lo, hi, if log { figure::Scale::Log } else { figure::Scale::Linear }, 6)
-            .into_iter()
-            .filter(|t| t.is_major() && t.value > lo && t.value < hi)
-            .map(|t| t.value)
-            .collect();
-    let names: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
-    let legend = format!("{key} = {} {}", names.join(", "), columns.units[0]).trim_end().to_string();
-    for level in levels {
-        let at = if log { level.log10() } else { level };
-        let pts = figure::contour::contour(&xs, &ys, &shown, at, (scale(vx), scale(vy)));
-        if !pts.is_empty() {
-            let name = format!("{key} = {} {}", figure::human(level), columns.units[0]).trim_end().to_string();
-            fig = fig.with(Series::new(&name, pts, Style::Line, 6).keyed(legend.clone()));
-        }
-    }
+    let fig = crate::sensitivity::map_figure(fig, (&xs, &ys), &zs, (key, key, &columns.units[0]));
     Some(fig)
 }

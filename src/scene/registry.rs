@@ -105,7 +105,6 @@ macro_rules! scenes {
                 }
             }
 
-            /// Computes the scene without validating first.
             /// The scene's own quick path to scalar `key`, if it has one.
             fn quick_scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
                 match self {
@@ -113,6 +112,7 @@ macro_rules! scenes {
                 }
             }
 
+            /// Computes the scene without validating first.
             fn dispatch(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
                 match self {
                     $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::compute(p, ctx), )*)*

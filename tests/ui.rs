@@ -748,7 +748,13 @@ fn an_exported_sensitivity_view_reopens_from_its_file() {
     wait_until(&mut h, 60, |a| a.state.matters.result.is_some() && a.state.matters.curve.is_some());
     h.state_mut().state.session.export_dir = dir.path().display().to_string();
     h.state_mut().apply(Command::ExportSensitivity);
-    h.run();
+    // The figure renders on the export lane: wait for its files.
+    let written = dir.path().join("hysteresis-v_c-sensitivity.png");
+    let start = std::time::Instant::now();
+    while !written.exists() && start.elapsed() < std::time::Duration::from_secs(60) {
+        h.step();
+        std::thread::sleep(std::time::Duration::from_millis(10));
+    }
     let png = std::fs::read_dir(dir.path())
         .expect("folder")
         .flatten()

@@ -86,26 +86,19 @@ impl AppState {
             }
         };
         let prefix = format!("{}-{}-", self.params().info().id, self.matters.output);
-        let mut files = Vec::new();
-        if let Some((_, m)) = &self.matters.result {
-            let table = crate::sensitivity::matters_csv(m, &self.matters.output, self.matters.factor);
-            files.push((format!("{prefix}what-matters.csv"), stamp.csv(table.as_bytes())));
-        }
-        if let Some((_, fig)) = &self.matters.curve {
-            for ext in ["png", "svg", "csv"] {
-                match crate::provenance::figure_bytes(fig, ext, crate::figure::EXPORT_SIZE, Some(&stamp)) {
-                    Ok(bytes) => files.push((format!("{prefix}{}.{ext}", fig.id), bytes)),
-                    Err(e) => {
-                        self.error = Some(format!("export failed, earlier files untouched: {e}"));
-                        return;
-                    }
-                }
-            }
-        }
-        if files.is_empty() {
+        if self.matters.result.is_none() && self.matters.curve.is_none() {
             self.error = Some("nothing to export yet: the view has no result".into());
             return;
         }
-        fx.push(Effect::WriteAll { folder: self.session.export_dir.clone(), files, what: "sensitivity view" });
+        if let Some((_, m)) = &self.matters.result {
+            let table = crate::sensitivity::matters_csv(m, &self.matters.output, self.matters.factor);
+            let files = vec![(format!("{prefix}what-matters.csv"), stamp.csv(table.as_bytes()))];
+            fx.push(Effect::WriteAll { folder: self.session.export_dir.clone(), files, what: "sensitivity table" });
+        }
+        // The curve or map renders on the export lane, as every figure export does.
+        if let Some((_, fig)) = &self.matters.curve {
+            let figures = vec![fig.clone()];
+            fx.push(Effect::Submit(Job::Export { figures, stamp: Box::new(stamp), prefix }));
+        }
     }
 }

@@ -42,6 +42,10 @@ pub enum Command {
         /// Print the scalar results as one JSON object on stdout.
         #[arg(long)]
         json: bool,
+        /// Print the preset (RON) after `--set`, without computing: the state
+        /// a preset file or an exported figure opens.
+        #[arg(long, conflicts_with_all = ["out", "json"])]
+        preset_only: bool,
     },
     /// Compute a preset's scalars over a grid of parameter values: one tidy
     /// CSV (a row per point: the varied parameters, then the scalars; units in
@@ -237,9 +241,12 @@ fn print_scalars(out: &SceneOutput) -> Result<()> {
 pub fn run(command: Command) -> Result<()> {
     match command {
         Command::Gui { .. } => bail!("the window is opened by the binary, not the harness"),
-        Command::Run { preset, set, out, json } => {
+        Command::Run { preset, set, out, json, preset_only } => {
             let mut p = resolve(&preset)?;
             apply_sets(&mut p, &set)?;
+            if preset_only {
+                return say(p.to_ron()?);
+            }
             let result = scene::compute(&p.scene, &Progress::default())?;
             for w in &result.warnings {
                 tell(format_args!("warning: {w}"));

@@ -26,3 +26,4 @@ pub mod session;
 pub mod solver;
 pub mod sweep;
 pub mod sweep_files;
+pub mod units;

@@ -175,8 +175,8 @@ impl Preset {
 /// value as printed by the range check): the line and column (1-based) of the
 /// number and the number as written.
 fn find_number(text: &str, key: &str, value: &str) -> Option<(usize, usize, String)> {
-    let wanted: f64 = value.parse().ok()?;
-    let same = |x: f64| x == wanted || (x.is_nan() && wanted.is_nan());
+    // The message carries the value to six digits (`controls::short`).
+    let same = |x: f64| crate::scene::controls::short(x) == value;
     let mut from = 0;
     while let Some(found) = text[from..].find(key) {
         let start = from + found;

@@ -36,6 +36,26 @@ fn out_writes_csv_svg_png() {
 }
 
 #[test]
+fn preset_only_prints_the_state_a_figure_reopens() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = dir.path().to_str().expect("utf8");
+    let out = grainscope(&["run", "ice-bounce-8ms", "--set", "velocity=3", "--out", d]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let from_preset = grainscope(&["run", "ice-bounce-8ms", "--set", "velocity=3", "--preset-only"]);
+    let png = dir.path().join("contact-radius.png");
+    let from_png = grainscope(&["run", png.to_str().expect("utf8"), "--preset-only"]);
+    assert!(from_png.status.success(), "{}", String::from_utf8_lossy(&from_png.stderr));
+    assert_eq!(from_png.stdout, from_preset.stdout);
+    let text = String::from_utf8_lossy(&from_png.stdout);
+    assert!(text.contains("velocity: 3.0"), "{text}");
+    // Without --set the state differs: the check can fail.
+    let plain = grainscope(&["run", "ice-bounce-8ms", "--preset-only"]);
+    assert_ne!(plain.stdout, from_png.stdout);
+    // It computes nothing, so it does not combine with the outputs of a run.
+    assert!(!grainscope(&["run", "ice-bounce-8ms", "--preset-only", "--json"]).status.success());
+}
+
+#[test]
 fn bad_input_exits_non_zero_with_a_message() {
     for args in [
         vec!["run", "no-such-preset"],

@@ -283,6 +283,7 @@ proptest! {
             set: Vec::new(),
             out: Some(out.clone()),
             json: true,
+            preset_only: false,
         });
         if result.is_err() {
             prop_assert_eq!(snapshot(&out), before);

@@ -158,7 +158,7 @@ fn a_typed_value_outside_its_range_is_refused_with_a_notice() {
         let (key, message) = control_notice(&h).expect("a notice");
         assert_eq!(key, "velocity");
         assert!(message.contains(typed) && message.contains("kept 8"), "{message}");
-        assert!(message.contains("1e-3 … 1000 m/s"), "{message}");
+        assert!(message.contains("0.001 … 1000 m/s"), "{message}");
         h.get_by_label_contains(&format!("impact velocity v: {typed}"));
     }
     // A valid value is taken and clears the notice.
@@ -166,6 +166,27 @@ fn a_typed_value_outside_its_range_is_refused_with_a_notice() {
     assert!(control_notice(&h).is_none());
     let e = h.state().output().and_then(|o| o.scalar("e")).expect("e");
     assert!((e - 0.222).abs() < 0.002, "{e}");
+}
+
+#[test]
+fn a_typed_value_may_name_its_unit() {
+    let mut h = harness();
+    h.run();
+    let velocity = |h: &Harness<'static, GrainscopeApp>| number(h.state().params(), "velocity");
+    // The field's own unit, another unit of speed, and the thesis' notation.
+    for (typed, want) in [("5 m/s", 5.0), ("400 cm/s", 4.0), ("3 m s^-1", 3.0)] {
+        type_into_slider(&mut h, "impact velocity v", typed);
+        assert!((velocity(&h) - want).abs() < 1e-12, "'{typed}' gave {}", velocity(&h));
+        assert!(control_notice(&h).is_none());
+    }
+    // A unit of another kind is refused and named.
+    type_into_slider(&mut h, "impact velocity v", "5 kg");
+    assert!((velocity(&h) - 3.0).abs() < 1e-12);
+    let (_, message) = control_notice(&h).expect("a notice");
+    assert!(
+        message.contains("\"kg\" is not a unit of the same kind as m/s") && message.contains("kept 3"),
+        "{message}"
+    );
 }
 
 #[test]

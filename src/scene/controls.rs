@@ -296,7 +296,8 @@ impl<'a> Control<'a> {
         match &self.kind {
             ControlKind::Number { value, min, max, .. } => {
                 if !(value.is_finite() && **value >= *min && **value <= *max) {
-                    return Err(out(format!("{value:?}"), format!("{min:e}"), format!("{max:e}")));
+                    let text = short(**value);
+                    return Err(out(text, format!("{min:e}"), format!("{max:e}")));
                 }
             }
             ControlKind::Count { value, min, max } => {
@@ -454,6 +455,16 @@ impl<'a> Control<'a> {
         let default = self.default_text().map(|d| format!("; default {d}")).unwrap_or_default();
         format!("{}: {} [{}{default}] — {}", self.key, self.label, range.trim(), self.doc)
     }
+}
+
+/// A value as short, parseable text for messages: six significant digits
+/// ("0.0001", "1.5e-7", "-1", "inf"), not the float's every digit.
+pub fn short(v: f64) -> String {
+    if !v.is_finite() || v == 0.0 {
+        return format!("{v}");
+    }
+    let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
+    if (1e-3..1e5).contains(&rounded.abs()) { format!("{rounded}") } else { format!("{rounded:e}") }
 }
 
 /// A parameter range sampled on a grid, such as `r_min … r_max` with `n`

@@ -341,6 +341,13 @@ pub struct Chapter {
     pub order: u8,
 }
 
+impl Chapter {
+    /// The unit system the thesis writes this chapter's numbers in.
+    pub fn units(&self) -> crate::units::System {
+        crate::units::system_of_chapter(self.order)
+    }
+}
+
 /// The chapter of scene `i` of [`SCENES`].
 pub fn chapter(i: usize) -> Chapter {
     let (order, heading) = match CHAPTER_OF.get(i).copied().unwrap_or("") {

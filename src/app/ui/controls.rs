@@ -94,33 +94,33 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                         let mut shown = **value * *display_scale;
                         let (lo, hi) = (*min * *display_scale, *max * *display_scale);
                         let is_log = *log;
-                        let suffix = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+                        let shown_unit = crate::units::pretty(unit);
+                        let suffix = if unit.is_empty() { String::new() } else { format!(" {shown_unit}") };
                         let current = shown;
-                        let slider = egui::Slider::new(&mut shown, lo..=hi).logarithmic(is_log).suffix(suffix);
-                        let (changed, typed) = typed_slider(ui, slider, current, label, doc, |v| field_text(v, is_log));
-                        let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+                        let slider = egui::Slider::new(&mut shown, lo..=hi).logarithmic(is_log).suffix(suffix.clone());
+                        let (changed, typed) =
+                            typed_slider(ui, slider, current, label, doc, unit, |v| field_text(v, is_log));
                         // The range is checked in SI units, with a rounding allowance
                         // for the conversion to display units.
                         let si = shown / *display_scale;
                         let slack = 1e-12 * min.abs().max(max.abs());
+                        let typed_error = typed.as_deref().and_then(|t| crate::units::parse_in(t, unit).err());
                         if changed && si.is_finite() && si >= *min - slack && si <= *max + slack {
                             **value = si.clamp(*min, *max);
                             accepted = Some(key.to_string());
-                        } else if changed || (typed.is_some() && parse_number(typed.as_deref().unwrap_or("")).is_none())
-                        {
-                            let text = typed.unwrap_or_else(|| shown.to_string());
-                            let why = if parse_number(&text).is_some() {
-                                "is outside the valid range"
-                            } else {
-                                "is not a number; valid range"
+                        } else if changed || typed_error.is_some() {
+                            let text = typed.unwrap_or_else(|| format!("{}{suffix}", figure::human(shown)));
+                            let why = match typed_error {
+                                Some(e) => format!("is refused: {e}; valid range"),
+                                None => "is outside the valid range".to_string(),
                             };
                             refused = Some((
                                 key.to_string(),
                                 format!(
-                                    "{label}: {text}{unit_text} {why} {} … {}{unit_text}; kept {}{unit_text}",
-                                    figure::tick_label(lo),
-                                    figure::tick_label(hi),
-                                    figure::tick_label(**value * *display_scale),
+                                    "{label}: {text} {why} {} … {}{suffix}; kept {}{suffix}",
+                                    figure::human(lo),
+                                    figure::human(hi),
+                                    figure::human(**value * *display_scale),
                                 ),
                             ));
                         }
@@ -129,7 +129,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                         let mut shown = **value as f64;
                         let current = shown;
                         let slider = egui::Slider::new(&mut shown, *min as f64..=*max as f64).integer();
-                        let (changed, typed) = typed_slider(ui, slider, current, label, doc, |v| format!("{v:.0}"));
+                        let (changed, typed) = typed_slider(ui, slider, current, label, doc, "", |v| format!("{v:.0}"));
                         // The widget rounds to whole numbers; what was typed decides.
                         let typed_whole = typed.as_deref().and_then(parse_number).is_none_or(|v| v.fract() == 0.0);
                         let whole = shown.is_finite() && shown.fract() == 0.0 && typed_whole;
@@ -214,6 +214,7 @@ fn typed_slider(
     current: f64,
     label: &str,
     doc: &str,
+    unit: &str,
     text_of: impl Fn(f64) -> String + Copy,
 ) -> (bool, Option<String>) {
     let typed = std::cell::RefCell::new(None::<String>);
@@ -229,7 +230,7 @@ fn typed_slider(
                     return Some(current);
                 }
                 *typed.borrow_mut() = Some(text.trim().to_string());
-                parse_number(text)
+                crate::units::parse_in(text, unit).ok()
             });
         ui.add(slider).on_hover_text(doc).changed()
     };
@@ -253,10 +254,9 @@ fn field_text(v: f64, log: bool) -> String {
     }
 }
 
-/// Reads a number as typed into a value field (spaces ignored, "−" as minus).
+/// Reads a whole number as typed into a count field ("−" as minus).
 fn parse_number(text: &str) -> Option<f64> {
-    let cleaned: String = text.chars().filter(|c| !c.is_whitespace()).map(|c| if c == '−' { '-' } else { c }).collect();
-    cleaned.parse().ok()
+    crate::units::parse_in(text, "").ok()
 }
 
 /// Whether `key` is edited on the card rather than among the parameters.

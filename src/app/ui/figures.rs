@@ -23,7 +23,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     };
     let avail = ui.available_size();
     let width = (0.3 * avail.x).clamp(250.0, 440.0);
-    let text = if cx.state.session.lecture { 16.0 } else { 13.0 };
+    let text = super::look::body_size(cx.state.session.lecture);
     ui.horizontal_top(|ui| {
         ui.allocate_ui_with_layout(egui::vec2(width, avail.y), egui::Layout::top_down(egui::Align::Min), |ui| {
             ui.set_width(width);
@@ -47,7 +47,7 @@ fn strip(
     fits: bool,
     lecture: bool,
 ) -> Option<Command> {
-    let text = if lecture { 16.0 } else { 13.0 };
+    let text = super::look::body_size(lecture);
     let mut picked = None;
     // Titles shortened to fit a tab, in full where two would read alike.
     let short = |title: &str| -> String {

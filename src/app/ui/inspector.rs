@@ -22,7 +22,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let mut open = true;
     let mut chosen: Option<(SceneParams, String)> = None;
     let lecture = cx.state.session.lecture;
-    let text = if lecture { 17.0 } else { 13.0 };
+    let text = super::look::body_size(lecture);
     egui::Window::new("Inspect")
         .open(&mut open)
         .anchor(align, offset)

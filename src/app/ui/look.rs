@@ -23,7 +23,8 @@ pub fn apply(ctx: &egui::Context, memo: &mut Memo, lecture: bool, light: bool) {
     ctx.set_theme(if light { egui::Theme::Light } else { egui::Theme::Dark });
     ctx.all_styles_mut(|style| {
         use egui::{FontFamily, FontId, TextStyle};
-        let sizes = if lecture { [15.0, 19.0, 19.0, 26.0, 17.0] } else { [10.0, 13.0, 13.0, 19.0, 12.5] };
+        // Lecture: body ≥ 18 px for a projector; normal: body ≥ 14 px.
+        let sizes = if lecture { [16.0, 19.0, 19.0, 26.0, 17.0] } else { [12.0, 14.0, 14.0, 20.0, 13.0] };
         style.text_styles = [
             (TextStyle::Small, FontId::new(sizes[0], FontFamily::Proportional)),
             (TextStyle::Body, FontId::new(sizes[1], FontFamily::Proportional)),
@@ -45,17 +46,27 @@ pub fn apply(ctx: &egui::Context, memo: &mut Memo, lecture: bool, light: bool) {
     } else {
         ctx.style_mut_of(egui::Theme::Light, |style| style.visuals = egui::Visuals::light());
     }
+    // Labels and tick numbers light on the dark theme, not mid-grey on black.
+    ctx.style_mut_of(egui::Theme::Dark, |style| {
+        style.visuals.widgets.noninteractive.fg_stroke.color = egui::Color32::from_gray(215);
+    });
     ctx.set_zoom_factor(1.0);
     if lecture_changed {
         ctx.send_viewport_cmd(egui::ViewportCommand::Fullscreen(lecture));
     }
 }
 
+/// The size of text set explicitly beside figures (tabs, cards, tables):
+/// 18 px for a lecture hall, 14 px otherwise.
+pub fn body_size(lecture: bool) -> f32 {
+    if lecture { 18.0 } else { 14.0 }
+}
+
 /// How plots are drawn in the current look.
 pub fn plot_look(ui: &egui::Ui, lecture: bool) -> plot::Look {
     plot::Look {
         line: if lecture { 3.0 } else { 2.0 },
-        text: if lecture { 17.0 } else { 12.5 },
+        text: if lecture { 17.0 } else { 14.0 },
         dark: ui.visuals().dark_mode,
         legend: true,
     }

@@ -7,6 +7,7 @@
 use super::Cx;
 use crate::app::command::Command;
 use crate::figure::human;
+use crate::units;
 
 /// Blue for the parameter divided by the factor, orange for multiplied.
 const LOW: egui::Color32 = egui::Color32::from_rgb(0, 114, 178);
@@ -19,7 +20,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
         return;
     }
     let lecture = cx.state.session.lecture;
-    let text = if lecture { 16.0 } else { 13.0 };
+    let text = super::look::body_size(lecture);
     let factor = m.factor;
     let scalars: Vec<(&'static str, &'static str, &'static str)> =
         cx.state.output().map(|o| o.scalars.iter().map(|s| (s.key, s.label, s.unit)).collect()).unwrap_or_default();
@@ -34,6 +35,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     }
     let (mut output, mut x, mut y) = (m.output.clone(), m.x.clone(), m.y.clone());
     let unit = scalars.iter().find(|s| s.0 == output).map_or("", |s| s.2);
+    let system = crate::scene::chapter(cx.state.index()).units();
     let mut open = true;
     let mut clicked: Option<String> = None;
     let (mut recompute, mut draw, mut export) = (false, false, false);
@@ -136,14 +138,24 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                                 "the parameters changed since: press “What matters” again for the current point",
                             );
                         }
-                        let here = answer.here.mean.map_or("undefined".to_string(), human);
+                        // The mean in the chapter's units; σ scaled alike.
+                        let shown = answer.here.mean.map(|v| units::show(v, unit, system));
+                        let scale = match (answer.here.mean, &shown) {
+                            (Some(v), Some(s)) if v != 0.0 && v.is_finite() => s.value / v,
+                            _ => 1.0,
+                        };
+                        let (here, shown_unit) =
+                            shown.map_or(("undefined".to_string(), String::new()), |s| (human(s.value), s.unit));
                         let noise = match answer.here.sd {
-                            Some(sd) => format!(" ± {} (σ over {} seeds)", human(sd), answer.here.runs),
+                            Some(sd) => format!(" ± {} (σ over {} seeds)", human(sd * scale), answer.here.runs),
                             None => String::new(),
                         };
                         ui.label(
-                            egui::RichText::new(format!("here {here}{noise} {unit}; each parameter ×÷ {}", human(factor)))
-                                .size(text),
+                            egui::RichText::new(format!(
+                                "here {here}{noise} {shown_unit}; each parameter ×÷ {}",
+                                human(factor)
+                            ))
+                            .size(text),
                         );
                         if m.coarse {
                             ui.colored_label(
@@ -155,7 +167,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                                 .size(text),
                             );
                         }
-                        if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text) {
+                        if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text, system) {
                             clicked = Some(key);
                         }
                     }
@@ -195,7 +207,13 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
 
 /// The tornado chart with a row of numbers per parameter.
 /// Returns the key of a parameter whose name was clicked (to draw X against it).
-fn chart(ui: &mut egui::Ui, rows: &[crate::sensitivity::Influence], x0: f64, text: f32) -> Option<String> {
+fn chart(
+    ui: &mut egui::Ui,
+    rows: &[crate::sensitivity::Influence],
+    x0: f64,
+    text: f32,
+    system: units::System,
+) -> Option<String> {
     let mut clicked = None;
     // Log scale of X/X₀ where every value is positive, else linear in X − X₀.
     let positive = x0 > 0.0 && rows.iter().flat_map(|r| r.range.iter().flatten()).all(|&x| x > 0.0);
@@ -216,7 +234,7 @@ fn chart(ui: &mut egui::Ui, rows: &[crate::sensitivity::Influence], x0: f64, tex
             {
                 clicked = Some(r.key.clone());
             }
-            ui.label(egui::RichText::new(format!("{} {}", human(r.value), r.unit)).size(text));
+            ui.label(egui::RichText::new(units::text(r.value, &r.unit, system)).size(text));
             let e = match r.elasticity {
                 Some(e) if e.abs() < 5e-4 => "0".to_string(),
                 Some(e) => format!("{e:+.3}{}", if r.converged { "" } else { " ?" }),

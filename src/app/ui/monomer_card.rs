@@ -3,9 +3,9 @@
 
 use super::Cx;
 use super::controls::{self, Select};
-use crate::figure;
 use crate::scene::Scalar;
 use crate::scene::monomer;
+use crate::units;
 
 /// The card: the monomer's controls and the numbers it sets.
 pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
@@ -20,6 +20,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             values
         }
     };
+    let system = crate::scene::chapter(cx.state.index()).units();
     egui::Frame::group(ui.style()).show(ui, |ui| {
         let heading =
             if own { "Monomer · this scene's own".to_string() } else { format!("Monomer · shared by {sharing} scenes") };
@@ -30,8 +31,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         egui::Grid::new("monomer-derived").num_columns(2).spacing([10.0, 2.0]).show(ui, |ui| {
             for s in &derived {
                 let label = s.label.trim_start_matches("monomer: ");
-                ui.small(label);
-                let shown = ui.add(egui::Label::new(egui::RichText::new(value_text(s)).small()).wrap());
+                ui.label(label);
+                let shown = ui.add(egui::Label::new(value_text(s, system)).wrap());
                 if s.value.is_infinite() {
                     shown.on_hover_text(
                         "the ch. 2 model finds no bounce up to 10 km/s: the bulk viscous loss exceeds the rebound, far outside the model's range",
@@ -43,19 +44,10 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     });
 }
 
-/// A derived value as text: SI with its unit, and erg for the energies.
-fn value_text(s: &Scalar) -> String {
+/// A derived value as text, in the units the scene's chapter uses.
+fn value_text(s: &Scalar, system: units::System) -> String {
     if s.value.is_infinite() {
         return "none up to 10 km/s".into();
     }
-    let unit = match s.unit {
-        "m s^-1" => "m/s",
-        u => u,
-    };
-    let main = format!("{} {unit}", figure::human(s.value));
-    match s.unit {
-        "J" => format!("{main} ({} erg)", figure::human(s.value * 1e7)),
-        "m" => format!("{} nm", figure::human(s.value * 1e9)),
-        _ => main,
-    }
+    units::text(s.value, s.unit, system)
 }

@@ -102,10 +102,11 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
         ui.label("computing…");
         return;
     };
+    let system = crate::scene::chapter(cx.state.index()).units();
     egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
         for s in &out.scalars {
             ui.label(s.label);
-            ui.label(format!("{} {}", figure::tick_label(s.value), s.unit));
+            ui.label(crate::units::text(s.value, s.unit, system));
             ui.end_row();
         }
     });

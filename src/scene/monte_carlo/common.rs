@@ -285,7 +285,10 @@ pub fn live_view<'a>(
     move |run: &Run| {
         let mut out = build(std::slice::from_ref(run));
         let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
-        out.notes.insert(0, format!("running: seed {} at {t:.4} yr (live view of the first run)", run.seed));
+        out.notes.insert(
+            0,
+            format!("running: seed {} at {} yr (live view of the first run)", run.seed, crate::figure::human(t)),
+        );
         progress.publish(out);
     }
 }

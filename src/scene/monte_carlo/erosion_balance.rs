@@ -125,7 +125,14 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                         }
                         let mut out = output(p, &sets);
                         let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
-                        out.notes.insert(0, format!("running: v_eros = {} m/s at {t:.4} yr (live view)", q.v_eros));
+                        out.notes.insert(
+                            0,
+                            format!(
+                                "running: v_eros = {} m/s at {} yr (live view)",
+                                crate::figure::human(q.v_eros),
+                                crate::figure::human(t)
+                            ),
+                        );
                         progress.publish(out);
                     }
                 };
@@ -169,7 +176,7 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
         [("st_1", "m_max_1", "zeta_min_1"), ("st_2", "m_max_2", "zeta_min_2"), ("st_3", "m_max_3", "zeta_min_3")];
     for (k, (v, runs)) in sets.iter().enumerate() {
         for (j, r) in runs.iter().enumerate() {
-            let name = if j == 0 { format!("v_eros = {v} m/s") } else { String::new() };
+            let name = if j == 0 { format!("v_eros = {} m/s", crate::figure::human(*v)) } else { String::new() };
             let pts = r.history.iter().map(|s| [s.stokes_max, s.zeta]).collect();
             zeta = zeta.with(Series::new(name, pts, Style::Line, k));
         }
@@ -206,7 +213,7 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
     let mut notes = Vec::new();
     for (v, runs) in sets {
         for line in super::common::endings(runs) {
-            notes.push(format!("v_eros = {v} m/s, {line}"));
+            notes.push(format!("v_eros = {} m/s, {line}", crate::figure::human(*v)));
         }
     }
     SceneOutput {

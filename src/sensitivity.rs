@@ -448,7 +448,7 @@ pub fn map_figure(
         .filter(|t| t.is_major() && t.value > lo && t.value < hi)
         .map(|t| t.value)
         .collect();
-    let unit_text = if unit.is_empty() { String::new() } else { format!(" {unit}") };
+    let unit_text = if unit.is_empty() { String::new() } else { format!(" {}", crate::units::pretty(unit)) };
     let list: Vec<String> = levels.iter().map(|&l| figure::human(l)).collect();
     let legend = format!("{key} = {}{unit_text}", list.join(", "));
     let scales = (fig.x.scale, fig.y.scale);
@@ -457,7 +457,11 @@ pub fn map_figure(
         let pts = figure::contour::contour(xs, ys, &shown, at, scales);
         if !pts.is_empty() {
             let name = format!("{key} = {}{unit_text}", figure::human(level));
+            let label_at = figure::contour::label_point(&pts, xs, ys, scales);
             fig = fig.with(Series::new(name, pts, Style::Line, 6).keyed(legend.clone()));
+            if let Some(p) = label_at {
+                fig = fig.label(p, format!("{}{unit_text}", figure::human(level)), None, figure::Anchor::Center);
+            }
         }
     }
     fig

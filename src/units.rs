@@ -207,9 +207,10 @@ pub fn show(value: f64, si_unit: &str, system: System) -> Shown {
     let si = value * unit.si;
     let (name, size): (&str, f64) = match (system, unit.dim) {
         (System::Si, LENGTH) => by_magnitude(si, &[("nm", 1e-9), ("µm", 1e-6), ("mm", 1e-3), ("m", 1.0), ("km", 1e3)]),
-        (System::Cgs, LENGTH) => {
-            by_magnitude(si, &[("µm", 1e-6), ("cm", 1e-2), ("km", 1e3), ("AU", crate::physics::constants::AU)])
-        }
+        (System::Cgs, LENGTH) => by_magnitude(
+            si,
+            &[("nm", 1e-9), ("µm", 1e-6), ("cm", 1e-2), ("km", 1e3), ("AU", crate::physics::constants::AU)],
+        ),
         (System::Si, TIME) => by_magnitude(si, &[("ns", 1e-9), ("µs", 1e-6), ("ms", 1e-3), ("s", 1.0)]),
         (System::Cgs, TIME) => by_magnitude(si, &[("s", 1.0), ("yr", crate::physics::constants::YEAR)]),
         (System::Si, MASS) => ("kg", 1.0),
@@ -290,6 +291,7 @@ mod tests {
         assert_eq!(text(1.8e-10, "N", System::Cgs), "1.8×10⁻⁵ dyn");
         assert_eq!(text(f64::INFINITY, "m s^-1", System::Si), "∞ m s⁻¹");
         assert_eq!(text(0.05, "m", System::Cgs), "5 cm");
+        assert_eq!(text(5.56e-10, "m", System::Cgs), "0.556 nm");
         assert_eq!(text(1000.0, "kg m^-3", System::Cgs), "1 g cm⁻³");
         assert_eq!(text(0.1, "J m^-2", System::Cgs), "0.1 J m⁻²");
         assert_eq!(text(30.0, "AU", System::Cgs), "30 AU");

@@ -156,12 +156,27 @@ pub struct Series {
     /// once under this text, in a neutral grey when their colours differ.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub legend: Option<String>,
+    /// Marker size relative to the style's own (points of many overlapping
+    /// series are drawn smaller); None is 1.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<f64>,
 }
 
 impl Series {
     /// A series from points.
     pub fn new(name: impl Into<String>, points: Vec<[f64; 2]>, style: Style, color: usize) -> Self {
-        Series { name: name.into(), points, style, color, family: None, legend: None }
+        Series { name: name.into(), points, style, color, family: None, legend: None, size: None }
+    }
+
+    /// Draws the markers at `factor` times their usual size (builder style).
+    pub fn sized(mut self, factor: f64) -> Self {
+        self.size = (factor.is_finite() && factor > 0.0).then_some(factor);
+        self
+    }
+
+    /// The marker size factor (1 unless [`Series::sized`]).
+    pub fn size_factor(&self) -> f64 {
+        self.size.unwrap_or(1.0)
     }
 
     /// Shares the legend entry `text` with the other series of the same style
@@ -339,6 +354,32 @@ pub fn colormap(t: f64) -> [u8; 3] {
     std::array::from_fn(|c| (STOPS[i][c] + f * (STOPS[i + 1][c] - STOPS[i][c])).round() as u8)
 }
 
+/// Where a [`Label`]'s text sits relative to its point.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Anchor {
+    /// Text starts at the point, just above it.
+    Left,
+    /// Text ends at the point, just above it.
+    Right,
+    /// Text centred on the point (a contour's level, on its line).
+    Center,
+}
+
+/// Text placed in the plot at a data point: the name of a reference line,
+/// the level of a contour.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Label {
+    /// Position in axis units.
+    pub at: [f64; 2],
+    /// The text.
+    pub text: String,
+    /// Colour index into [`PALETTE`]; None for the text colour (a level
+    /// written on a colour map).
+    pub color: Option<usize>,
+    /// Alignment to `at`.
+    pub anchor: Anchor,
+}
+
 /// A complete figure.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Figure {
@@ -362,6 +403,8 @@ pub struct Figure {
     /// Whether the plot area is square (maps of one quantity against itself,
     /// such as mass against mass, or x against y in the same unit).
     pub square: bool,
+    /// Text placed at data points (drawn over the series).
+    pub labels: Vec<Label>,
 }
 
 impl Figure {
@@ -377,7 +420,14 @@ impl Figure {
             family: None,
             y_decades: None,
             square: false,
+            labels: Vec::new(),
         }
+    }
+
+    /// Adds a text label at a data point (builder style).
+    pub fn label(mut self, at: [f64; 2], text: impl Into<String>, color: Option<usize>, anchor: Anchor) -> Self {
+        self.labels.push(Label { at, text: text.into(), color, anchor });
+        self
     }
 
     /// Makes the plot area square (builder style).

@@ -11,7 +11,7 @@
 
 use super::layout::{self, ColourBar, View};
 use super::ticks::{Tick, ticks};
-use super::{Figure, Fill, Heatmap, Series, Shape, Style, family_fraction};
+use super::{Anchor, Figure, Fill, Heatmap, Label, PALETTE, Series, Shape, Style, family_fraction};
 use std::fmt::Write;
 
 /// Font family named in the document (the bundled font, then any sans-serif).
@@ -140,6 +140,11 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
     }
     for series in &fig.series {
         draw_series(&mut svg, series, fig.color_of(series), &look, &map);
+    }
+    for l in &fig.labels {
+        if let Some(q) = map(l.at) {
+            label(&mut svg, l, q, &look);
+        }
     }
     svg.push_str("</g>");
 
@@ -272,9 +277,29 @@ fn text(svg: &mut String, at: [f64; 2], t: &str, size: f64, anchor: &str, color:
     );
 }
 
-/// The marker of a point style at `p` (pixels).
-fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look) {
-    let s = look.s;
+/// A [`Label`] at `q` (pixels): its text over a white halo, so that it
+/// reads across the lines beneath it.
+fn label(svg: &mut String, l: &Label, q: [f64; 2], look: &Look) {
+    let size = 0.9 * look.tick;
+    let (anchor, dx, dy) = match l.anchor {
+        Anchor::Left => ("start", 4.0 * look.s, -4.0 * look.s),
+        Anchor::Right => ("end", -4.0 * look.s, -4.0 * look.s),
+        Anchor::Center => ("middle", 0.0, 0.36 * size),
+    };
+    let color = l.color.map_or_else(|| "#111".to_string(), |c| rgb(PALETTE[c % PALETTE.len()]));
+    let _ = write!(
+        svg,
+        r#"<text x="{:.2}" y="{:.2}" font-size="{size:.2}" text-anchor="{anchor}" fill="{color}" stroke="white" stroke-width="{:.2}" stroke-linejoin="round" paint-order="stroke">{}</text>"#,
+        q[0] + dx,
+        q[1] + dy,
+        3.0 * look.s,
+        esc(&l.text)
+    );
+}
+
+/// The marker of a point style at `p` (pixels), `size` times its usual size.
+fn marker(svg: &mut String, style: Style, p: [f64; 2], color: &str, look: &Look, size: f64) {
+    let s = look.s * size;
     match style {
         Style::Line | Style::Dashed | Style::Dotted | Style::Arrow | Style::Region => {}
         Style::Points => {
@@ -433,7 +458,7 @@ fn draw_series(svg: &mut String, s: &Series, c: [u8; 3], look: &Look, map: &impl
         }
         style => {
             for q in s.points.iter().filter_map(|p| map(*p)) {
-                marker(svg, style, q, &color, look);
+                marker(svg, style, q, &color, look, s.size_factor());
             }
         }
     }
@@ -553,7 +578,7 @@ fn legend(svg: &mut String, entries: &[Entry], [x, y, w, h]: [f64; 4], look: &Lo
                         0.6 * look.line
                     );
                 } else {
-                    marker(svg, style, [sx + 15.0 * s, cy], &color, look);
+                    marker(svg, style, [sx + 15.0 * s, cy], &color, look, 1.0);
                 }
             }
             Sample::Swatch(c) => {

@@ -35,12 +35,12 @@ impl Scene for Params {
         id: "disk-map",
         title: "Disk map",
         source: "Sects. 5.3–5.4; Eq. 5.13; Figs. 5.4, 5.6, 5.12–5.14",
-        explanation: "Each batch's radius against time (grey paths). Green points: the mass-dominating \
-particles have 10⁻³ ≤ Ωt_s ≤ 1. Orange, red, dark red: the midplane dust-to-gas ratio of particles \
-with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Stars: planetesimal \
-formation. Streaming instability needs i) 10⁻² ≤ Ωt_s ≤ 1, ii) a loading near unity and iv) \
-t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is reported. Dashed lines mark \
-the present orbits of Jupiter, Saturn, Uranus and Neptune.",
+        explanation: "Each batch's radius against time (grey paths). Along the drawn paths, green points: the mass-dominating \
+particles have 10⁻³ ≤ Ωt_s ≤ 1. Yellow, vermilion, purple: the midplane dust-to-gas ratio of \
+particles with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Blue \
+diamonds: planetesimal formation. Streaming instability needs i) 10⁻² ≤ Ωt_s ≤ 1, ii) a loading near unity and iv) \
+t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is reported. Labelled dashed lines \
+mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         heavy: true,
     };
 
@@ -99,14 +99,17 @@ the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         let mut levels: [Vec<[f64; 2]>; 3] = [Vec::new(), Vec::new(), Vec::new()];
         let mut si = 0usize;
         let mut max_loading: f64 = 0.0;
+        let every = p.every.max(1);
         for f in &run.frames {
-            for b in f.batches.iter().filter(|b| b.dust) {
+            for (i, b) in f.batches.iter().enumerate().filter(|(_, b)| b.dust) {
+                // Marked along the drawn paths; counted over every batch.
                 let pt = [f.t / YEAR, b.r / AU];
-                if (1e-3..=1.0).contains(&b.stokes) {
+                let drawn = i % every == 0;
+                if drawn && (1e-3..=1.0).contains(&b.stokes) {
                     window.push(pt);
                 }
                 for (k, lvl) in [0.1, 0.5, 1.0].iter().enumerate() {
-                    if b.loading >= *lvl {
+                    if drawn && b.loading >= *lvl {
                         levels[k].push(pt);
                     }
                 }
@@ -114,24 +117,31 @@ the present orbits of Jupiter, Saturn, Uranus and Neptune.",
                 si += usize::from(b.si);
             }
         }
-        fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2));
+        // Markers shrink as drawn paths crowd the radii.
+        let size = (40.0 / n.div_ceil(every).max(1) as f64).sqrt().clamp(0.4, 1.0);
+        fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2).sized(size));
+        // Loading levels in colours apart in hue and lightness: dark yellow,
+        // vermilion, reddish purple.
         for (k, (pts, name)) in levels.into_iter().zip(["ρ*/ρ_g ≥ 0.1", "ρ*/ρ_g ≥ 0.5", "ρ*/ρ_g ≥ 1"]).enumerate()
         {
-            fig = fig.with(Series::new(name, pts, Style::Points, [3, 0, 5][k]));
+            fig = fig.with(Series::new(name, pts, Style::Points, [7, 0, 4][k]).sized(size));
         }
         let formed: Vec<[f64; 2]> = run
             .fates
             .iter()
             .filter_map(|f| if let Fate::Planetesimals { t, r } = f { Some([t / YEAR, r / AU]) } else { None })
             .collect();
-        fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 4));
+        fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 1));
         let t0 = run.frames.first().map_or(1.0, |f| f.t / YEAR);
         let t1 = p.run.duration_yr;
         for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
             // One legend entry for the four reference orbits.
-            fig = fig.with(
-                Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 7).keyed("Jupiter, Saturn, Uranus, Neptune"),
-            );
+            fig = fig
+                .with(
+                    Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 5)
+                        .keyed("Jupiter, Saturn, Uranus, Neptune"),
+                )
+                .label([t0, a], name, Some(5), crate::figure::Anchor::Left);
         }
         let scalars = vec![
             Scalar {

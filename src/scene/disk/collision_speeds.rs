@@ -348,8 +348,12 @@ transitions by orders of magnitude in mass.",
         for level in decades {
             let pts = crate::figure::contour::contour(&ns, &ns, &dv, level, (Scale::Log, Scale::Log));
             if !pts.is_empty() {
-                let name = format!("Δv = {} m/s", crate::figure::human(10f64.powf(level)));
-                fig_s = fig_s.with(Series::new(name, pts, Style::Line, 6).keyed(key.clone()));
+                let value = crate::figure::human(10f64.powf(level));
+                let at = crate::figure::contour::label_point(&pts, &ns, &ns, (Scale::Log, Scale::Log));
+                fig_s = fig_s.with(Series::new(format!("Δv = {value} m/s"), pts, Style::Line, 6).keyed(key.clone()));
+                if let Some(at) = at {
+                    fig_s = fig_s.label(at, format!("{value} m/s"), None, crate::figure::Anchor::Center);
+                }
             }
         }
         let max = dv.iter().copied().fold(f64::NEG_INFINITY, f64::max);

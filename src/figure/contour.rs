@@ -56,6 +56,30 @@ pub fn contour(x: &[f64], y: &[f64], values: &[f64], level: f64, scales: (Scale,
     out
 }
 
+/// Where to write a contour's level on the map over `x` × `y`: the middle
+/// one of its crossings in the order they were found (row by row), so the
+/// label sits on the line and nested contours are labelled at different
+/// heights, preferring crossings away from the map's edges where a centred
+/// label would be cut; None for an empty contour.
+pub fn label_point(points: &[[f64; 2]], x: &[f64], y: &[f64], scales: (Scale, Scale)) -> Option<[f64; 2]> {
+    let to_axis = |v: f64, s: Scale| if s == Scale::Log { v.log10() } else { v };
+    let fraction = |v: f64, ends: &[f64], s: Scale| {
+        let (a, b) = (to_axis(*ends.first()?, s), to_axis(*ends.last()?, s));
+        Some((to_axis(v, s) - a) / (b - a))
+    };
+    let finite: Vec<[f64; 2]> = points.iter().copied().filter(|p| p[0].is_finite() && p[1].is_finite()).collect();
+    let inside: Vec<[f64; 2]> = finite
+        .iter()
+        .copied()
+        .filter(|p| {
+            fraction(p[0], x, scales.0).is_some_and(|f| (0.15..=0.85).contains(&f))
+                && fraction(p[1], y, scales.1).is_some_and(|f| (0.06..=0.94).contains(&f))
+        })
+        .collect();
+    let pick = if inside.is_empty() { finite } else { inside };
+    pick.get(pick.len() / 2).copied()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -95,26 +119,3 @@ mod tests {
     }
 }
 
-/// Where to write a contour's level on the map over `x` × `y`: the middle
-/// one of its crossings in the order they were found (row by row), so the
-/// label sits on the line and nested contours are labelled at different
-/// heights, preferring crossings away from the map's edges where a centred
-/// label would be cut; None for an empty contour.
-pub fn label_point(points: &[[f64; 2]], x: &[f64], y: &[f64], scales: (Scale, Scale)) -> Option<[f64; 2]> {
-    let to_axis = |v: f64, s: Scale| if s == Scale::Log { v.log10() } else { v };
-    let fraction = |v: f64, ends: &[f64], s: Scale| {
-        let (a, b) = (to_axis(*ends.first()?, s), to_axis(*ends.last()?, s));
-        Some((to_axis(v, s) - a) / (b - a))
-    };
-    let finite: Vec<[f64; 2]> = points.iter().copied().filter(|p| p[0].is_finite() && p[1].is_finite()).collect();
-    let inside: Vec<[f64; 2]> = finite
-        .iter()
-        .copied()
-        .filter(|p| {
-            fraction(p[0], x, scales.0).is_some_and(|f| (0.15..=0.85).contains(&f))
-                && fraction(p[1], y, scales.1).is_some_and(|f| (0.06..=0.94).contains(&f))
-        })
-        .collect();
-    let pick = if inside.is_empty() { finite } else { inside };
-    pick.get(pick.len() / 2).copied()
-}

@@ -190,6 +190,26 @@ fn a_typed_value_may_name_its_unit() {
 }
 
 #[test]
+fn the_sweep_form_follows_the_scene() {
+    let mut h = harness();
+    h.run();
+    let i = grainscope::scene::SCENES.iter().position(|s| s.title == "Smallest fragment").expect("scene");
+    h.state_mut().apply(Command::OpenScene(i));
+    h.run_steps(3);
+    // The default form sweeps "velocity", which this scene does not have:
+    // it starts from one of the scene's own parameters, inside its range.
+    let sweep = h.state().state.sweep.clone();
+    let mut params = h.state().params().clone();
+    let knob = params.controls().into_iter().find(|c| c.key == sweep.key).expect("a parameter of the scene");
+    match knob.kind {
+        grainscope::scene::ControlKind::Number { min, max, .. } => {
+            assert!(sweep.from >= min && sweep.to <= max && sweep.from < sweep.to, "{sweep:?} in {min} … {max}");
+        }
+        _ => panic!("{} is not a number parameter", sweep.key),
+    }
+}
+
+#[test]
 fn a_long_status_message_wraps_inside_the_window() {
     let width = 800.0;
     let mut h = Harness::builder()

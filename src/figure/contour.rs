@@ -118,4 +118,3 @@ mod tests {
         assert!(contour(&g, &g, &[0.0, f64::NAN, 1.0, 1.0], 0.5, (Scale::Linear, Scale::Linear)).is_empty());
     }
 }
-

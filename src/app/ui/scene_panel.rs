@@ -128,34 +128,82 @@ fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         }
     });
     let mut params = cx.state.params().clone();
-    let keys: Vec<(&'static str, &'static str)> = params
+    // Each number parameter: key, label, value, range, log, display scale, unit.
+    type Knob = (&'static str, &'static str, f64, f64, f64, bool, f64, &'static str);
+    let knobs: Vec<Knob> = params
         .controls()
         .iter()
-        .filter(|c| matches!(c.kind, ControlKind::Number { .. }) && !c.style_only)
-        .map(|c| (c.key, c.label))
+        .filter(|c| !c.style_only)
+        .filter_map(|c| match &c.kind {
+            ControlKind::Number { value, min, max, log, display_scale } => {
+                Some((c.key, c.label, **value, *min, *max, *log, *display_scale, c.unit))
+            }
+            _ => None,
+        })
         .collect();
+    // A range around the parameter's value: ÷÷ 3 on a log scale, ± half its
+    // range otherwise, inside the documented range.
+    let around = |k: &Knob, steps: usize| {
+        let (key, _, v, lo, hi, log, _, _) = *k;
+        let (from, to) = if log && v > 0.0 {
+            ((v / 3.0).max(lo), (v * 3.0).min(hi))
+        } else {
+            let half = 0.25 * (hi - lo).min(v.abs().max(1e-300) * 4.0);
+            ((v - half).max(lo), (v + half).min(hi))
+        };
+        Sweep { key: key.to_string(), from, to, steps }
+    };
     let mut sweep: Sweep = cx.state.sweep.clone();
+    // A form left from another scene starts again from this scene's first parameter.
+    let mut knob = knobs.iter().find(|k| k.0 == sweep.key);
+    if knob.is_none()
+        && let Some(first) = knobs.first()
+    {
+        sweep = around(first, sweep.steps);
+        knob = Some(first);
+    }
     ui.horizontal(|ui| {
-        let current = keys.iter().find(|k| k.0 == sweep.key).map_or("choose", |k| k.1);
+        let current = knob.map_or("choose", |k| k.1);
         egui::ComboBox::from_label("sweep parameter").selected_text(current).show_ui(ui, |ui| {
-            for (k, l) in &keys {
-                ui.selectable_value(&mut sweep.key, k.to_string(), *l);
+            for k in &knobs {
+                if ui.selectable_label(k.0 == sweep.key, k.1).clicked() && k.0 != sweep.key {
+                    sweep = around(k, sweep.steps);
+                }
             }
         });
     });
+    let (scale, unit) = knobs.iter().find(|k| k.0 == sweep.key).map_or((1.0, ""), |k| (k.6, k.7));
+    let suffix = if unit.is_empty() { String::new() } else { format!(" {}", crate::units::pretty(unit)) };
     ui.horizontal(|ui| {
-        ui.add(egui::DragValue::new(&mut sweep.from).speed(0.01).prefix("from "));
-        ui.add(egui::DragValue::new(&mut sweep.to).speed(0.01).prefix("to "));
+        // Shown in the parameter's display unit, kept in SI.
+        let (mut from, mut to) = (sweep.from * scale, sweep.to * scale);
+        if ui.add(sweep_field(&mut from, "from ", &suffix, unit)).changed() {
+            sweep.from = from / scale;
+        }
+        if ui.add(sweep_field(&mut to, "to ", &suffix, unit)).changed() {
+            sweep.to = to / scale;
+        }
         ui.add(egui::DragValue::new(&mut sweep.steps).range(2..=12).prefix("n "));
     });
     if sweep != cx.state.sweep {
         cx.send(Command::SetSweep(sweep));
     }
-    ui.small("sweep values are in SI units, log-spaced where the parameter is logarithmic");
+    ui.small("log-spaced where the parameter is logarithmic");
     if ui.button("Draw family").clicked() {
         cx.send(Command::DrawFamily);
     }
     what_matters(ui, cx);
+}
+
+/// A sweep end in the parameter's display unit: three digits, and a typed
+/// value may name its unit.
+fn sweep_field<'a>(v: &'a mut f64, prefix: &str, suffix: &str, unit: &'static str) -> egui::DragValue<'a> {
+    egui::DragValue::new(v)
+        .speed(0.01)
+        .prefix(prefix)
+        .suffix(suffix)
+        .custom_formatter(|v, _| figure::human(v))
+        .custom_parser(move |t| crate::units::parse_in(t, unit).ok())
 }
 
 /// The "what matters" tool: a result of the scene and a factor.

@@ -14,6 +14,9 @@ use egui_plot::{GridInput, GridMark, Plot};
 use std::cell::RefCell;
 use std::rc::Rc;
 
+/// Rows of a legend below its plot shown at once; more scroll.
+const LEGEND_ROWS_BELOW: usize = 3;
+
 mod items;
 mod paint;
 use items::draw_items;
@@ -274,15 +277,19 @@ pub fn show(
         // No free corner: the legend goes beside the plot when it is narrow
         // enough, below it otherwise.
         // A map already has its colour bar beside it: its legend goes below.
-        let beside = was_outside && bar.is_none() && legend_size.x < 0.4 * plot_size.x;
+        // Beside only when it is as short as the plot; below, at most three
+        // rows are shown and the rest scroll, so that a long legend (many
+        // pins) neither pushes the panel out nor shrinks the plot away.
+        let beside = was_outside && bar.is_none() && legend_size.x < 0.4 * plot_size.x && legend_size.y < plot_size.y;
         let below = was_outside && !beside;
         if beside {
             plot_size.x -= legend_size.x + 8.0;
         }
         let below_rows =
             if below { legend.len().div_ceil(((plot_size.x / (legend_size.x.max(60.0))) as usize).max(1)) } else { 0 };
+        let below_shown = below_rows.min(LEGEND_ROWS_BELOW);
         if below {
-            plot_size.y -= below_rows as f32 * row + 8.0;
+            plot_size.y -= below_shown as f32 * row + 8.0;
         }
         if fig.square {
             // The frame is square when the plot's outer size allows for its
@@ -372,7 +379,7 @@ pub fn show(
                 if !legend.is_empty() {
                     // The frame the plot would have with the legend inside.
                     let inside_w = frame.width() + if beside { legend_size.x + 8.0 } else { 0.0 };
-                    let inside_h = frame.height() + if below { below_rows as f32 * row + 8.0 } else { 0.0 };
+                    let inside_h = frame.height() + if below { below_shown as f32 * row + 8.0 } else { 0.0 };
                     let b = shown.transform.bounds();
                     let drawn = View {
                         x: [untransform(b.min()[0], xs), untransform(b.max()[0], xs)],
@@ -404,12 +411,23 @@ pub fn show(
             })
             .inner;
         if below {
-            ui.horizontal_wrapped(|ui| {
-                for e in &legend {
-                    let (rect, _) = ui.allocate_exact_size(legend_size_one(ui, e, &font), egui::Sense::hover());
-                    paint_entry(ui, e, rect, look);
-                }
-            });
+            let width = size.x;
+            egui::ScrollArea::vertical()
+                .id_salt(("legend-below", fig.id.as_str()))
+                .max_height(below_shown as f32 * row + 4.0)
+                .max_width(width)
+                .show(ui, |ui| {
+                    ui.set_max_width(width);
+                    ui.horizontal_wrapped(|ui| {
+                        for e in &legend {
+                            // An entry wider than the panel is cut, not the panel widened.
+                            let mut one = legend_size_one(ui, e, &font);
+                            one.x = one.x.min(width - 16.0);
+                            let (rect, _) = ui.allocate_exact_size(one, egui::Sense::hover());
+                            paint_entry(ui, e, rect, look);
+                        }
+                    });
+                });
         }
         response
     });

@@ -84,9 +84,10 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
     let mut params = state.params().clone();
     {
         let mut controls = params.controls();
-        egui::Grid::new(("controls", select.id())).num_columns(1).striped(false).show(ui, |ui| {
-            // A slide's few highlighted controls sit side by side in one row.
-            let in_row = only.is_some();
+        // A slide's few highlighted controls sit side by side, wrapping to a
+        // second line rather than cutting their labels.
+        let in_row = only.is_some();
+        let mut body = |ui: &mut egui::Ui| {
             for c in controls.iter_mut().filter(|c| shown(c.key)) {
                 let (key, label, unit, doc) = (c.key, c.label, c.unit, c.doc);
                 match &mut c.kind {
@@ -183,7 +184,12 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                     ui.end_row();
                 }
             }
-        });
+        };
+        if in_row {
+            ui.horizontal_wrapped(|ui| body(ui));
+        } else {
+            egui::Grid::new(("controls", select.id())).num_columns(1).striped(false).show(ui, |ui| body(ui));
+        }
     }
     if material_changed {
         params.material_changed();

@@ -53,7 +53,7 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     });
     if !highlight.is_empty() {
         // The slide's highlighted controls in one row, after the headline.
-        ui.horizontal(|ui| {
+        ui.horizontal_wrapped(|ui| {
             super::scene_panel::headline(ui, cx);
             ui.separator();
             controls::show(ui, cx, Select::Slide(&highlight));

@@ -263,6 +263,28 @@ impl Heatmap {
     }
 
     /// A categorical map: `values` are indices into `categories`.
+    /// The cell nearest to the point `at` (axis units; nearest in log10 on
+    /// logarithmic axes): its centre, its value, and the value as shown
+    /// ("0.53", or the category's name). The window's hover and the Inspect card name the
+    /// same cell.
+    pub fn cell_at(&self, at: [f64; 2], scales: (Scale, Scale)) -> Option<([f64; 2], f64, String)> {
+        let nearest = |grid: &[f64], v: f64, s: Scale| {
+            let d = |g: f64| if s == Scale::Log { (g / v).ln().abs() } else { (g - v).abs() };
+            (0..grid.len()).min_by(|&a, &b| d(grid[a]).total_cmp(&d(grid[b])))
+        };
+        if !(at[0].is_finite() && at[1].is_finite()) {
+            return None;
+        }
+        let (i, j) = (nearest(&self.x, at[0], scales.0)?, nearest(&self.y, at[1], scales.1)?);
+        let v = *self.values.get(j * self.x.len() + i)?;
+        let text = if self.categories.is_empty() {
+            human(v)
+        } else {
+            self.categories.get(v.round().max(0.0) as usize).cloned().unwrap_or_else(|| "—".into())
+        };
+        Some(([self.x[i], self.y[j]], v, text))
+    }
+
     pub fn categorical(x: Vec<f64>, y: Vec<f64>, values: Vec<f64>, label: &str, categories: &[&str]) -> Self {
         Heatmap {
             x,

@@ -150,6 +150,7 @@ pub fn pretty(unit: &str) -> String {
     if unit == "deg" {
         return "°".into();
     }
+    let unit = unit.replace("M_sun", "M☉").replace("L_sun", "L☉").replace("M_earth", "M⊕");
     let mut out = String::with_capacity(unit.len());
     let mut chars = unit.chars().peekable();
     while let Some(c) = chars.next() {
@@ -237,12 +238,48 @@ pub fn system_of_chapter(chapter: u8) -> System {
     if (4..=6).contains(&chapter) { System::Cgs } else { System::Si }
 }
 
+/// Writes a number as the window shows it ("1.5×10⁻⁷", "10⁻³", "−2") the
+/// way Rust reads numbers ("1.5e-7", "1e-3", "-2"); other text is kept.
+fn plain_number(text: &str) -> String {
+    let sup = |c: char| match c {
+        '⁻' => Some('-'),
+        '⁰' => Some('0'),
+        '¹' => Some('1'),
+        '²' => Some('2'),
+        '³' => Some('3'),
+        '⁴' => Some('4'),
+        '⁵' => Some('5'),
+        '⁶' => Some('6'),
+        '⁷' => Some('7'),
+        '⁸' => Some('8'),
+        '⁹' => Some('9'),
+        _ => None,
+    };
+    let t = text.replace('−', "-");
+    // "a×10ⁿ" or "10ⁿ" at the start: the exponent is the superscript run after "10".
+    let (mantissa, rest) = match t.split_once("×10") {
+        Some((m, rest)) => (m.to_string(), rest),
+        None => match t.strip_prefix("10").or_else(|| t.strip_prefix("-10")) {
+            Some(rest) if rest.starts_with(|c: char| sup(c).is_some()) => {
+                ((if t.starts_with('-') { "-1" } else { "1" }).to_string(), rest)
+            }
+            _ => return t,
+        },
+    };
+    let exponent: String = rest.chars().map_while(sup).collect();
+    if exponent.is_empty() {
+        return t;
+    }
+    let after: String = rest.chars().skip(exponent.chars().count()).collect();
+    format!("{mantissa}e{exponent}{after}")
+}
+
 /// Reads a value typed into a field shown in `field_unit`, with or without a
 /// unit after it: "5", "5 µm", "5um", "0.005 mm", "3 cm/s", "−2e-3". The
 /// answer is in `field_unit`. A unit of another kind, or one this table does
 /// not know, is refused with a message naming it.
 pub fn parse_in(text: &str, field_unit: &str) -> Result<f64, String> {
-    let t = text.trim().replace('−', "-");
+    let t = plain_number(text.trim());
     // The number is the longest prefix that parses.
     let split = (0..=t.len())
         .rev()
@@ -261,6 +298,9 @@ pub fn parse_in(text: &str, field_unit: &str) -> Result<f64, String> {
         let want = if field_unit.trim().is_empty() { "a pure number".to_string() } else { pretty(field_unit) };
         return Err(format!("\"{rest}\" is not a unit of the same kind as {want}"));
     }
+    if typed.si == field.si {
+        return Ok(number);
+    }
     Ok(number * typed.si / field.si)
 }
 
@@ -275,6 +315,8 @@ mod tests {
         assert_eq!(pretty("g cm^-3"), "g cm⁻³");
         assert_eq!(pretty("µm"), "µm");
         assert_eq!(pretty("deg"), "°");
+        assert_eq!(pretty("M_sun"), "M☉");
+        assert_eq!(pretty("M_earth yr^-1"), "M⊕ yr⁻¹");
     }
 
     #[test]
@@ -325,5 +367,11 @@ mod tests {
         assert!(parse_in("5 furlongs", "µm").unwrap_err().contains("unknown unit \"furlongs\""));
         assert!(parse_in("abc", "µm").unwrap_err().contains("not a number"));
         assert!(parse_in("5 m", "").is_err());
+        // The window's own way of writing numbers reads back.
+        assert_eq!(parse_in("1.5×10⁻⁷", ""), Ok(1.5e-7));
+        assert_eq!(parse_in("10⁻³", ""), Ok(1e-3));
+        assert_eq!(parse_in("−10⁴ m/s", "m/s"), Ok(-1e4));
+        assert_eq!(parse_in("2×10³ µm", "µm"), Ok(2e3));
+        assert_eq!(parse_in("100", ""), Ok(100.0));
     }
 }

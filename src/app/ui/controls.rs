@@ -248,7 +248,7 @@ fn typed_slider(
 fn field_text(v: f64, log: bool) -> String {
     let a = v.abs();
     if log {
-        figure::tick_label(v)
+        figure::human(v)
     } else if v == 0.0 || !v.is_finite() {
         format!("{v}")
     } else if (1e-3..1e5).contains(&a) {

@@ -148,7 +148,9 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let multiples = n_panels > 6;
     // Panels below this size leave a plot area under ~400 × 260 px once
     // titles, ticks and legends are placed: one at a time then.
-    let legible = egui::vec2(420.0, 340.0);
+    // A colour bar takes ~140 px beside its plot.
+    let bar_w = if out.figures.iter().any(|f| f.heatmap.is_some() || f.family.is_some()) { 140.0 } else { 0.0 };
+    let legible = egui::vec2(420.0 + bar_w, 340.0);
     let grid = |avail: egui::Vec2| {
         let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
         let cols = match n_panels {

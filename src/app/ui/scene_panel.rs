@@ -81,10 +81,10 @@ pub fn navigator(ui: &mut egui::Ui, cx: &mut Cx<'_>, width: f32) {
 pub fn headline(ui: &mut egui::Ui, cx: &Cx<'_>) {
     let Some(out) = cx.state.output() else { return };
     let text = match (out.scalar("e"), out.scalar("sticks"), out.scalar("v_stick")) {
-        (Some(e), Some(s), _) => format!("e = {e:.4} ({})", if s > 0.5 { "sticks" } else { "bounces" }),
+        (Some(e), Some(s), _) => format!("e = {} ({})", figure::human(e), if s > 0.5 { "sticks" } else { "bounces" }),
         // The search ends at 10⁴ m/s: above it the spheres stick at every speed tried.
-        (_, _, Some(v)) if v.is_infinite() => "v_stick > 10⁴ m/s".to_string(),
-        (_, _, Some(v)) => format!("v_stick = {} m/s", figure::tick_label(v)),
+        (_, _, Some(v)) if v.is_infinite() => "v_stick > 10⁴ m s⁻¹".to_string(),
+        (_, _, Some(v)) => format!("v_stick = {} m s⁻¹", figure::human(v)),
         // A short first note serves as the headline; a paragraph stays
         // among the notes below the parameters instead of pushing them
         // down.

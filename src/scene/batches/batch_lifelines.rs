@@ -33,7 +33,7 @@ impl Scene for Params {
         source: "Sect. 5.3; Figs. 5.3 (middle, bottom), 5.5",
         explanation: "Every batch's particle mass against its radius over the run: growth at fixed radius, \
 then drift once Ωt_s approaches unity. Points are coloured by the decade of the Stokes number \
-    (Ωt_s < 10⁻⁴, 10⁻⁴–10⁻³, …, > 1) or by the filling factor; lines are every batch's path.",
+    (Ωt_s < 10⁻⁴, 10⁻⁴–10⁻³, …, > 1) or by the filling factor, along the paths drawn (every n-th batch).",
         heavy: true,
     };
 
@@ -73,7 +73,7 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         let run = cache.get(&p.run, progress)?;
         let mut fig = Figure::new(
             "batch-lifelines",
-            "Particle mass against radius, every batch",
+            "Particle mass against radius of the batches",
             Axis::log("radius R", "AU"),
             Axis::log("particle mass", "g"),
         );
@@ -91,8 +91,11 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         let labels_st = ["Ωt_s < 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 10⁻²", "10⁻² – 10⁻¹", "10⁻¹ – 1", "Ωt_s > 1"];
         let labels_phi = ["φ < 10⁻⁵", "10⁻⁵ – 10⁻⁴", "10⁻⁴ – 10⁻³", "10⁻³ – 10⁻²", "10⁻² – 10⁻¹", "φ > 10⁻¹"];
         let mut bins: Vec<Vec<[f64; 2]>> = vec![Vec::new(); 6];
+        // Marked along the drawn paths, with markers that shrink as paths crowd.
+        let every = p.every.max(1);
+        let size = (40.0 / n.div_ceil(every).max(1) as f64).sqrt().clamp(0.4, 1.0);
         for f in &run.frames {
-            for b in f.batches.iter().filter(|b| b.dust && b.mass > 0.0) {
+            for (_, b) in f.batches.iter().enumerate().filter(|(i, b)| i % every == 0 && b.dust && b.mass > 0.0) {
                 let x = if p.colour_by_filling { b.filling.log10() + 5.0 } else { b.stokes.log10() + 4.0 };
                 let k = (x.floor().max(-1.0) + 1.0).clamp(0.0, 5.0) as usize;
                 bins[k].push([b.r / AU, b.mass * 1e3]);
@@ -101,7 +104,7 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         for (k, pts) in bins.into_iter().enumerate() {
             if !pts.is_empty() {
                 let name = if p.colour_by_filling { labels_phi[k] } else { labels_st[k] };
-                fig = fig.with(Series::new(name, pts, Style::Points, k));
+                fig = fig.with(Series::new(name, pts, Style::Points, k).sized(size));
             }
         }
         Ok(SceneOutput {

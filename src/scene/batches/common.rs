@@ -80,8 +80,8 @@ impl BatchParams {
         c.push(
             quantities::v_frag(&mut self.v_frag)
                 .default(d.v_frag)
-                .labelled("fragmentation/bouncing threshold")
-                .doc("same-size collisions above it stop growth (1e4: none)"),
+                .labelled("growth barrier v_frag")
+                .doc("fragmentation or bouncing threshold: same-size collisions above it stop growth (1e4: none)"),
         );
         c.push(
             Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)

@@ -37,7 +37,7 @@ impl Scene for Params {
         source: "Sects. 5.3–5.4; Eq. 5.13; Figs. 5.4, 5.6, 5.12–5.14",
         explanation: "Each batch's radius against time (grey paths). Along the drawn paths, green points: the mass-dominating \
 particles have 10⁻³ ≤ Ωt_s ≤ 1. Yellow, vermilion, purple: the midplane dust-to-gas ratio of \
-particles with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Blue \
+particles with 10⁻² ≤ Ωt_s ≤ 1, (ρ*_d/ρ_g) = Z* h_g/h_d (5.13), exceeds 0.1, 0.5 and 1. Light-blue \
 diamonds: planetesimal formation. Streaming instability needs i) 10⁻² ≤ Ωt_s ≤ 1, ii) a loading near unity and iv) \
 t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is reported. Labelled dashed lines \
 mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
@@ -131,17 +131,17 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
             .iter()
             .filter_map(|f| if let Fate::Planetesimals { t, r } = f { Some([t / YEAR, r / AU]) } else { None })
             .collect();
-        fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 1));
+        fig = fig.with(Series::new("planetesimals form", formed, Style::Marker, 5));
         let t0 = run.frames.first().map_or(1.0, |f| f.t / YEAR);
         let t1 = p.run.duration_yr;
         for (name, a) in [("Jupiter", 5.2), ("Saturn", 9.5), ("Uranus", 19.2), ("Neptune", 30.1)] {
             // One legend entry for the four reference orbits.
             fig = fig
                 .with(
-                    Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 5)
+                    Series::new(name, vec![[t0, a], [t1, a]], Style::Dashed, 1)
                         .keyed("Jupiter, Saturn, Uranus, Neptune"),
                 )
-                .label([t0, a], name, Some(5), crate::figure::Anchor::Left);
+                .label([t0, a], name, Some(1), crate::figure::Anchor::Left);
         }
         let scalars = vec![
             Scalar {

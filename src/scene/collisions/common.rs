@@ -217,7 +217,7 @@ pub fn reference_curves(pair: &Pair, a_max: f64) -> [Series; 4] {
 
 /// A fitted value as text, e.g. "0.13 (+0.02 −0.02) J/m²" or "> 67 MPa".
 pub fn describe(b: &Bounded, unit: &str, scale: f64) -> String {
-    use crate::figure::tick_label as t;
+    use crate::figure::human as t;
     match *b {
         Bounded::Value { best, plus, minus } => {
             format!("{} (+{} −{}) {unit}", t(best * scale), t(plus * scale), t(minus * scale))

@@ -179,7 +179,7 @@ range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
             Scalar { key: "v_stick", label: "sticking velocity (model)", value: v_s, unit: "m s^-1" },
             Scalar {
                 key: "v_y",
-                label: "yield velocity v_y (inf: no yield)",
+                label: "yield velocity v_y (∞: no yield)",
                 value: setup.yield_velocity(),
                 unit: "m s^-1",
             },

@@ -201,10 +201,10 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             if norm > 0.0 {
                 let pts = snap.projectiles.iter().map(|q| [q.0 * 1e3, q.1 / norm]).collect();
                 let label = format!(
-                    "{:.0} yr, Ωt_s = {:.2}, ζ = {:.2}",
-                    snap.t / YEAR,
-                    snap.sample.stokes_max,
-                    snap.sample.zeta
+                    "{} yr, Ωt_s = {}, ζ = {}",
+                    crate::figure::human(snap.t / YEAR),
+                    crate::figure::human(snap.sample.stokes_max),
+                    crate::figure::human(snap.sample.zeta)
                 );
                 proj = proj.with(Series::new(label, pts, Style::Points, k));
             }

@@ -164,7 +164,7 @@ on glass (Sümer & Sitti 2008) the thesis infers Δγ/γ ≈ 3; their measured f
                 let model = rolling_force(&pair, rolling_torque(&pair, h));
                 let inside = (model - m.force).abs() <= m.error;
                 notes.push(format!(
-                    "{}: measured ({:.1} ± {:.1}) × 1e-10 N at d = {:.1} µm; Δγ/γ = 0.5 gives {:.2} × 1e-10 N ({}).",
+                    "{}: measured ({:.1} ± {:.1})×10⁻¹⁰ N at d = {:.1} µm; Δγ/γ = 0.5 gives {:.2}×10⁻¹⁰ N ({}).",
                     m.label,
                     m.force * 1e10,
                     m.error * 1e10,

@@ -288,8 +288,10 @@ pub fn show(
         let below_rows =
             if below { legend.len().div_ceil(((plot_size.x / (legend_size.x.max(60.0))) as usize).max(1)) } else { 0 };
         let below_shown = below_rows.min(LEGEND_ROWS_BELOW);
+        // A wrapped row of entries: the entry and the spacing between rows.
+        let row_below = row + ui.spacing().item_spacing.y;
         if below {
-            plot_size.y -= below_shown as f32 * row + 8.0;
+            plot_size.y -= below_shown as f32 * row_below + 8.0;
         }
         if fig.square {
             // The frame is square when the plot's outer size allows for its
@@ -398,7 +400,7 @@ pub fn show(
                 if !legend.is_empty() {
                     // The frame the plot would have with the legend inside.
                     let inside_w = frame.width() + if beside { legend_size.x + 8.0 } else { 0.0 };
-                    let inside_h = frame.height() + if below { below_shown as f32 * row + 8.0 } else { 0.0 };
+                    let inside_h = frame.height() + if below { below_shown as f32 * row_below + 8.0 } else { 0.0 };
                     let b = shown.transform.bounds();
                     let drawn = View {
                         x: [untransform(b.min()[0], xs), untransform(b.max()[0], xs)],
@@ -433,7 +435,7 @@ pub fn show(
             let width = size.x;
             egui::ScrollArea::vertical()
                 .id_salt(("legend-below", fig.id.as_str()))
-                .max_height(below_shown as f32 * row + 4.0)
+                .max_height(below_shown as f32 * row_below + 4.0)
                 .max_width(width)
                 .show(ui, |ui| {
                     ui.set_max_width(width);

@@ -344,7 +344,12 @@ pub struct Chapter {
 impl Chapter {
     /// The unit system the thesis writes this chapter's numbers in.
     pub fn units(&self) -> crate::units::System {
-        crate::units::system_of_chapter(self.order)
+        match self.order {
+            // The overview's ladder climbs to chapters 4–5, and its monomer
+            // card feeds their aggregates: cgs, as those chapters write it.
+            1 => crate::units::System::Cgs,
+            n => crate::units::system_of_chapter(n),
+        }
     }
 }
 

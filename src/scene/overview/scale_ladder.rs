@@ -321,7 +321,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
     let law = ROLLING_LAWS.iter().find(|(k, _)| *k == p.run.disk.rolling_law).map_or(ROLLING_LAWS[0].1, |l| l.1);
     vec![
         Rung {
-            scale: format!("1 · Two monomers, a₀ = {} µm (ch. 2–3)", h(mono.radius * 1e6)),
+            scale: format!("1 · Two monomers, a₀ = {}\u{a0}µm (ch.\u{a0}2–3)", h(mono.radius * 1e6)),
             items: vec![
                 item(
                     "contact radius a_eq",
@@ -370,7 +370,11 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
             ],
         },
         Rung {
-            scale: format!("4 · The disk: {} M☉, Z₀ = {} (ch. 5)", h(p.run.disk.disk_mass), h(p.run.disk.metallicity)),
+            scale: format!(
+                "4 · The disk: {}\u{a0}M☉, Z₀ = {} (ch.\u{a0}5)",
+                h(p.run.disk.disk_mass),
+                h(p.run.disk.metallicity)
+            ),
             items: vec![
                 item("planetesimals form out to", text("formation_edge", &|v| format!("{} AU", h(v))), "Fig. 5.9"),
                 item("dust converted", text("converted", &|v| format!("{} %", h(100.0 * v))), "Sect. 5.3"),

@@ -133,7 +133,11 @@ fn grid_marks(
     t.into_iter()
         .filter_map(|t| {
             let v = transform(t.value, scale)?;
+            // An x label that would reach past the axis' right end is left
+            // off rather than cut.
+            let past_end = |l: &str| char_px > 0.0 && (hi - v) / span * px < 0.5 * l.chars().count() as f64 * char_px;
             Some(match t.label {
+                Some(l) if past_end(&l) => GridMark { value: v, step_size: span / 60.0 },
                 Some(l) => {
                     remembered.push((v, l));
                     // A step as wide as the axis: labels and lines at full strength.

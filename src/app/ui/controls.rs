@@ -90,6 +90,16 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
         let mut body = |ui: &mut egui::Ui| {
             for c in controls.iter_mut().filter(|c| shown(c.key)) {
                 let (key, label, unit, doc) = (c.key, c.label, c.unit, c.doc);
+                if in_row {
+                    // A control that would not fit the rest of the line starts
+                    // the next one (egui would cut its label instead).
+                    let font = egui::TextStyle::Body.resolve(ui.style());
+                    let text = ui.painter().layout_no_wrap(label.to_string(), font, egui::Color32::WHITE).size().x;
+                    let need = text + ui.spacing().slider_width + 120.0;
+                    if ui.available_size_before_wrap().x < need {
+                        ui.end_row();
+                    }
+                }
                 match &mut c.kind {
                     ControlKind::Number { value, min, max, log, display_scale } => {
                         let mut shown = **value * *display_scale;
@@ -186,7 +196,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
             }
         };
         if in_row {
-            ui.horizontal_wrapped(|ui| body(ui));
+            // The caller's line wraps (a slide's headline row).
+            body(ui);
         } else {
             egui::Grid::new(("controls", select.id())).num_columns(1).striped(false).show(ui, |ui| body(ui));
         }
@@ -247,7 +258,17 @@ fn typed_slider(
 /// significant digits on linear ones.
 fn field_text(v: f64, log: bool) -> String {
     let a = v.abs();
-    if log {
+    if log && (a >= 1e4 || (a > 0.0 && a < 1e-2)) && a.is_finite() {
+        // Decades as powers of ten: "10⁴", "2.5×10⁻⁷".
+        let e = a.log10().floor() as i32;
+        let m = figure::human(v / 10f64.powi(e));
+        match m.as_str() {
+            "1" => figure::ticks::power_of_ten(e),
+            "−1" => format!("−{}", figure::ticks::power_of_ten(e)),
+            "10" => figure::ticks::power_of_ten(e + 1),
+            _ => format!("{m}×10{}", figure::ticks::superscript(e)),
+        }
+    } else if log {
         figure::human(v)
     } else if v == 0.0 || !v.is_finite() {
         format!("{v}")

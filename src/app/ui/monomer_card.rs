@@ -47,7 +47,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 /// A derived value as text, in the units the scene's chapter uses.
 fn value_text(s: &Scalar, system: units::System) -> String {
     if s.value.is_infinite() {
-        return "none up to 10 km/s".into();
+        return "none up to 10\u{a0}km/s".into();
     }
     units::text(s.value, s.unit, system)
 }

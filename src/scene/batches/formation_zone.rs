@@ -145,7 +145,7 @@ disks run in parallel.",
         let mut fig = Figure::new(
             "formation-zone",
             "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
-            Axis::log("disk mass", "M_sun"),
+            Axis::log("disk mass", "M☉"),
             Axis::linear("outer edge", "AU"),
         )
         // Metallicity is the colour (a colour bar), the disk set the line style.

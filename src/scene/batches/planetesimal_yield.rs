@@ -98,7 +98,7 @@ are independent and go in parallel.",
             "planetesimal-mass",
             "Planetesimal mass (Fig. 5.7)",
             Axis::log("time", "yr"),
-            Axis::log("planetesimal mass", "M_earth"),
+            Axis::log("planetesimal mass", "M⊕"),
         );
         let mut fig_f = Figure::new(
             "converted-fraction",
@@ -114,11 +114,11 @@ are independent and go in parallel.",
         let zs = log_grid(p.z_min, p.z_max, p.n_z);
         let by_style = zs.len() <= 3 && p.n_mass > 1;
         if by_style {
-            fig_m = fig_m.family("disk mass", "M_sun", Scale::Log);
-            fig_f = fig_f.family("disk mass", "M_sun", Scale::Log);
+            fig_m = fig_m.family("disk mass", "M☉", Scale::Log);
+            fig_f = fig_f.family("disk mass", "M☉", Scale::Log);
         }
         for (k, (m, z, run)) in runs.iter().enumerate() {
-            let name = format!("M_D = {} M_sun, Z₀ = {}", crate::figure::human(*m), crate::figure::human(*z));
+            let name = format!("M_D = {} M☉, Z₀ = {}", crate::figure::human(*m), crate::figure::human(*z));
             let earth = 5.972e24;
             let series = |points: Vec<[f64; 2]>| {
                 let zi = zs.iter().position(|x| x == z).unwrap_or(0);

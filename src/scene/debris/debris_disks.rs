@@ -113,7 +113,7 @@ Herschel cold debris disks. Arrows: how the ratio moves for ten times larger L, 
             Axis::log("s_min / s_blow", ""),
         )
         .with(Series::new(
-            format!("L = {} L_sun (6.6)/(6.7)", crate::figure::human(p.luminosity)),
+            format!("L = {} L☉ (6.6)/(6.7)", crate::figure::human(p.luminosity)),
             line(p.luminosity),
             Style::Line,
             0,
@@ -141,7 +141,7 @@ Herschel cold debris disks. Arrows: how the ratio moves for ten times larger L, 
                     .map(|r| [r, ratio_to_blowout(p.gamma, p.eta, p.f, r * AU, s.luminosity)])
                     .collect();
                 fig = fig.with(Series::new(
-                    format!("{} model, L = {} L_sun", s.name, s.luminosity),
+                    format!("{} model, L = {} L☉", s.name, s.luminosity),
                     model,
                     Style::Line,
                     1 + k,

@@ -104,6 +104,8 @@ pub(super) fn draw_items(
         };
         let text_color = if look.dark { Color32::WHITE } else { Color32::BLACK };
         let c = l.color.map_or(text_color, |k| rgb(crate::figure::PALETTE[k % crate::figure::PALETTE.len()], stale));
+        // On the dark theme a coloured label is lightened to read on black.
+        let c = if look.dark && l.color.is_some() { c.lerp_to_gamma(Color32::WHITE, 0.45) } else { c };
         let text = egui::RichText::new(&l.text).size(0.9 * look.text).color(c).background_color(if look.dark {
             Color32::from_black_alpha(170)
         } else {

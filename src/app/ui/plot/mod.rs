@@ -437,8 +437,16 @@ pub fn show(
             .inner;
         if below {
             let width = size.x;
+            // The scroll bar always shows when rows are hidden: they exist.
+            let bar = if below_rows > below_shown {
+                egui::scroll_area::ScrollBarVisibility::AlwaysVisible
+            } else {
+                egui::scroll_area::ScrollBarVisibility::AlwaysHidden
+            };
+            ui.spacing_mut().scroll = egui::style::ScrollStyle::solid();
             egui::ScrollArea::vertical()
                 .id_salt(("legend-below", fig.id.as_str()))
+                .scroll_bar_visibility(bar)
                 .max_height(below_shown as f32 * row_below + 4.0)
                 .max_width(width)
                 .show(ui, |ui| {

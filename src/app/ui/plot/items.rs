@@ -2,7 +2,7 @@
 //! labels, and the time cursor.
 
 use super::paint::heatmap;
-use super::{Look, Overlay, pin_color, points, rgb, runs, transform};
+use super::{Look, Overlay, family_rgb, pin_color, points, rgb, runs, transform};
 use crate::figure::{Anchor, Figure, Fill, Series, Shape, Style};
 use crate::scene::timeline::{CURSOR_COLOR, Mark};
 use egui::{Color32, Stroke};
@@ -21,7 +21,7 @@ pub(super) fn draw_items(
         heatmap(plot_ui, fig, h);
     }
     for s in &overlay.pinned {
-        let c = rgb(pin_color(s, overlay), false);
+        let c = rgb(pin_color(s, overlay, look.dark), false);
         // Pins of a sweep are solid in their family colour, others dashed;
         // like the current curves, they break where the axes cannot show a
         // point and are thinned when dashed.
@@ -31,8 +31,13 @@ pub(super) fn draw_items(
             plot_ui.line(if dashed { l.style(LineStyle::Dashed { length: 9.0 }) } else { l });
         }
     }
+    let family = fig.family.as_ref().zip(fig.family_range());
     for s in &fig.series {
-        let c = rgb(fig.color_of(s), stale);
+        let color = match (family, s.family) {
+            (Some((f, (lo, hi))), Some(v)) => family_rgb(crate::figure::family_fraction(v, lo, hi, f.scale), look.dark),
+            _ => fig.color_of(s),
+        };
+        let c = rgb(color, stale);
         let name = s.name.clone();
         if s.style.is_line() {
             // A point the axes cannot show breaks the line, as in the files.

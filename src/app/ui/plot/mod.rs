@@ -187,7 +187,7 @@ fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
         out.push(Entry {
             text: s.name.clone(),
             style: Style::Dashed,
-            color: rgb(pin_color(s, overlay), false),
+            color: rgb(pin_color(s, overlay, false), false),
             swatch: false,
         });
     }
@@ -224,9 +224,20 @@ const PIN_PALETTE: [[u8; 3]; 8] = [
     [221, 204, 119],
 ];
 
-fn pin_color(s: &Series, overlay: &Overlay) -> [u8; 3] {
+/// Where a family's colours start on the dark theme: viridis' darkest
+/// purples vanish on a black plot.
+const DARK_FAMILY_FLOOR: f64 = 0.25;
+
+/// The colour of a family member at `frac` (a [`family_fraction`], 0 to
+/// [`crate::figure::FAMILY_TOP`]); on the dark theme the map starts higher.
+pub(super) fn family_rgb(frac: f64, dark: bool) -> [u8; 3] {
+    let top = crate::figure::FAMILY_TOP;
+    colormap(if dark { DARK_FAMILY_FLOOR + frac / top * (top - DARK_FAMILY_FLOOR) } else { frac })
+}
+
+fn pin_color(s: &Series, overlay: &Overlay, dark: bool) -> [u8; 3] {
     match (&overlay.family, s.family, pin_range(overlay)) {
-        (Some(f), Some(v), Some((lo, hi))) => colormap(family_fraction(v, lo, hi, f.scale)),
+        (Some(f), Some(v), Some((lo, hi))) => family_rgb(family_fraction(v, lo, hi, f.scale), dark),
         // Pins are numbered from 1.
         _ => PIN_PALETTE[s.color.saturating_sub(1) % PIN_PALETTE.len()],
     }

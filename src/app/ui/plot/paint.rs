@@ -167,7 +167,9 @@ pub(super) fn paint_bar(ui: &egui::Ui, b: &ColourBar, rect: Rect, look: Look) {
     let n = 48;
     for k in 0..n {
         let t = (k as f64 + 0.5) / n as f64;
-        let [r, g, bl] = colormap(t * b.top);
+        // A family's bar (top below 1) matches its curves on the dark theme.
+        let family = b.top < 1.0;
+        let [r, g, bl] = if family { super::family_rgb(t * b.top, look.dark) } else { colormap(t * b.top) };
         let y1 = bar.bottom() - k as f32 / n as f32 * bar.height();
         let y0 = bar.bottom() - (k + 1) as f32 / n as f32 * bar.height();
         painter.rect_filled(Rect::from_x_y_ranges(bar.x_range(), y0..=y1 + 0.5), 0.0, Color32::from_rgb(r, g, bl));

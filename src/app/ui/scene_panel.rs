@@ -221,11 +221,20 @@ fn what_matters(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let mut factor = cx.state.matters.factor;
     ui.horizontal(|ui| {
         let current = scalars.iter().find(|s| s.0 == output).map_or("", |s| s.1);
-        egui::ComboBox::from_label("result").selected_text(current).width(180.0).show_ui(ui, |ui| {
-            for (k, l) in &scalars {
-                ui.selectable_value(&mut output, k.to_string(), *l);
-            }
-        });
+        // The label first, the choice in the rest of the line, cut if long.
+        let label = ui.label("result");
+        let width = (ui.available_width() - 8.0).max(120.0);
+        egui::ComboBox::from_id_salt("matters-result")
+            .selected_text(current)
+            .width(width)
+            .truncate()
+            .show_ui(ui, |ui| {
+                for (k, l) in &scalars {
+                    ui.selectable_value(&mut output, k.to_string(), *l);
+                }
+            })
+            .response
+            .labelled_by(label.id);
     });
     ui.horizontal(|ui| {
         ui.add(egui::DragValue::new(&mut factor).range(1.1..=10.0).speed(0.05).prefix("each parameter ×÷ "));

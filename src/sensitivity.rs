@@ -201,29 +201,42 @@ pub struct Matters {
 }
 
 /// A numeric parameter of a scene, as the sensitivity tools vary it.
-struct Knob {
-    key: &'static str,
-    label: &'static str,
-    unit: &'static str,
-    value: f64,
-    min: f64,
-    max: f64,
-    log: bool,
+pub struct Knob {
+    /// Parameter key.
+    pub key: &'static str,
+    /// Label as shown.
+    pub label: &'static str,
+    /// SI unit.
+    pub unit: &'static str,
+    /// Unit the window shows the value in.
+    pub shown_unit: &'static str,
+    /// Display value per SI value.
+    pub display_scale: f64,
+    /// Current value (SI).
+    pub value: f64,
+    /// Lower end of the documented range (SI).
+    pub min: f64,
+    /// Upper end of the documented range (SI).
+    pub max: f64,
+    /// Whether the control is logarithmic.
+    pub log: bool,
 }
 
 /// The numeric parameters of `base` that change the physics (style-only
 /// ones aside).
-fn knobs(base: &SceneParams) -> Vec<Knob> {
+pub fn knobs(base: &SceneParams) -> Vec<Knob> {
     let mut probe = base.clone();
     probe
         .controls()
         .iter()
         .filter(|c| !c.style_only)
         .filter_map(|c| match &c.kind {
-            ControlKind::Number { value, min, max, log, .. } => Some(Knob {
+            ControlKind::Number { value, min, max, log, display_scale } => Some(Knob {
                 key: c.key,
                 label: c.label,
                 unit: c.si_unit,
+                shown_unit: c.unit,
+                display_scale: *display_scale,
                 value: **value,
                 min: *min,
                 max: *max,

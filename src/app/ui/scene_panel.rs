@@ -6,7 +6,8 @@ use super::Cx;
 use super::controls::{self, Select};
 use crate::app::command::{Command, Sweep};
 use crate::figure;
-use crate::scene::{self, ControlKind, SCENES};
+use crate::scene::{self, SCENES};
+use crate::sensitivity::Knob;
 
 /// The whole side panel.
 pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
@@ -127,35 +128,21 @@ fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             cx.send(Command::ClearPins);
         }
     });
-    let mut params = cx.state.params().clone();
-    // Each number parameter: key, label, value, range, log, display scale, unit.
-    type Knob = (&'static str, &'static str, f64, f64, f64, bool, f64, &'static str);
-    let knobs: Vec<Knob> = params
-        .controls()
-        .iter()
-        .filter(|c| !c.style_only)
-        .filter_map(|c| match &c.kind {
-            ControlKind::Number { value, min, max, log, display_scale } => {
-                Some((c.key, c.label, **value, *min, *max, *log, *display_scale, c.unit))
-            }
-            _ => None,
-        })
-        .collect();
-    // A range around the parameter's value: ÷÷ 3 on a log scale, ± half its
-    // range otherwise, inside the documented range.
+    let knobs = crate::sensitivity::knobs(cx.state.params());
+    // A range around the parameter's value: ×÷ 3 on a log scale, ± a
+    // quarter of its range otherwise, inside the documented range.
     let around = |k: &Knob, steps: usize| {
-        let (key, _, v, lo, hi, log, _, _) = *k;
-        let (from, to) = if log && v > 0.0 {
-            ((v / 3.0).max(lo), (v * 3.0).min(hi))
+        let (from, to) = if k.log && k.value > 0.0 {
+            ((k.value / 3.0).max(k.min), (k.value * 3.0).min(k.max))
         } else {
-            let half = 0.25 * (hi - lo).min(v.abs().max(1e-300) * 4.0);
-            ((v - half).max(lo), (v + half).min(hi))
+            let half = 0.25 * (k.max - k.min).min(k.value.abs().max(1e-300) * 4.0);
+            ((k.value - half).max(k.min), (k.value + half).min(k.max))
         };
-        Sweep { key: key.to_string(), from, to, steps }
+        Sweep { key: k.key.to_string(), from, to, steps }
     };
     let mut sweep: Sweep = cx.state.sweep.clone();
     // A form left from another scene starts again from this scene's first parameter.
-    let mut knob = knobs.iter().find(|k| k.0 == sweep.key);
+    let mut knob = knobs.iter().find(|k| k.key == sweep.key);
     if knob.is_none()
         && let Some(first) = knobs.first()
     {
@@ -163,16 +150,17 @@ fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         knob = Some(first);
     }
     ui.horizontal(|ui| {
-        let current = knob.map_or("choose", |k| k.1);
+        let current = knob.map_or("choose", |k| k.label);
         egui::ComboBox::from_label("sweep parameter").selected_text(current).show_ui(ui, |ui| {
             for k in &knobs {
-                if ui.selectable_label(k.0 == sweep.key, k.1).clicked() && k.0 != sweep.key {
+                if ui.selectable_label(k.key == sweep.key, k.label).clicked() && k.key != sweep.key {
                     sweep = around(k, sweep.steps);
                 }
             }
         });
     });
-    let (scale, unit) = knobs.iter().find(|k| k.0 == sweep.key).map_or((1.0, ""), |k| (k.6, k.7));
+    let (scale, unit) =
+        knobs.iter().find(|k| k.key == sweep.key).map_or((1.0, ""), |k| (k.display_scale, k.shown_unit));
     let suffix = if unit.is_empty() { String::new() } else { format!(" {}", crate::units::pretty(unit)) };
     ui.horizontal(|ui| {
         // Shown in the parameter's display unit, kept in SI.

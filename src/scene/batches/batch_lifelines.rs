@@ -93,7 +93,7 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         let mut bins: Vec<Vec<[f64; 2]>> = vec![Vec::new(); 6];
         // Marked along the drawn paths, with markers that shrink as paths crowd.
         let every = p.every.max(1);
-        let size = (40.0 / n.div_ceil(every).max(1) as f64).sqrt().clamp(0.4, 1.0);
+        let size = super::common::marker_size(n, every);
         for f in &run.frames {
             for (_, b) in f.batches.iter().enumerate().filter(|(i, b)| i % every == 0 && b.dust && b.mass > 0.0) {
                 let x = if p.colour_by_filling { b.filling.log10() + 5.0 } else { b.stokes.log10() + 4.0 };

@@ -302,3 +302,10 @@ pub fn inspect_batch(
         point: place(t, s),
     })
 }
+
+/// The size factor of markers along the drawn paths of `n` batches, every
+/// `every`-th drawn: full size up to 40 paths, shrinking as √(40/paths) to
+/// 0.4, so that markers on crowded radii stay apart.
+pub fn marker_size(n: usize, every: usize) -> f64 {
+    (40.0 / n.div_ceil(every.max(1)).max(1) as f64).sqrt().clamp(0.4, 1.0)
+}

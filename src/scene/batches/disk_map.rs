@@ -118,7 +118,7 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
             }
         }
         // Markers shrink as drawn paths crowd the radii.
-        let size = (40.0 / n.div_ceil(every).max(1) as f64).sqrt().clamp(0.4, 1.0);
+        let size = super::common::marker_size(n, every);
         fig = fig.with(Series::new("10⁻³ ≤ Ωt_s ≤ 1", window, Style::Points, 2).sized(size));
         // Loading levels in colours apart in hue and lightness: dark yellow,
         // vermilion, reddish purple.

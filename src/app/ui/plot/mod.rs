@@ -323,7 +323,7 @@ pub fn show(
             (Rc::clone(&x_labels), Rc::clone(&x_labels), Rc::clone(&y_labels), Rc::clone(&y_labels));
         let (x_unit, y_unit) = (fig.x.unit.clone(), fig.y.unit.clone());
         let (x_name, y_name) = (fig.x.label.clone(), fig.y.label.clone());
-        let map = fig.heatmap.clone();
+        let map = fig.heatmap.as_ref();
         let bounds = |r: [f64; 2], s: Scale| match (transform(r[0], s), transform(r[1], s)) {
             (Some(a), Some(b)) if b > a => (a, b),
             _ => (0.0, 1.0),
@@ -363,9 +363,7 @@ pub fn show(
                         // the label says so (an audience reads them as data).
                         let head = if name.is_empty() { "pointer at\n".to_string() } else { format!("{name}\n") };
                         // On a map: the cell under the pointer, as Inspect names it.
-                        if let Some((h, (c, v, text))) =
-                            map.as_ref().and_then(|h| Some((h, h.cell_at([x, y], (xs, ys))?)))
-                        {
+                        if let Some((h, (c, v, text))) = map.and_then(|h| Some((h, h.cell_at([x, y], (xs, ys))?))) {
                             let unit = if h.unit.is_empty() { String::new() } else { format!(" {}", h.unit) };
                             // A map of log₁₀ X reads as X.
                             let value = match h.label.strip_prefix("log₁₀ ") {

@@ -27,7 +27,10 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     ui.horizontal_top(|ui| {
         ui.allocate_ui_with_layout(egui::vec2(width, avail.y), egui::Layout::top_down(egui::Align::Min), |ui| {
             ui.set_width(width);
-            egui::ScrollArea::vertical().id_salt("ladder").show(ui, |ui| ladder_panel(ui, &rungs, text));
+            egui::ScrollArea::vertical()
+                .id_salt("ladder")
+                .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
+                .show(ui, |ui| ladder_panel(ui, &rungs, text));
         });
         ui.vertical(|ui| panels(ui, cx));
     });
@@ -219,9 +222,11 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let stale = cx.work.stale;
     // Files show what the window shows, the time cursor included.
     let drawn = |fig: &Figure| state.drawn_figures(&out).into_iter().find(|f| f.id == fig.id).unwrap_or(fig.clone());
-    let scroll = egui::ScrollArea::new([multiples, multiples])
+    // Small multiples scroll; one panel alone is sized to the area and does not.
+    let scrolls = multiples && alone.is_none();
+    let scroll = egui::ScrollArea::new([scrolls, scrolls])
         .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
-        .max_height(if multiples { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
+        .max_height(if scrolls { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
     scroll.show(ui, |ui| {
         // One panel: the plot with its legend, and its export buttons.
         let mut panel = |ui: &mut egui::Ui, fig: &Figure, size: egui::Vec2| {

@@ -22,7 +22,7 @@ pub const SOFTWARE_KEY: &str = "Software";
 const CSV_HEAD: &str = "# grainscope-preset (RON) follows, one line per comment; data below";
 
 /// What an exported file carries about its origin.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Stamp {
     /// Program and version, e.g. "grainscope 0.1.0".
     pub program: String,

@@ -48,7 +48,7 @@ impl Default for View {
 }
 
 /// A scalar at one point of parameter space.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Value {
     /// The value (for a Monte Carlo scene the mean over its seeds); None
     /// where the scene does not define it (at any of the seeds).
@@ -165,7 +165,7 @@ fn values(points: &[SceneParams], output: &str, progress: &Progress) -> Result<V
 }
 
 /// How much one parameter moves a scalar around the current point.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Influence {
     /// The parameter's key.
     pub key: String,
@@ -192,7 +192,7 @@ pub struct Influence {
 }
 
 /// What moves a scalar: its value here and every parameter's influence.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Matters {
     /// X at the current point (mean and σ over seeds for Monte Carlo).
     pub here: Value,

@@ -33,7 +33,7 @@ pub enum SweepError {
 }
 
 /// How the values of a varied parameter are spaced.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Spacing {
     /// Evenly.
     Lin,
@@ -42,7 +42,7 @@ pub enum Spacing {
 }
 
 /// One varied parameter: its key and its values.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Vary {
     /// The parameter's documented key (SI units).
     pub key: String,
@@ -159,7 +159,7 @@ impl Shard {
 }
 
 /// A preset's parameters and the parameters varied over them.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Plan {
     /// The parameters every point starts from.
     pub base: SceneParams,

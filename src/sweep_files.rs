@@ -136,6 +136,8 @@ pub fn run(
     done.sort_by_key(|r| r.index);
     let failed = done.iter().filter(|r| r.error.is_some()).count();
     let files = finish(&plan, &columns, &done, out, shard == Shard::ALL)?;
+    // Closed before it is removed (a WebAssembly build's file closes nothing).
+    #[allow(clippy::drop_non_drop)]
     drop(partial);
     let _ = std::fs::remove_file(&partial_path);
     Ok(Summary { points: total, reused, failed, files })

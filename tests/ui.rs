@@ -510,7 +510,7 @@ fn play_advances_the_time_cursor_and_pause_stops_it() {
     h.key_press(egui::Key::Period);
     h.run();
     assert!((h.state().state.time().expect("time") - (t2 + 0.01)).abs() < 1e-9);
-    h.key_press(egui::Key::F1);
+    h.key_press(egui::Key::H);
     h.run();
     h.get_by_label("Keyboard shortcuts");
     h.get_by_label_contains("undo the last parameter change");
@@ -526,7 +526,7 @@ fn an_exported_figure_reopens_its_state() {
     h.run();
     let exported = h.state().params().clone();
     h.state_mut().state.session.export_dir = dir.path().display().to_string();
-    h.key_press_modifiers(egui::Modifiers::COMMAND, egui::Key::E);
+    h.key_press(egui::Key::E);
     h.run();
     // The files are written on a thread of their own.
     let png = dir.path().join("hysteresis-energy-budget.png");

@@ -164,6 +164,10 @@ impl AppState {
     fn act(&mut self, action: Action, fx: &mut Vec<Effect>) {
         match action {
             Action::Help => self.help = !self.help,
+            Action::CopyLink => match crate::links::link_to(self.params()) {
+                Some(query) => fx.push(Effect::ShareLink(query)),
+                None => self.status = "this state is too large for a link: save it as a preset instead".into(),
+            },
             Action::Undo => self.undo(),
             Action::Redo => self.redo(),
             Action::PlayPause => self.toggle_play(),

@@ -16,6 +16,8 @@ use std::collections::HashMap;
 pub enum Action {
     /// Show or hide the list of shortcuts.
     Help,
+    /// Offer a link that opens the open scene in its present state.
+    CopyLink,
     /// Undo the last parameter change.
     Undo,
     /// Redo what was undone.

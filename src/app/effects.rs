@@ -51,6 +51,12 @@ impl GrainscopeApp {
                 self.computing.requested[state.index()] = None;
             }
             Effect::Pause(paused) => self.runner.set_paused(Lane::Compute, paused),
+            Effect::ShareLink(query) => {
+                self.state.status = match self.platform.share_link(&query) {
+                    Ok(shown) => shown,
+                    Err(why) => why,
+                }
+            }
         }
     }
 
@@ -103,7 +109,7 @@ impl GrainscopeApp {
                     self.state.status = format!("drew {}", fig.title);
                     self.state.matters.curve = Some((*base, *fig));
                 }
-                Ok(Done::Files(what, files)) => self.write_all(&folder, &files, what),
+                Ok(Done::Files(what, files)) => self.write_all(&folder, &files, &what),
                 Err(e) if matches!(finished.lane, Lane::Sweep | Lane::Curve) => {
                     self.state.error = Some(format!("not computed: {e}"));
                 }

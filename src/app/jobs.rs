@@ -15,7 +15,7 @@ use std::sync::mpsc::{Receiver, Sender, channel};
 use std::sync::{Arc, Mutex};
 
 /// Where a job runs beside others: one job at a time per lane.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize, serde::Deserialize)]
 pub enum Lane {
     /// The open scene's result: the newest wins.
     Compute,
@@ -35,8 +35,9 @@ const CURVE_POINTS: usize = 50;
 /// Points along each side of a sensitivity map.
 const MAP_POINTS: usize = 24;
 
-/// A piece of work, as plain data.
-#[derive(Debug, Clone)]
+/// A piece of work, as plain data (bytes too: a browser sends it to a Web
+/// Worker).
+#[derive(Debug, Clone, serde::Serialize, serde::Deserialize)]
 pub enum Job {
     /// Scene `scene`'s result for `params`; `coarse`, when given, is
     /// computed beside it as a preview shown until the full result lands.
@@ -110,7 +111,7 @@ impl Job {
 }
 
 /// What a finished job produced.
-#[derive(Debug)]
+#[derive(Debug, serde::Serialize, serde::Deserialize)]
 pub enum Done {
     /// A scene's result.
     Scene(usize, SceneOutput),
@@ -122,11 +123,11 @@ pub enum Done {
     /// and whether it is the coarse first pass.
     Matters(Box<SceneParams>, crate::sensitivity::Matters, bool),
     /// Files to write: what they are ("export", "movie"), and (name, bytes).
-    Files(&'static str, Vec<(String, Vec<u8>)>),
+    Files(String, Vec<(String, Vec<u8>)>),
 }
 
 /// Why a job gave no result.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+#[derive(Debug, Clone, PartialEq, thiserror::Error, serde::Serialize, serde::Deserialize)]
 pub enum JobError {
     /// It was cancelled (nothing to report).
     #[error("cancelled")]
@@ -213,14 +214,14 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
                 }
                 progress.set((k + 1) as f64 / figures.len().max(1) as f64);
             }
-            Ok(Done::Files("export", files))
+            Ok(Done::Files("export".into(), files))
         }
         Job::Movie { preset, frames } => {
             let files = crate::handout::movie_files(&preset, frames, None, true, 12, &|| progress.cancelled())
                 .map_err(
                     |e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) },
                 )?;
-            Ok(Done::Files("movie", files))
+            Ok(Done::Files("movie".into(), files))
         }
     }
 }
@@ -465,7 +466,7 @@ mod tests {
         let stamp = Stamp::of(&preset).expect("stamp");
         let job = Job::Export { figures: out.figures.clone(), stamp: Box::new(stamp), prefix: "h-".into() };
         match run(job, &Progress::default(), &Mutex::new(Caches::default())) {
-            Ok(Done::Files("export", files)) => {
+            Ok(Done::Files(what, files)) if what == "export" => {
                 assert_eq!(files.len(), 3 * out.figures.len());
                 assert!(files.iter().all(|(n, b)| n.starts_with("h-") && !b.is_empty()));
                 let png = &files.iter().find(|(n, _)| n.ends_with(".png")).expect("a png").1;

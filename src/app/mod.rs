@@ -9,6 +9,7 @@ mod apply;
 mod apply_deck;
 mod apply_sweep;
 pub mod command;
+#[cfg(not(target_arch = "wasm32"))]
 pub mod desktop;
 mod effects;
 pub mod history;
@@ -21,6 +22,7 @@ pub mod state;
 pub mod ui;
 
 pub use crate::session::{Pin, Session};
+#[cfg(not(target_arch = "wasm32"))]
 pub use desktop::{SESSION_ENV, open_named, run, session_path};
 
 use command::{Action, Command};
@@ -60,12 +62,18 @@ impl GrainscopeApp {
     /// [`GrainscopeApp::restore_session`]); jobs run on native threads and
     /// repaint `ctx` when they finish.
     pub fn new(ctx: egui::Context, platform: Box<dyn Platform>) -> Self {
+        Self::with_runner(platform, Box::new(ThreadRunner::new(move || ctx.request_repaint())))
+    }
+
+    /// A new application on `platform` whose jobs run on `runner` (a
+    /// browser's Web Worker, for example).
+    pub fn with_runner(platform: Box<dyn Platform>, runner: Box<dyn Runner>) -> Self {
         let n = crate::scene::SCENES.len();
         GrainscopeApp {
             state: AppState::default(),
             memo: Memo::default(),
             computing: Computing { requested: vec![None; n], ..Computing::default() },
-            runner: Box::new(ThreadRunner::new(move || ctx.request_repaint())),
+            runner,
             platform,
         }
     }
@@ -125,6 +133,11 @@ impl GrainscopeApp {
             || self.runner.busy(Lane::Sweep)
             || self.runner.busy(Lane::Curve)
             || self.computing.stale
+    }
+
+    /// The fraction done of what is being computed (0 when nothing is).
+    pub fn progress(&self) -> f64 {
+        self.work().progress
     }
 
     /// The frame (inside the axes) of figure `figure` as drawn in the last

@@ -6,6 +6,7 @@
 //! them with rfd and `std::fs`, and a browser would implement them with a
 //! file picker, downloads and local storage.
 
+#[cfg(not(target_arch = "wasm32"))]
 pub mod native;
 
 use crate::session::Restored;
@@ -79,6 +80,12 @@ pub trait Platform {
     fn save_session(&mut self, bytes: &[u8]) -> Result<(), String>;
     /// Seconds since an arbitrary start, never going back.
     fn now(&self) -> f64;
+    /// Offers a link to the present state, `query` being its query part
+    /// (see [`crate::links`]). Returns what the status line says: where the
+    /// link went, or why there is none.
+    fn share_link(&mut self, query: &str) -> Result<String, String> {
+        Err(format!("a link opens the browser version: add {query} to the address of its page"))
+    }
 }
 
 /// A platform with nothing behind it: no dialogs, no files, no session;

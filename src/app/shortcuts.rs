@@ -100,7 +100,7 @@ pub struct Shortcut {
 /// Every shortcut of the window.
 pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut {
-        keys: &[key(Key::F1), key(Key::Questionmark)],
+        keys: &[key(Key::Questionmark), key(Key::H)],
         action: Action::Help,
         mode: Mode::Anywhere,
         text: "show or hide this list",
@@ -150,7 +150,7 @@ pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut { keys: &[key(Key::PageDown)], action: Action::NextScene, mode: Mode::Explorer, text: "next scene" },
     Shortcut { keys: &[key(Key::PageUp)], action: Action::PreviousScene, mode: Mode::Explorer, text: "previous scene" },
     Shortcut {
-        keys: &[key(Key::F5)],
+        keys: &[key(Key::L)],
         action: Action::ToggleLecture,
         mode: Mode::Explorer,
         text: "lecture mode on or off",
@@ -162,7 +162,7 @@ pub const SHORTCUTS: &[Shortcut] = &[
         text: "close this list, leave presenter or lecture mode",
     },
     Shortcut {
-        keys: &[command(Key::R)],
+        keys: &[key(Key::R)],
         action: Action::ResetScene,
         mode: Mode::Explorer,
         text: "reset the scene's parameters",
@@ -174,7 +174,7 @@ pub const SHORTCUTS: &[Shortcut] = &[
         text: "sensitivity: what matters for the chosen result, its curve or map",
     },
     Shortcut {
-        keys: &[command(Key::E)],
+        keys: &[key(Key::E)],
         action: Action::Export,
         mode: Mode::Anywhere,
         text: "export the scene's figures (PNG, SVG, CSV) to the export folder",
@@ -285,6 +285,51 @@ mod tests {
                         );
                     }
                 }
+            }
+        }
+    }
+
+    /// Every key works in a browser tab too: none is one the browser keeps
+    /// for itself (reload, close, address bar, tabs, find, print, help…).
+    #[test]
+    fn no_key_is_one_a_browser_keeps() {
+        let function = [Key::F1, Key::F3, Key::F5, Key::F6, Key::F7, Key::F11, Key::F12];
+        let with_ctrl = [
+            Key::D,
+            Key::E,
+            Key::F,
+            Key::G,
+            Key::H,
+            Key::J,
+            Key::K,
+            Key::L,
+            Key::N,
+            Key::O,
+            Key::P,
+            Key::Q,
+            Key::R,
+            Key::S,
+            Key::T,
+            Key::U,
+            Key::W,
+            Key::Tab,
+            Key::Num1,
+            Key::Num2,
+            Key::Num3,
+            Key::Num4,
+            Key::Num5,
+            Key::Num6,
+            Key::Num7,
+            Key::Num8,
+            Key::Num9,
+            Key::Plus,
+            Key::Minus,
+            Key::Num0,
+        ];
+        for s in SHORTCUTS {
+            for k in s.keys {
+                let kept = function.contains(&k.key) || (k.command && with_ctrl.contains(&k.key));
+                assert!(!kept, "{} ('{}') is a key a browser keeps", k.text(), s.text);
             }
         }
     }

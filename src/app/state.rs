@@ -138,6 +138,8 @@ pub enum Effect {
     Cancel,
     /// Pause or resume the open scene's computation.
     Pause(bool),
+    /// Offer the link whose query is given (see [`crate::links`]).
+    ShareLink(String),
 }
 
 /// The "what matters" view: which scalar, over which factor, and the last

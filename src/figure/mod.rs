@@ -197,7 +197,7 @@ impl Series {
 /// A parameter varied across the series of a figure (snapshot times, disk
 /// masses, pinned sweeps): its members are coloured on a sequential map and
 /// explained by a colour bar labelled with the parameter and its unit.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Family {
     /// The varied quantity, e.g. "time".
     pub label: String,
@@ -239,7 +239,7 @@ pub const FAMILY_TOP: f64 = 0.82;
 pub const NEUTRAL: [u8; 3] = [110, 110, 110];
 
 /// A colour map over a rectangular grid (e.g. a χ² landscape).
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Heatmap {
     /// Cell centres along x, increasing (axis units).
     pub x: Vec<f64>,
@@ -377,7 +377,7 @@ pub fn colormap(t: f64) -> [u8; 3] {
 }
 
 /// Where a [`Label`]'s text sits relative to its point.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize, serde::Deserialize)]
 pub enum Anchor {
     /// Text starts at the point, just above it.
     Left,
@@ -389,7 +389,7 @@ pub enum Anchor {
 
 /// Text placed in the plot at a data point: the name of a reference line,
 /// the level of a contour.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Label {
     /// Position in axis units.
     pub at: [f64; 2],
@@ -403,7 +403,7 @@ pub struct Label {
 }
 
 /// A complete figure.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Figure {
     /// Stable identifier, used as file stem (e.g. "contact-radius").
     pub id: String,

@@ -110,8 +110,25 @@ pub struct Scalar {
     pub unit: &'static str,
 }
 
+/// A [`Scalar`] as read back from bytes; its texts are interned.
+#[derive(serde::Deserialize)]
+struct ScalarText {
+    key: String,
+    label: String,
+    value: f64,
+    unit: String,
+}
+
+impl<'de> serde::Deserialize<'de> for Scalar {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<Scalar, D::Error> {
+        let t = ScalarText::deserialize(deserializer)?;
+        let intern = crate::statics::intern;
+        Ok(Scalar { key: intern(&t.key), label: intern(&t.label), value: t.value, unit: intern(&t.unit) })
+    }
+}
+
 /// A recorded collision for the contact sketch: time, approach and contact radius.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Trajectory {
     /// Radius of sphere 1, m.
     pub radius_1: f64,
@@ -132,7 +149,7 @@ impl Trajectory {
 }
 
 /// Extra, scene-specific data the window needs beyond figures.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub enum Extra {
     /// Nothing beyond figures.
     #[default]
@@ -147,11 +164,13 @@ pub enum Extra {
     Ladder(Arc<Vec<Rung>>),
     /// The model's own result (a batch run, Monte Carlo runs), kept so that
     /// a clicked point of a figure can be inspected without recomputing.
+    /// It stays where it was computed: it is not written to bytes.
+    #[serde(skip)]
     Model(ModelData),
 }
 
 /// One scale of a ladder: its name and its numbers.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Rung {
     /// The scale, e.g. "Contact of two monomers (ch. 2–3)".
     pub scale: String,
@@ -188,7 +207,7 @@ impl Extra {
 }
 
 /// A curve of a figure with the time of each of its points.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct TimedPath {
     /// Figure id.
     pub figure: String,
@@ -201,7 +220,7 @@ pub struct TimedPath {
 }
 
 /// What a scene computes.
-#[derive(Debug, Clone, PartialEq, Default)]
+#[derive(Debug, Clone, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct SceneOutput {
     /// Scalar results.
     pub scalars: Vec<Scalar>,
@@ -252,6 +271,28 @@ pub struct Progress {
     pause: Arc<AtomicBool>,
     permille: Arc<AtomicU32>,
     partial: Arc<std::sync::Mutex<Option<Arc<SceneOutput>>>>,
+    watcher: Option<Watcher>,
+}
+
+/// What a computation reports as it goes, to a [`Watcher`].
+#[derive(Debug)]
+pub enum Report<'a> {
+    /// The fraction done changed (0–1).
+    Fraction(f64),
+    /// An intermediate result was offered.
+    Partial(&'a SceneOutput),
+}
+
+/// Told of every report of a computation as it is made: where no other
+/// thread can look at a [`Progress`] (a browser's Web Worker computes alone
+/// and posts its progress to the page), the computation tells it itself.
+#[derive(Clone)]
+pub struct Watcher(pub Arc<dyn Fn(Report<'_>) + Send + Sync>);
+
+impl std::fmt::Debug for Watcher {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str("Watcher")
+    }
 }
 
 impl Progress {
@@ -285,9 +326,19 @@ impl Progress {
     pub fn check(&self) -> Result<(), SceneError> {
         if self.cancelled() { Err(SceneError::Cancelled) } else { Ok(()) }
     }
+    /// A progress whose reports also go to `watcher`.
+    pub fn watched(watcher: Watcher) -> Progress {
+        Progress { watcher: Some(watcher), ..Progress::default() }
+    }
     /// Sets the fraction done (0–1).
     pub fn set(&self, fraction: f64) {
-        self.permille.store((fraction.clamp(0.0, 1.0) * 1000.0) as u32, Ordering::Relaxed);
+        let permille = (fraction.clamp(0.0, 1.0) * 1000.0) as u32;
+        let before = self.permille.swap(permille, Ordering::Relaxed);
+        if let Some(w) = &self.watcher
+            && before != permille
+        {
+            (w.0)(Report::Fraction(f64::from(permille) / 1000.0));
+        }
     }
     /// The fraction done (0–1).
     pub fn fraction(&self) -> f64 {
@@ -301,6 +352,9 @@ impl Progress {
 
     /// Offers an intermediate result of a long computation for display.
     pub fn publish(&self, output: SceneOutput) {
+        if let Some(w) = &self.watcher {
+            (w.0)(Report::Partial(&output));
+        }
         if let Ok(mut slot) = self.partial.lock() {
             *slot = Some(Arc::new(output));
         }

@@ -214,7 +214,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
         cx.send(Command::Accept(key));
     }
     if matches!(select, Select::Parameters)
-        && ui.button("Reset to defaults").on_hover_text("this scene's parameters (Ctrl+R)").clicked()
+        && ui.button("Reset to defaults").on_hover_text("this scene's parameters (R)").clicked()
     {
         cx.send(Command::Act(crate::app::command::Action::ResetScene));
     }

@@ -25,7 +25,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             ui.menu_button("Present", |ui| decks_menu(ui, cx));
             ui.separator();
             let mut lecture = true;
-            if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text("F5 toggles, Esc leaves").changed() {
+            if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text("L toggles, Esc leaves").changed() {
                 cx.send(Command::SetLecture(lecture));
             }
             if ui.button("?").on_hover_text("keyboard shortcuts (F1)").clicked() {
@@ -77,7 +77,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         let mut lecture = false;
         if ui
             .checkbox(&mut lecture, "Lecture mode")
-            .on_hover_text("plots fill the screen in a light high-contrast theme (F5 toggles, Esc leaves)")
+            .on_hover_text("plots fill the screen in a light high-contrast theme (L toggles, Esc leaves)")
             .changed()
         {
             cx.send(Command::SetLecture(lecture));
@@ -104,8 +104,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             cx.send(Command::Deck(DeckEdit::Show(open)));
         }
         ui.menu_button("Present", |ui| decks_menu(ui, cx));
-        if ui.button("Keys").on_hover_text("keyboard shortcuts (F1)").clicked() {
+        if ui.button("Keys").on_hover_text("keyboard shortcuts (? or H)").clicked() {
             cx.send(Command::Act(Action::Help));
+        }
+        if ui.button("Link").on_hover_text("a link that opens this scene in this state (browser version)").clicked() {
+            cx.send(Command::Act(Action::CopyLink));
         }
     });
 }

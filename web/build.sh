@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# Builds the browser version of grainscope into web/dist: index.html, the
+# WebAssembly module and its JavaScript loader. Copy web/dist onto any static
+# web server, or serve it here with
+#     python3 -m http.server -d web/dist 8000
+# and open http://127.0.0.1:8000 (add ?preset=ice-bounce-8ms or
+# ?deck=porous-growth&slide=3 to open a preset or a deck's slide).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+target="${CARGO_TARGET_DIR:-target}"
+# The cargo profile: `web` (Cargo.toml: link-time optimised, smaller), or
+# `release` for a quicker build while working on the page.
+profile="${GRAINSCOPE_WEB_PROFILE:-web}"
+
+# The wasm-bindgen tool must be the version of the library in Cargo.lock.
+version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
+if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $version"; then
+    echo "== installing wasm-bindgen-cli $version"
+    if ! cargo install wasm-bindgen-cli --version "$version" --locked; then
+        # A registry mirror may lack a crate version the tool's own lock file
+        # names; the tool itself is still the exact version.
+        echo "(its locked dependencies are not all in this registry; resolving them afresh)" >&2
+        cargo install wasm-bindgen-cli --version "$version"
+    fi
+fi
+if command -v rustup >/dev/null; then
+    rustup target add wasm32-unknown-unknown >/dev/null
+fi
+
+echo "== building the WebAssembly module"
+cargo build -p grainscope-web --profile "$profile" --target wasm32-unknown-unknown
+
+echo "== web/dist"
+staging=$(mktemp -d web/dist.XXXXXX)
+trap 'rm -rf "$staging"' EXIT
+wasm-bindgen --target web --no-typescript --out-dir "$staging" --out-name grainscope \
+    "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm"
+# Binaryen's optimiser (npm package `binaryen`, pinned in web/package-lock.json;
+# Debian's binaryen is too old for this module) makes the module about 15 %
+# smaller. It takes a few minutes, so its output is kept per input.
+if [ ! -x web/node_modules/.bin/wasm-opt ] && command -v npm >/dev/null; then
+    (cd web && npm ci --no-audit --no-fund --loglevel=error)
+fi
+if [ -x web/node_modules/.bin/wasm-opt ]; then
+    kept="$target/web-opt/$(sha256sum "$staging/grainscope_bg.wasm" | cut -c1-24).wasm"
+    if [ ! -f "$kept" ]; then
+        echo "== wasm-opt -Oz (a few minutes)"
+        mkdir -p "$target/web-opt"
+        web/node_modules/.bin/wasm-opt -Oz --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
+            --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
+            "$staging/grainscope_bg.wasm" -o "$kept.tmp"
+        mv "$kept.tmp" "$kept"
+    fi
+    cp "$kept" "$staging/grainscope_bg.wasm"
+else
+    echo "(no npm: the module is not optimised by binaryen and is about 15 % larger)" >&2
+fi
+cp web/index.html web/worker.js "$staging/"
+chmod 755 "$staging"
+rm -rf web/dist
+mv "$staging" web/dist
+trap - EXIT
+ls -l web/dist

@@ -1,0 +1,137 @@
+//! The page's entry: starts the explorer on a canvas and opens what the
+//! page's address names.
+
+use crate::platform::{WebPlatform, kind_of};
+use crate::runner::WorkerRunner;
+use grainscope::app::GrainscopeApp;
+use grainscope::app::command::Command;
+use grainscope::app::platform::Answer;
+use grainscope::links::Opened;
+use std::cell::RefCell;
+use std::rc::Rc;
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+/// The explorer with what only a page has: files dropped on it arrive as
+/// names and are read asynchronously; their bytes reach the explorer as the
+/// platform's answers, as a picked file's do.
+struct PageApp {
+    app: GrainscopeApp,
+    answers: Rc<RefCell<Vec<Answer>>>,
+}
+
+impl eframe::App for PageApp {
+    fn ui(&mut self, ui: &mut egui::Ui, frame: &mut eframe::Frame) {
+        let dropped = ui.ctx().input_mut(|i| std::mem::take(&mut i.raw.dropped_files));
+        for file in dropped {
+            let (answers, ctx) = (Rc::clone(&self.answers), ui.ctx().clone());
+            wasm_bindgen_futures::spawn_local(async move {
+                let name = file.path().display().to_string();
+                let answer = match file.bytes_async().await {
+                    Ok(bytes) => Answer::Opened(kind_of(&name), grainscope::app::platform::Picked { name, bytes }),
+                    Err(e) => Answer::Failed(kind_of(&name), format!("cannot read the dropped {name}: {e}")),
+                };
+                answers.borrow_mut().push(answer);
+                ctx.request_repaint();
+            });
+        }
+        self.app.ui(ui, frame);
+    }
+
+    fn save(&mut self, storage: &mut dyn eframe::Storage) {
+        self.app.save(storage);
+    }
+
+    fn as_any_mut(&mut self) -> Option<&mut dyn std::any::Any> {
+        Some(self)
+    }
+}
+
+/// The running explorer, kept by the page.
+#[wasm_bindgen]
+pub struct WebHandle {
+    runner: eframe::WebRunner,
+}
+
+#[wasm_bindgen]
+impl WebHandle {
+    /// The message of a panic, if the explorer stopped on one.
+    pub fn panic_message(&self) -> Option<String> {
+        self.runner.panic_summary().map(|s| s.message())
+    }
+
+    /// Whether a result is still being computed.
+    pub fn busy(&self) -> bool {
+        self.runner.app_mut::<PageApp>().is_some_and(|p| p.app.busy())
+    }
+
+    /// The fraction done of the running computation (0 when none runs).
+    pub fn progress(&self) -> f64 {
+        self.runner.app_mut::<PageApp>().map_or(0.0, |p| p.app.progress())
+    }
+
+    /// The status line.
+    pub fn status(&self) -> String {
+        self.runner.app_mut::<PageApp>().map(|p| p.app.status().to_string()).unwrap_or_default()
+    }
+
+    /// The open scene's scalars as one JSON object, keyed as the command
+    /// line's `--json` (empty while there is no result).
+    pub fn scalars_json(&self) -> String {
+        let app = self.runner.app_mut::<PageApp>();
+        app.and_then(|p| p.app.output().map(|o| o.scalars_json().to_string())).unwrap_or_default()
+    }
+
+    /// Milliseconds to compute shipped preset `name` from cold on the page's
+    /// own thread (no caches): the figure of merit against the desktop.
+    pub fn time_preset(&self, name: &str) -> Result<f64, JsValue> {
+        let preset = grainscope::preset::resolve(name).map_err(|e| e.to_string())?;
+        let clock = web_sys::window().and_then(|w| w.performance()).ok_or("no clock")?;
+        let start = clock.now();
+        grainscope::scene::compute(&preset.scene, &grainscope::scene::Progress::default())
+            .map_err(|e| e.to_string())?;
+        Ok(clock.now() - start)
+    }
+
+    /// The open scene's identifier.
+    pub fn scene(&self) -> String {
+        self.runner.app_mut::<PageApp>().map(|p| p.app.params().info().id.to_string()).unwrap_or_default()
+    }
+}
+
+/// Starts the explorer on the canvas with id `canvas_id`, with the session
+/// the page kept and what the page's address names.
+#[wasm_bindgen]
+pub async fn start(canvas_id: String) -> Result<WebHandle, JsValue> {
+    console_error_panic_hook::set_once();
+    let window = web_sys::window().ok_or("no window")?;
+    let document = window.document().ok_or("no document")?;
+    let canvas = document
+        .get_element_by_id(&canvas_id)
+        .ok_or_else(|| format!("no element {canvas_id} on the page"))?
+        .dyn_into::<web_sys::HtmlCanvasElement>()?;
+    let query = window.location().search().unwrap_or_default();
+    let runner = eframe::WebRunner::new();
+    runner
+        .start(
+            canvas,
+            eframe::WebOptions::default(),
+            Box::new(move |cc| {
+                let ctx = cc.egui_ctx.clone();
+                let jobs = WorkerRunner::new(move || ctx.request_repaint());
+                let platform = WebPlatform::new();
+                let answers = platform.answers();
+                let mut app = GrainscopeApp::with_runner(Box::new(platform), Box::new(jobs));
+                app.restore_session();
+                match grainscope::links::open(&query) {
+                    Ok(Opened::Preset(preset, name)) => app.apply(Command::ApplyPreset(preset, name)),
+                    Ok(Opened::Deck(deck, slide)) => app.apply(Command::Present(deck, slide)),
+                    Ok(Opened::Nothing) => {}
+                    Err(message) => app.state.notify(message),
+                }
+                Ok(Box::new(PageApp { app, answers }))
+            }),
+        )
+        .await?;
+    Ok(WebHandle { runner })
+}

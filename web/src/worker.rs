@@ -1,0 +1,94 @@
+//! The computing side of a Web Worker: it runs the jobs the page sends, one
+//! at a time, with the same code the desktop runs on its threads, and posts
+//! `[kind, payload]` messages back: `["progress", fraction]`,
+//! `["partial", bytes]` (a coarse preview or a live view), and
+//! `["done", bytes]` (the encoded `Result<Done, JobError>`).
+
+use crate::wire;
+use grainscope::app::jobs::{self, Done, Job, JobError};
+use grainscope::scene::{self, Caches, Extra, Progress, Report, SceneOutput, Watcher};
+use std::cell::Cell;
+use std::sync::{Arc, Mutex};
+use wasm_bindgen::JsCast;
+use wasm_bindgen::prelude::*;
+
+/// Least time between two progress messages, ms.
+const PROGRESS_EVERY: f64 = 100.0;
+/// Least time between two intermediate results, ms.
+const PARTIAL_EVERY: f64 = 400.0;
+
+thread_local! {
+    /// Results kept between the jobs of this worker.
+    static CACHES: Mutex<Caches> = Mutex::default();
+    /// When the last progress and intermediate result were posted, ms.
+    static LAST: Cell<(f64, f64)> = const { Cell::new((f64::NEG_INFINITY, f64::NEG_INFINITY)) };
+}
+
+/// Posts `[kind, payload]` to the page.
+fn post(kind: &str, payload: &JsValue) {
+    let scope: web_sys::DedicatedWorkerGlobalScope = js_sys::global().unchecked_into();
+    let _ = scope.post_message(&js_sys::Array::of2(&JsValue::from_str(kind), payload));
+}
+
+/// An output as the page receives it: the model data stays here.
+fn portable(out: &SceneOutput) -> SceneOutput {
+    let extra = if matches!(out.extra, Extra::Model(_)) { Extra::None } else { out.extra.clone() };
+    SceneOutput { extra, ..out.clone() }
+}
+
+/// Posts an intermediate result.
+fn post_partial(out: &SceneOutput) {
+    if let Ok(bytes) = wire::encode(&portable(out)) {
+        post("partial", &js_sys::Uint8Array::from(&bytes[..]).into());
+    }
+}
+
+/// Tells the page of a report, no more often than it can use.
+fn report(r: Report<'_>) {
+    let now = js_sys::Date::now();
+    let (progress_at, partial_at) = LAST.with(Cell::get);
+    match r {
+        Report::Fraction(f) if now - progress_at >= PROGRESS_EVERY => {
+            LAST.with(|l| l.set((now, partial_at)));
+            post("progress", &JsValue::from_f64(f));
+        }
+        Report::Partial(out) if now - partial_at >= PARTIAL_EVERY => {
+            LAST.with(|l| l.set((progress_at, now)));
+            post_partial(out);
+        }
+        _ => {}
+    }
+}
+
+/// Runs a job: a heavy scene's coarse preview first, then the job itself.
+fn run(job: Job) -> Result<Done, JobError> {
+    let progress = Progress::watched(Watcher(Arc::new(report)));
+    if let Job::Scene { coarse: Some(c), .. } = &job
+        && let Ok(mut out) = scene::compute(c, &Progress::default())
+    {
+        out.notes.insert(0, "preview at low resolution; the full result follows".into());
+        post_partial(&out);
+    }
+    let result = CACHES.with(|caches| jobs::run(job, &progress, caches));
+    match result {
+        Ok(Done::Scene(i, out)) => Ok(Done::Scene(i, portable(&out))),
+        other => other,
+    }
+}
+
+/// Runs the job encoded in `job` and posts its progress and result.
+#[wasm_bindgen]
+pub fn run_job(job: &[u8]) {
+    console_error_panic_hook::set_once();
+    LAST.with(|l| l.set((f64::NEG_INFINITY, f64::NEG_INFINITY)));
+    let result = match wire::decode::<Job>(job) {
+        Ok(job) => run(job),
+        Err(e) => Err(JobError::Failed(format!("the page sent a job the worker cannot read: {e}"))),
+    };
+    let encoded = wire::encode(&result)
+        .or_else(|e| wire::encode(&Err::<Done, _>(JobError::Failed(format!("the result cannot be sent: {e}")))));
+    match encoded {
+        Ok(bytes) => post("done", &js_sys::Uint8Array::from(&bytes[..]).into()),
+        Err(e) => post("failed", &JsValue::from_str(&e)),
+    }
+}

@@ -840,3 +840,23 @@ fn what_matters_in_a_heavy_scene_answers_coarsely_first() {
     // The full pass runs on; closing the view leaves it be.
     assert!(h.state().busy());
 }
+
+/// A platform may start a scene from lighter defaults (a browser's Monte
+/// Carlo columns); the scene says so beside its parameters.
+#[test]
+fn lighter_defaults_are_said() {
+    let mut h = harness();
+    h.run();
+    let i = grainscope::scene::SCENES.iter().position(|s| s.id == "adhesion").expect("a scene");
+    let note = "this scene starts at 3 m/s here";
+    assert!(h.state_mut().lighten_defaults("adhesion", &[("nonsense", "1")], note).is_err());
+    assert!(h.state_mut().lighten_defaults("no-such-scene", &[], note).is_err());
+    h.state_mut().lighten_defaults("adhesion", &[("velocity", "3")], note).expect("a known key");
+    // A scene at its defaults moves to the lighter ones.
+    h.state_mut().apply(Command::OpenScene(i));
+    h.run();
+    let mut want = grainscope::scene::SceneParams::default_for("adhesion").expect("defaults");
+    want.set("velocity", "3").expect("in range");
+    assert_eq!(h.state().params(), &want);
+    h.get_by_label(note);
+}

@@ -1,10 +1,11 @@
 //! Background work: every job the window starts (a scene's computation with
 //! its coarse preview, a family sweep, rendering an export or a movie) is a
 //! value of [`Job`], and [`run`] does it, knowing nothing of threads. A
-//! [`Runner`] decides where jobs run: [`ThreadRunner`] on native threads; a
-//! browser runs the same values in a Web Worker of the same code. Each job
-//! belongs to a [`Lane`]; a new job on a lane cancels the one running there,
-//! and the generation number of every result drops one that is stale.
+//! [`Runner`] decides where jobs run: [`ThreadRunner`] on native threads;
+//! the browser build (`web/`) runs the same values in Web Workers of the
+//! same code. Each job belongs to a [`Lane`]; a new job on a lane cancels
+//! the one running there, and the generation number of every result drops
+//! one that is stale.
 
 use crate::figure::{self, Figure, Series, Style};
 use crate::preset::Preset;
@@ -255,6 +256,10 @@ pub trait Runner {
     fn poll(&mut self) -> Vec<Finished>;
     /// Computes a cheap scene at once, sharing the runner's caches.
     fn compute_now(&self, params: &SceneParams) -> Result<SceneOutput, SceneError>;
+    /// Whether jobs that honour pauses can be paused here.
+    fn can_pause(&self) -> bool {
+        true
+    }
 }
 
 /// The job running on a lane.

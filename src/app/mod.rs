@@ -78,6 +78,27 @@ impl GrainscopeApp {
         }
     }
 
+    /// Starts scene `id` from lighter defaults (`sets`: keys and values as
+    /// `--set` takes them) and says so with `note` beside its parameters: a
+    /// browser computes on one thread, so its heaviest scenes start smaller.
+    /// A scene still at its own defaults moves to the lighter ones; one whose
+    /// parameters the user changed keeps them.
+    pub fn lighten_defaults(&mut self, id: &str, sets: &[(&str, &str)], note: &str) -> Result<(), String> {
+        let i = crate::scene::SCENES.iter().position(|s| s.id == id).ok_or_else(|| format!("no scene {id}"))?;
+        let mut lighter = self.state.defaults[i].clone();
+        for (key, value) in sets {
+            lighter.set(key, value).map_err(|e| e.to_string())?;
+        }
+        let old = std::mem::replace(&mut self.state.defaults[i], lighter.clone());
+        if let Some(p) = self.state.session.params.get_mut(id)
+            && *p == old
+        {
+            *p = lighter;
+        }
+        self.state.default_notes[i] = Some(note.to_string());
+        Ok(())
+    }
+
     /// Restores the session the platform kept; an unreadable one leaves the
     /// default settings and a notice. Returns whether a session was found.
     pub fn restore_session(&mut self) -> bool {
@@ -192,7 +213,8 @@ impl GrainscopeApp {
             stale: self.computing.stale,
             progress: self.runner.progress(lane),
             paused: self.runner.paused(Lane::Compute),
-            pausable: self.computing.live_scene.is_some_and(|i| self.state.params_of(i).pausable()),
+            pausable: self.runner.can_pause()
+                && self.computing.live_scene.is_some_and(|i| self.state.params_of(i).pausable()),
         }
     }
 

@@ -3,7 +3,7 @@
 //! writing files into a folder the user named, the session's storage and a
 //! clock. The window asks for these and never touches a file system, a
 //! dialog or a system clock itself; [`native::NativePlatform`] implements
-//! them with rfd and `std::fs`, and a browser would implement them with a
+//! them with rfd and `std::fs`, and the browser build (`web/`) with a
 //! file picker, downloads and local storage.
 
 #[cfg(not(target_arch = "wasm32"))]

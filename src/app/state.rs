@@ -207,6 +207,9 @@ pub struct AppState {
     pub session: Session,
     /// Default parameters of every scene, in the order of [`SCENES`].
     pub defaults: Vec<SceneParams>,
+    /// Where a platform starts a scene from lighter defaults than the
+    /// scene's own: what it says about them, in the order of [`SCENES`].
+    pub default_notes: Vec<Option<String>>,
     /// Every scene's last good result, in the order of [`SCENES`].
     pub outputs: Vec<Option<Arc<SceneOutput>>>,
     /// The status line.
@@ -261,6 +264,7 @@ impl AppState {
         AppState {
             session,
             defaults: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
+            default_notes: vec![None; n],
             outputs: vec![None; n],
             status: String::new(),
             error: None,

@@ -379,7 +379,7 @@ struct Pace {
 impl Pace {
     /// Steps between two views where there is no clock.
     #[cfg(all(target_family = "wasm", target_os = "unknown"))]
-    const STEPS: u32 = 2000;
+    const STEPS: u32 = 250;
 
     #[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
     fn start() -> Pace {

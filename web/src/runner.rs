@@ -186,6 +186,10 @@ impl Runner for WorkerRunner {
     /// messages); the job runs on.
     fn set_paused(&self, _lane: Lane, _paused: bool) {}
 
+    fn can_pause(&self) -> bool {
+        false
+    }
+
     fn paused(&self, _lane: Lane) -> bool {
         false
     }

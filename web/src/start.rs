@@ -47,6 +47,10 @@ impl eframe::App for PageApp {
     }
 }
 
+/// What a scene that starts lighter in the browser says.
+const LIGHTER: &str = "In the browser this scene starts from 1 run, w* = 14 groups per decade and f = 0.3 \
+(tens of seconds on one thread); the desktop's defaults are 2 runs, w* = 40 and f = 0.1.";
+
 /// The running explorer, kept by the page.
 #[wasm_bindgen]
 pub struct WebHandle {
@@ -123,6 +127,13 @@ pub async fn start(canvas_id: String) -> Result<WebHandle, JsValue> {
                 let answers = platform.answers();
                 let mut app = GrainscopeApp::with_runner(Box::new(platform), Box::new(jobs));
                 app.restore_session();
+                // The Monte Carlo columns start at the decks' quicker setting.
+                for id in ["mass-distribution", "families", "erosion-balance"] {
+                    let sets = [("runs", "1"), ("groups_per_decade", "14"), ("f_limit", "0.3")];
+                    if let Err(e) = app.lighten_defaults(id, &sets, LIGHTER) {
+                        app.state.notify(e);
+                    }
+                }
                 match grainscope::links::open(&query) {
                     Ok(Opened::Preset(preset, name)) => app.apply(Command::ApplyPreset(preset, name)),
                     Ok(Opened::Deck(deck, slide)) => app.apply(Command::Present(deck, slide)),

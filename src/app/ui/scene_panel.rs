@@ -15,6 +15,9 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let info = cx.state.params().info();
     ui.small(format!("{} · {}", scene::chapter(cx.state.index()).heading, info.source));
     headline(ui, cx);
+    if let Some(note) = &cx.state.default_notes[cx.state.index()] {
+        ui.add(egui::Label::new(egui::RichText::new(note).small().weak()).wrap());
+    }
     ui.separator();
     ui.label(egui::RichText::new("Parameters").strong());
     parameters(ui, cx);

@@ -379,10 +379,16 @@ impl Runner for ThreadRunner {
     }
 
     fn compute_now(&self, params: &SceneParams) -> Result<SceneOutput, SceneError> {
-        match self.caches.lock() {
-            Ok(mut c) => scene::compute_cached(params, &Progress::default(), &mut c),
-            Err(_) => scene::compute(params, &Progress::default()),
-        }
+        compute_now(params, &self.caches)
+    }
+}
+
+/// Computes a cheap scene at once with `caches` (computed afresh if they
+/// are poisoned): what every runner's [`Runner::compute_now`] does.
+pub fn compute_now(params: &SceneParams, caches: &Mutex<Caches>) -> Result<SceneOutput, SceneError> {
+    match caches.lock() {
+        Ok(mut c) => scene::compute_cached(params, &Progress::default(), &mut c),
+        Err(_) => scene::compute(params, &Progress::default()),
     }
 }
 

@@ -7,7 +7,7 @@
 
 use crate::wire;
 use grainscope::app::jobs::{self, Done, Finished, Job, JobError, Lane, Runner};
-use grainscope::scene::{self, Caches, Progress, SceneError, SceneOutput, SceneParams};
+use grainscope::scene::{Caches, Progress, SceneError, SceneOutput, SceneParams};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::{Arc, Mutex};
@@ -221,9 +221,6 @@ impl Runner for WorkerRunner {
     }
 
     fn compute_now(&self, params: &SceneParams) -> Result<SceneOutput, SceneError> {
-        match self.caches.lock() {
-            Ok(mut c) => scene::compute_cached(params, &Progress::default(), &mut c),
-            Err(_) => scene::compute(params, &Progress::default()),
-        }
+        jobs::compute_now(params, &self.caches)
     }
 }

@@ -54,9 +54,10 @@ pub enum Command {
     Sweep {
         /// Preset file, shipped preset name or exported figure.
         preset: String,
-        /// A varied parameter, `NAME=lin|log:FROM:TO:N` (SI units); repeat
-        /// for a grid (the last one varies fastest).
-        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO:N", required = true)]
+        /// A varied parameter, `NAME=lin|log:FROM:TO:N` or the values
+        /// themselves, `NAME=list:V1:V2:…` (SI units); repeat for a grid (the
+        /// last one varies fastest).
+        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO:N|list:V1:V2:…", required = true)]
         vary: Vec<String>,
         /// Override a parameter by its documented key, e.g. `--set velocity=4`.
         #[arg(long = "set", value_name = "KEY=VALUE")]
@@ -340,7 +341,8 @@ pub fn run(command: Command) -> Result<()> {
         Command::Params { scene } => {
             let mut params = scene::SceneParams::default_for(&scene).with_context(|| {
                 let ids: Vec<&str> = scene::SCENES.iter().map(|s| s.id).collect();
-                format!("unknown scene '{scene}' (scenes: {})", ids.join(", "))
+                let close = crate::scene::controls::did_you_mean(&scene, &ids);
+                format!("unknown scene '{scene}'{close} (scenes: {})", ids.join(", "))
             })?;
             for c in params.controls() {
                 say(c.doc_line())?;

@@ -272,7 +272,13 @@ pub fn resolve(name: &str) -> Result<Preset, PresetError> {
         Some((file, text)) => Preset::from_ron(text, file),
         None => Err(PresetError::Read {
             path: path.into(),
-            cause: std::io::Error::new(std::io::ErrorKind::NotFound, "no such file and no shipped preset of that name"),
+            cause: std::io::Error::new(
+                std::io::ErrorKind::NotFound,
+                format!("no such file and no shipped preset of that name{}", {
+                    let names: Vec<&str> = SHIPPED.iter().map(|(file, _)| file.trim_end_matches(".ron")).collect();
+                    crate::scene::controls::did_you_mean(stem, &names)
+                }),
+            ),
         }),
     }
 }

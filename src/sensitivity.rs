@@ -432,7 +432,7 @@ fn knob(base: &SceneParams, key: &str) -> Result<Knob, SceneError> {
 /// is logarithmic.
 fn span(k: &Knob, n: usize) -> Vary {
     let spacing = if k.log && k.min > 0.0 { Spacing::Log } else { Spacing::Lin };
-    Vary { key: k.key.to_string(), spacing, from: k.min, to: k.max, n: n.max(2) }
+    Vary::range(k.key, spacing, k.min, k.max, n.max(2))
 }
 
 /// `fig` (whose axes give the scales) with a map of scalar `zs` over the
@@ -492,7 +492,7 @@ fn axis_of(k: &Knob, log: bool) -> Axis {
 pub fn curve(base: &SceneParams, output: &str, key: &str, n: usize, progress: &Progress) -> Result<Figure, SceneError> {
     let k = knob(base, key)?;
     let vary = span(&k, n);
-    let (xs, log) = (vary.values(), vary.spacing == Spacing::Log);
+    let (xs, log) = (vary.values(), vary.log_axis());
     let points: Vec<SceneParams> = xs.iter().filter_map(|&x| with(base, key, x)).collect();
     if points.len() != xs.len() {
         return Err(PhysicsError::Invalid(format!("'{key}' refuses values inside its own range")).into());
@@ -561,7 +561,7 @@ pub fn map(
     let (kx, ky) = (knob(base, key_x)?, knob(base, key_y)?);
     let (vx, vy) = (span(&kx, n), span(&ky, n));
     let (xs, ys) = (vx.values(), vy.values());
-    let (log_x, log_y) = (vx.spacing == Spacing::Log, vy.spacing == Spacing::Log);
+    let (log_x, log_y) = (vx.log_axis(), vy.log_axis());
     // The plan's last parameter runs fastest: x, row by row in y, as a heatmap wants.
     let plan = Plan::new(base.clone(), vec![vy, vx]).map_err(|e| PhysicsError::Invalid(e.to_string()))?;
     let points: Vec<SceneParams> = (0..plan.len()).map(|i| plan.params_at(i)).collect::<Result<_, _>>()?;

@@ -6,6 +6,12 @@
 use std::collections::HashSet;
 use std::sync::{Mutex, OnceLock};
 
+/// A text that lives as long as the program. A field of this type, with
+/// `#[serde(deserialize_with = "crate::statics::deserialize")]`, reads back
+/// from bytes of any lifetime (serde would otherwise borrow a `&str` field
+/// from the bytes).
+pub type Text = &'static str;
+
 /// The one `'static` copy of `text`.
 pub fn intern(text: &str) -> &'static str {
     static KEPT: OnceLock<Mutex<HashSet<&'static str>>> = OnceLock::new();
@@ -18,6 +24,13 @@ pub fn intern(text: &str) -> &'static str {
             s
         }
     }
+}
+
+/// Reads a `&'static str` field through [`intern`] (for
+/// `#[serde(deserialize_with = "crate::statics::deserialize")]`).
+pub fn deserialize<'de, D: serde::Deserializer<'de>>(d: D) -> Result<&'static str, D::Error> {
+    let text = <std::borrow::Cow<'de, str> as serde::Deserialize>::deserialize(d)?;
+    Ok(intern(&text))
 }
 
 #[cfg(test)]

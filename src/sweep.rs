@@ -2,7 +2,7 @@
 //! tidy table (a row per point: the varied parameters, then the scalars).
 //!
 //! A [`Plan`] is a preset's parameters and the parameters varied
-//! ([`Vary`], each `NAME=lin|log:FROM:TO:N`); its points are numbered in a
+//! ([`Vary`], each `NAME=lin|log:FROM:TO:N` or `NAME=list:V1:V2:…`); its points are numbered in a
 //! fixed order (the last varied parameter fastest), so that a [`Shard`] of
 //! the plan, its rows and a merge of shards are deterministic: the rows of
 //! every shard together are the rows of the whole plan, byte for byte.
@@ -18,8 +18,8 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 /// Why a sweep cannot be planned, or a table not read.
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum SweepError {
-    /// A `--vary` text that is not `NAME=lin|log:FROM:TO:N`.
-    #[error("'{0}' is not NAME=lin|log:FROM:TO:N (e.g. surface_energy=log:0.1:1:20)")]
+    /// A `--vary` text that is not `NAME=lin|log:FROM:TO:N` or `NAME=list:V1:V2:…`.
+    #[error("'{0}' is not NAME=lin|log:FROM:TO:N or NAME=list:V1:V2:… (e.g. surface_energy=log:0.1:1:20)")]
     Syntax(String),
     /// A varied parameter the scene does not have, or not a number.
     #[error("{0}")]
@@ -39,6 +39,8 @@ pub enum Spacing {
     Lin,
     /// Evenly in the logarithm (both ends positive).
     Log,
+    /// The values given, in their order.
+    List,
 }
 
 /// One varied parameter: its key and its values.
@@ -54,21 +56,38 @@ pub struct Vary {
     pub to: f64,
     /// Number of values (at least 1).
     pub n: usize,
+    /// The values of a [`Spacing::List`] (empty otherwise).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub given: Vec<f64>,
 }
 
 impl Vary {
-    /// Reads `NAME=lin|log:FROM:TO:N`.
+    /// Evenly spaced values (`Lin` or `Log`), `from` first and `to` last.
+    pub fn range(key: &str, spacing: Spacing, from: f64, to: f64, n: usize) -> Vary {
+        Vary { key: key.to_string(), spacing, from, to, n, given: Vec::new() }
+    }
+
+    /// Reads `NAME=lin|log:FROM:TO:N` or `NAME=list:V1:V2:…`.
     pub fn parse(text: &str) -> Result<Vary, SweepError> {
         let bad = || SweepError::Syntax(text.to_string());
         let (key, rest) = text.split_once('=').ok_or_else(bad)?;
         let parts: Vec<&str> = rest.split(':').collect();
+        let number = |s: &str| s.trim().parse::<f64>().ok().filter(|v| v.is_finite());
+        if let ["list", values @ ..] = &parts[..] {
+            let given = values.iter().map(|v| number(v)).collect::<Option<Vec<f64>>>().ok_or_else(bad)?;
+            let key = key.trim();
+            if key.is_empty() || given.is_empty() || given.len() > 1_000_000 {
+                return Err(bad());
+            }
+            let (from, to) = (given[0], given[given.len() - 1]);
+            return Ok(Vary { key: key.to_string(), spacing: Spacing::List, from, to, n: given.len(), given });
+        }
         let [spacing, from, to, n] = parts[..] else { return Err(bad()) };
         let spacing = match spacing {
             "lin" => Spacing::Lin,
             "log" => Spacing::Log,
             _ => return Err(bad()),
         };
-        let number = |s: &str| s.trim().parse::<f64>().ok().filter(|v| v.is_finite());
         let (Some(from), Some(to)) = (number(from), number(to)) else { return Err(bad()) };
         let n: usize = n.trim().parse().map_err(|_| bad())?;
         let key = key.trim().to_string();
@@ -78,11 +97,14 @@ impl Vary {
         if spacing == Spacing::Log && !(from > 0.0 && to > 0.0) {
             return Err(SweepError::Syntax(format!("{text}: a log range needs positive ends")));
         }
-        Ok(Vary { key, spacing, from, to, n })
+        Ok(Vary::range(&key, spacing, from, to, n))
     }
 
     /// The values, `from` first and `to` last.
     pub fn values(&self) -> Vec<f64> {
+        if self.spacing == Spacing::List {
+            return self.given.clone();
+        }
         if self.n == 1 {
             return vec![self.from];
         }
@@ -91,6 +113,7 @@ impl Vary {
             .map(|i| match (i, self.spacing) {
                 (0, _) => self.from,
                 (i, _) if i == self.n - 1 => self.to,
+                (_, Spacing::List) => self.given[i],
                 (i, Spacing::Lin) => self.from + (self.to - self.from) * i as f64 / last,
                 (i, Spacing::Log) => (self.from.ln() + (self.to / self.from).ln() * i as f64 / last).exp(),
             })
@@ -102,8 +125,25 @@ impl Vary {
         let s = match self.spacing {
             Spacing::Lin => "lin",
             Spacing::Log => "log",
+            Spacing::List => {
+                let values: Vec<String> = self.given.iter().map(|v| v.to_string()).collect();
+                return format!("{}=list:{}", self.key, values.join(":"));
+            }
         };
         format!("{}={s}:{}:{}:{}", self.key, self.from, self.to, self.n)
+    }
+
+    /// Whether a figure shows the values on a logarithmic axis: evenly in
+    /// the logarithm, or a list of positive values over two decades or more.
+    pub fn log_axis(&self) -> bool {
+        match self.spacing {
+            Spacing::Log => true,
+            Spacing::Lin => false,
+            Spacing::List => {
+                let (lo, hi) = self.given.iter().fold((f64::INFINITY, 0.0_f64), |(lo, hi), &v| (lo.min(v), hi.max(v)));
+                lo > 0.0 && hi >= 100.0 * lo
+            }
+        }
     }
 }
 
@@ -490,6 +530,25 @@ mod tests {
         for bad in ["velocity", "velocity=log:0:1:3", "v=cubic:1:2:3", "v=lin:1:2:0", "v=lin:1:nan:3", "=lin:1:2:3"] {
             assert!(Vary::parse(bad).is_err(), "{bad}");
         }
+    }
+
+    #[test]
+    fn a_list_gives_its_values_in_order_and_reads_back_from_its_text() {
+        let v = Vary::parse("velocity=list:3:0.5:12.25").expect("vary");
+        assert_eq!(v.values(), vec![3.0, 0.5, 12.25]);
+        assert_eq!((v.from, v.to, v.n), (3.0, 12.25, 3));
+        assert_eq!(Vary::parse(&v.text()).expect("its text"), v);
+        assert!(!v.log_axis(), "less than two decades");
+        assert!(Vary::parse("velocity=list:0.1:10").expect("vary").log_axis());
+        let one_third = Vary::parse(&format!("velocity=list:{}", 1.0 / 3.0)).expect("vary");
+        assert_eq!(Vary::parse(&one_third.text()).expect("its text").values(), vec![1.0 / 3.0]);
+        for bad in ["velocity=list:", "velocity=list:1:x", "velocity=list:1:inf", "=list:1"] {
+            assert!(Vary::parse(bad).is_err(), "{bad}");
+        }
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let plan = Plan::new(base.clone(), vec![v]).expect("plan");
+        assert_eq!((plan.len(), plan.point(1)), (3, vec![0.5]));
+        assert!(Plan::new(base, vec![Vary::parse("velocity=list:1:-2").expect("vary")]).is_err(), "out of range");
     }
 
     #[test]

@@ -8,7 +8,7 @@ use crate::figure::{self, Axis, Figure, Series, Style};
 use crate::files::write_atomically;
 use crate::preset::Preset;
 use crate::scene::Progress;
-use crate::sweep::{self, Columns, Plan, Row, Shard, Spacing, Vary};
+use crate::sweep::{self, Columns, Plan, Row, Shard, Vary};
 use anyhow::{Context, Result, bail};
 use serde::{Deserialize, Serialize};
 use std::io::Write;
@@ -204,10 +204,7 @@ fn figure_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
         return map_of(plan, columns, rows);
     }
     let key = columns.keys.first()?;
-    let axis = |v: &Vary, unit: &str| match v.spacing {
-        Spacing::Log => Axis::log(&v.key, unit),
-        Spacing::Lin => Axis::linear(&v.key, unit),
-    };
+    let axis = |v: &Vary, unit: &str| if v.log_axis() { Axis::log(&v.key, unit) } else { Axis::linear(&v.key, unit) };
     let y_log = rows.iter().filter_map(|r| r.scalars[0]).all(|y| y > 0.0);
     let y = if y_log { Axis::log(key, &columns.units[0]) } else { Axis::linear(key, &columns.units[0]) };
     let mut fig =
@@ -245,10 +242,7 @@ fn figure_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
 fn map_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
     let key = columns.keys.first()?;
     let (vy, vx) = (&plan.vary[0], &plan.vary[1]);
-    let axis = |v: &Vary, unit: &str| match v.spacing {
-        Spacing::Log => Axis::log(&v.key, unit),
-        Spacing::Lin => Axis::linear(&v.key, unit),
-    };
+    let axis = |v: &Vary, unit: &str| if v.log_axis() { Axis::log(&v.key, unit) } else { Axis::linear(&v.key, unit) };
     let zs: Vec<Option<f64>> = rows.iter().map(|r| r.scalars[0]).collect();
     let (xs, ys) = (vx.values(), vy.values());
     if zs.len() != xs.len() * ys.len() {

@@ -201,3 +201,27 @@ fn the_adaptive_restitution_curve_is_the_model_within_1e4() {
     }
     assert!(bounced > 15, "{bounced}");
 }
+
+/// The model data that inspecting a clicked point needs (a browser's page
+/// receives it from its worker as bytes) reads back to the same inspections.
+#[test]
+fn inspected_model_data_survives_bytes() {
+    let mut families = SceneParams::default_for("families").expect("scene");
+    families.set("max_events_millions", "0.02").expect("events");
+    families.set("runs", "1").expect("runs");
+    let disk_map = SceneParams::default_for("disk-map").expect("scene").coarse().expect("preview");
+    for p in [disk_map, families] {
+        let out = scene::compute(&p, &Progress::default()).expect("computes");
+        let text = ron::to_string(&out).expect("written");
+        let back: scene::SceneOutput = ron::from_str(&text).expect("read back");
+        let fig = &out.figures[0];
+        let mut seen = 0;
+        for s in fig.series.iter().filter(|s| !s.points.is_empty()).take(6) {
+            let at = s.points[s.points.len() / 2];
+            let here = p.inspect(&out, &fig.id, at);
+            assert_eq!(here, p.inspect(&back, &fig.id, at), "{}", p.info().id);
+            seen += usize::from(here.is_some());
+        }
+        assert!(seen > 0, "{}: nothing to inspect on {}", p.info().id, fig.id);
+    }
+}

@@ -860,3 +860,61 @@ fn lighter_defaults_are_said() {
     assert_eq!(h.state().params(), &want);
     h.get_by_label(note);
 }
+
+/// A platform that gives links, as the browser's does.
+struct LinkingPlatform(grainscope::app::platform::NullPlatform);
+
+impl grainscope::app::platform::Platform for LinkingPlatform {
+    fn pick_file(&mut self, kind: grainscope::app::platform::FileKind) {
+        self.0.pick_file(kind)
+    }
+    fn save_file(&mut self, kind: grainscope::app::platform::FileKind, suggested: &str, bytes: Vec<u8>) {
+        self.0.save_file(kind, suggested, bytes)
+    }
+    fn poll(&mut self) -> Vec<grainscope::app::platform::Answer> {
+        self.0.poll()
+    }
+    fn read(&mut self, name: &str) -> Result<Vec<u8>, String> {
+        self.0.read(name)
+    }
+    fn write(&mut self, name: &str, bytes: &[u8]) -> Result<String, String> {
+        self.0.write(name, bytes)
+    }
+    fn write_all(&mut self, folder: &str, files: &[(String, Vec<u8>)]) -> Result<Vec<String>, String> {
+        self.0.write_all(folder, files)
+    }
+    fn load_session(&mut self) -> grainscope::session::Restored {
+        self.0.load_session()
+    }
+    fn save_session(&mut self, bytes: &[u8]) -> Result<(), String> {
+        self.0.save_session(bytes)
+    }
+    fn now(&self) -> f64 {
+        self.0.now()
+    }
+    fn share_link(&mut self, query: &str) -> Result<grainscope::app::platform::SharedLink, String> {
+        let address = format!("https://example.org/grainscope/{query}");
+        Ok(grainscope::app::platform::SharedLink { said: format!("link: {address}"), address })
+    }
+}
+
+#[test]
+fn the_link_button_shows_the_address_and_its_code_until_closed() {
+    let app = GrainscopeApp::new(egui::Context::default(), Box::new(LinkingPlatform(Default::default())));
+    let mut h = Harness::builder()
+        .with_size(egui::vec2(1024.0, 768.0))
+        .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app);
+    h.run();
+    h.get_by_role_and_label(Role::Button, "Link").click();
+    h.run();
+    let card = h.state().state.link.clone().expect("a link card");
+    assert!(card.address.starts_with("https://example.org/grainscope/?"), "{}", card.address);
+    assert!(card.modules.is_some());
+    h.get_by_label("Link to this state");
+    h.get_by_label(&card.address);
+    // Escape closes the card first, and nothing else.
+    h.key_press(egui::Key::Escape);
+    h.run();
+    assert!(h.state().state.link.is_none());
+    assert!(h.query_by_label("Link to this state").is_none());
+}

@@ -123,6 +123,7 @@ impl AppState {
             Command::SetLecture(on) => self.session.lecture = on,
             Command::SetLectureParams(on) => self.lecture_params = on,
             Command::SetHelp(on) => self.help = on,
+            Command::HideLink => self.link = None,
             Command::SetText(field, text) => match field {
                 Field::PresetPath => self.session.preset_path = text,
                 Field::DataPath => self.session.data_path = text,
@@ -180,6 +181,8 @@ impl AppState {
             Action::Leave => {
                 if self.help {
                     self.help = false;
+                } else if self.link.is_some() {
+                    self.link = None;
                 } else if self.presenter.is_some() {
                     self.stop_presenting();
                 } else {

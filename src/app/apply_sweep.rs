@@ -20,7 +20,7 @@ impl AppState {
             controls.iter().any(|c| c.key == self.sweep.key && matches!(c.kind, ControlKind::Number { log: true, .. }))
         };
         let spacing = if log && from > 0.0 && to > 0.0 { Spacing::Log } else { Spacing::Lin };
-        let vary = Vary { key: self.sweep.key.clone(), spacing, from, to, n };
+        let vary = Vary::range(&self.sweep.key, spacing, from, to, n);
         // Every value is checked before starting, so a bad range is reported at once.
         match Plan::new(base, vec![vary]) {
             Ok(plan) => {

@@ -181,6 +181,8 @@ pub enum Command {
     SetLectureParams(bool),
     /// The shortcut list on or off.
     SetHelp(bool),
+    /// Closes the Link card.
+    HideLink,
     /// A text field's new content.
     SetText(Field, String),
     /// The time cursor at a fraction of the history.

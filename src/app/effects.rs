@@ -51,12 +51,13 @@ impl GrainscopeApp {
                 self.computing.requested[state.index()] = None;
             }
             Effect::Pause(paused) => self.runner.set_paused(Lane::Compute, paused),
-            Effect::ShareLink(query) => {
-                self.state.status = match self.platform.share_link(&query) {
-                    Ok(shown) => shown,
-                    Err(why) => why,
+            Effect::ShareLink(query) => match self.platform.share_link(&query) {
+                Ok(shared) => {
+                    self.state.status = shared.said;
+                    self.state.link = Some(crate::app::state::LinkCard::new(shared.address));
                 }
-            }
+                Err(why) => self.state.status = why,
+            },
         }
     }
 

@@ -143,6 +143,11 @@ impl GrainscopeApp {
         self.state.output()
     }
 
+    /// What the last click on a figure of the open scene shows, if any.
+    pub fn inspection(&self) -> Option<&crate::scene::inspect::Inspection> {
+        self.state.inspection()
+    }
+
     /// The status line (last message).
     pub fn status(&self) -> &str {
         &self.state.status
@@ -309,6 +314,7 @@ impl GrainscopeApp {
             ui::inspector::window(&ctx, cx);
             ui::matters::window(&ctx, cx);
             ui::help::overlay(&ctx, cx);
+            ui::link::card(&ctx, cx);
         });
         // A whole slider drag is one step of the history.
         self.state.at_rest(ctx.input(|i| i.pointer.any_down()));

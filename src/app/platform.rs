@@ -81,11 +81,20 @@ pub trait Platform {
     /// Seconds since an arbitrary start, never going back.
     fn now(&self) -> f64;
     /// Offers a link to the present state, `query` being its query part
-    /// (see [`crate::links`]). Returns what the status line says: where the
-    /// link went, or why there is none.
-    fn share_link(&mut self, query: &str) -> Result<String, String> {
+    /// (see [`crate::links`]): the whole address and where it went, or why
+    /// there is none.
+    fn share_link(&mut self, query: &str) -> Result<SharedLink, String> {
         Err(format!("a link opens the browser version: add {query} to the address of its page"))
     }
+}
+
+/// A link the platform gave to the present state.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SharedLink {
+    /// The whole address.
+    pub address: String,
+    /// What the status line says, e.g. where the link went.
+    pub said: String,
 }
 
 /// A platform with nothing behind it: no dialogs, no files, no session;

@@ -237,6 +237,8 @@ pub struct AppState {
     pub history: History,
     /// Whether the list of keyboard shortcuts is shown.
     pub help: bool,
+    /// The link last given to the present state, shown with its QR code.
+    pub link: Option<LinkCard>,
     /// The deck being presented.
     pub presenter: Option<Presenter>,
     /// The deck being built.
@@ -278,6 +280,7 @@ impl AppState {
             timeline_shown: HashSet::new(),
             history: History::default(),
             help: false,
+            link: None,
             presenter: None,
             deck_editor: DeckEditor::default(),
             movie_running: false,
@@ -427,5 +430,70 @@ impl AppState {
             }
         }
         changed
+    }
+}
+
+/// A link to a state, as the Link card shows it: the address and its QR code.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinkCard {
+    /// The whole address.
+    pub address: String,
+    /// The QR code's modules, row by row, `true` for dark (none when the
+    /// address is too long for one).
+    pub modules: Option<QrModules>,
+}
+
+/// The modules of a QR code.
+#[derive(Debug, Clone, PartialEq)]
+pub struct QrModules {
+    /// Modules per side.
+    pub width: usize,
+    /// `width × width` modules, row by row, `true` for dark.
+    pub dark: Vec<bool>,
+}
+
+impl LinkCard {
+    /// The card of `address`, with error correction M (a code on a projected
+    /// slide survives a poor camera), or L when the address needs the room.
+    pub fn new(address: String) -> LinkCard {
+        let code = [qrcode::EcLevel::M, qrcode::EcLevel::L]
+            .into_iter()
+            .find_map(|level| qrcode::QrCode::with_error_correction_level(address.as_bytes(), level).ok());
+        let modules = code.map(|code| QrModules {
+            width: code.width(),
+            dark: code.to_colors().into_iter().map(|c| c == qrcode::Color::Dark).collect(),
+        });
+        LinkCard { address, modules }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Whether the 7×7 finder pattern (dark ring, light ring, dark 3×3 core)
+    /// sits with its corner at (row, col).
+    fn finder_at(m: &QrModules, row: usize, col: usize) -> bool {
+        (0..7).all(|r| {
+            (0..7).all(|c| {
+                let ring = r.min(c).min(6 - r).min(6 - c);
+                m.dark[(row + r) * m.width + col + c] == (ring != 1)
+            })
+        })
+    }
+
+    #[test]
+    fn a_link_card_holds_a_standard_qr_code_or_says_it_has_none() {
+        let card = LinkCard::new("https://example.org/grainscope/?scene=hysteresis&velocity=0.015".into());
+        let m = card.modules.expect("a short address has a code");
+        assert_eq!(m.dark.len(), m.width * m.width);
+        assert_eq!((m.width - 17) % 4, 0, "width 17 + 4 × version");
+        let far = m.width - 7;
+        assert!(finder_at(&m, 0, 0) && finder_at(&m, 0, far) && finder_at(&m, far, 0));
+        assert!(!finder_at(&m, far, far), "three finders, not four");
+        // Longer addresses need larger codes; past the largest, none.
+        let longer = LinkCard::new(format!("https://example.org/?state={}", "x".repeat(1500)));
+        assert!(longer.modules.expect("1.5 kB fits").width > m.width);
+        assert_eq!(LinkCard::new("x".repeat(3000)).modules, None);
     }
 }

@@ -26,7 +26,7 @@ use rayon::prelude::*;
 use std::f64::consts::PI;
 
 /// What became of a batch.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Fate {
     /// Still dust.
     Dust,
@@ -141,7 +141,7 @@ impl BatchConfig {
 }
 
 /// One batch in a frame.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BatchSample {
     /// Radius, m.
     pub r: f64,
@@ -162,7 +162,7 @@ pub struct BatchSample {
 }
 
 /// The state of all batches at one time.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Frame {
     /// Time, s.
     pub t: f64,
@@ -173,7 +173,7 @@ pub struct Frame {
 }
 
 /// A finished run.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct BatchRun {
     /// Total mass of each batch, kg.
     pub masses: Vec<f64>,

@@ -241,7 +241,7 @@ pub struct RunConfig {
 }
 
 /// One family at a snapshot.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct FamilyPoint {
     /// Particle mass, kg.
     pub mass: f64,
@@ -254,7 +254,7 @@ pub struct FamilyPoint {
 }
 
 /// The state of a run at one time.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Snapshot {
     /// Time, s.
     pub t: f64,
@@ -267,7 +267,7 @@ pub struct Snapshot {
 }
 
 /// Diagnostics of the distribution at one time.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Sample {
     /// Time, s.
     pub t: f64,
@@ -298,7 +298,7 @@ pub struct Sample {
 }
 
 /// The result of one run.
-#[derive(Debug, Clone, PartialEq)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Run {
     /// Seed.
     pub seed: u64,
@@ -309,7 +309,8 @@ pub struct Run {
     /// Group events.
     pub events: u64,
     /// Why the run ended.
-    pub ended: &'static str,
+    #[serde(deserialize_with = "crate::statics::deserialize")]
+    pub ended: crate::statics::Text,
     /// Dust mass per column area at the start, kg m⁻², to normalise m²f(m).
     pub surface_density: f64,
     /// Column area, m².

@@ -301,7 +301,7 @@ struct Pair {
 }
 
 /// Counts of what the events did.
-#[derive(Debug, Clone, Copy, PartialEq, Default)]
+#[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
 pub struct Tally {
     /// Group events that stuck.
     pub stick: u64,

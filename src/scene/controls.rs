@@ -9,10 +9,12 @@ use crate::physics::material::Material;
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
 pub enum ParamError {
     /// The key is not a parameter of the scene.
-    #[error("unknown parameter '{key}' (known: {known})")]
+    #[error("unknown parameter '{key}'{suggestion} (known: {known})")]
     UnknownKey {
         /// The offending key.
         key: String,
+        /// The close matches, as ", did you mean 'a' or 'b'?" (empty if none).
+        suggestion: String,
         /// The scene's keys.
         known: String,
     },
@@ -81,6 +83,36 @@ pub enum ControlKind<'a> {
         /// (key, label) of each option.
         options: Vec<(&'static str, &'static str)>,
     },
+}
+
+impl ParamError {
+    /// The error for `key`, which is none of `known`: it names the close
+    /// matches, if any.
+    pub fn unknown(key: &str, known: &[&str]) -> ParamError {
+        ParamError::UnknownKey { key: key.into(), suggestion: did_you_mean(key, known), known: known.join(", ") }
+    }
+}
+
+/// The names of `known` close to `word`, best first (at most three): names
+/// at most a third of their letters away (Damerau–Levenshtein), and names
+/// that contain it.
+pub fn close_matches<'a>(word: &str, known: &[&'a str]) -> Vec<&'a str> {
+    let mut scored: Vec<(f64, &'a str)> = known
+        .iter()
+        .map(|k| (strsim::normalized_damerau_levenshtein(word, k), *k))
+        .filter(|(score, k)| *score >= 0.66 || (word.len() >= 3 && k.contains(word)))
+        .collect();
+    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+    scored.into_iter().take(3).map(|(_, k)| k).collect()
+}
+
+/// ", did you mean 'a' or 'b'?" for the close matches of `word` (empty if none).
+pub fn did_you_mean(word: &str, known: &[&str]) -> String {
+    let close: Vec<String> = close_matches(word, known).iter().map(|k| format!("'{k}'")).collect();
+    match close.len() {
+        0 => String::new(),
+        _ => format!(", did you mean {}?", close.join(" or ")),
+    }
 }
 
 /// The default value of a control, as written once in its declaration.
@@ -493,5 +525,23 @@ impl LogRange {
     /// The `n` values, evenly spaced in log space.
     pub fn values(&self) -> Vec<f64> {
         super::grid::logspace(self.min, self.max, self.n)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_mistyped_name_is_answered_with_its_close_matches() {
+        let known = ["velocity", "surface_energy", "t_vis", "radius_1", "radius_2", "yield_strength"];
+        assert_eq!(close_matches("velocty", &known), vec!["velocity"]);
+        assert_eq!(close_matches("energy", &known), vec!["surface_energy"]);
+        assert_eq!(close_matches("radius", &known), vec!["radius_1", "radius_2"]);
+        assert!(close_matches("zz", &known).is_empty());
+        assert_eq!(did_you_mean("tvis", &known), ", did you mean 't_vis'?");
+        assert_eq!(did_you_mean("zz", &known), "");
+        let e = ParamError::unknown("velocty", &known);
+        assert!(e.to_string().starts_with("unknown parameter 'velocty', did you mean 'velocity'? (known: velocity, "));
     }
 }

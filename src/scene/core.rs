@@ -164,8 +164,9 @@ pub enum Extra {
     Ladder(Arc<Vec<Rung>>),
     /// The model's own result (a batch run, Monte Carlo runs), kept so that
     /// a clicked point of a figure can be inspected without recomputing.
-    /// It stays where it was computed: it is not written to bytes.
-    #[serde(skip)]
+    /// The kinds the scenes inspect (batch runs, Monte Carlo runs) are
+    /// written to bytes, so that a browser's page inspects what its worker
+    /// computed; any other kind is left out.
     Model(ModelData),
 }
 
@@ -193,6 +194,45 @@ impl PartialEq for ModelData {
 impl std::fmt::Debug for ModelData {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.write_str("ModelData")
+    }
+}
+
+/// The model results a [`ModelData`] is written to bytes as.
+#[derive(serde::Serialize, serde::Deserialize)]
+enum ModelBytes<B, R> {
+    /// A batch run (disk map, lifelines, formation zone).
+    Batches(B),
+    /// Monte Carlo runs (families).
+    Runs(R),
+    /// A kind that no scene inspects: not kept.
+    Other,
+}
+
+impl serde::Serialize for ModelData {
+    fn serialize<S: serde::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        use crate::physics::{batches::BatchRun, coagulation::Run};
+        let data = &self.0;
+        let bytes: ModelBytes<&BatchRun, &Vec<Run>> = if let Some(run) = data.downcast_ref::<BatchRun>() {
+            ModelBytes::Batches(run)
+        } else if let Some(runs) = data.downcast_ref::<Vec<Run>>() {
+            ModelBytes::Runs(runs)
+        } else {
+            ModelBytes::Other
+        };
+        bytes.serialize(serializer)
+    }
+}
+
+impl<'de> serde::Deserialize<'de> for ModelData {
+    fn deserialize<D: serde::Deserializer<'de>>(deserializer: D) -> Result<ModelData, D::Error> {
+        use crate::physics::{batches::BatchRun, coagulation::Run};
+        let data: Arc<dyn Any + Send + Sync> =
+            match <ModelBytes<BatchRun, Vec<Run>> as serde::Deserialize>::deserialize(deserializer)? {
+                ModelBytes::Batches(run) => Arc::new(run),
+                ModelBytes::Runs(runs) => Arc::new(runs),
+                ModelBytes::Other => Arc::new(()),
+            };
+        Ok(ModelData(data))
     }
 }
 

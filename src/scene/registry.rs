@@ -193,10 +193,7 @@ impl SceneParams {
         {
             let mut controls = trial.controls();
             let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
-            let c = controls
-                .iter_mut()
-                .find(|c| c.key == key)
-                .ok_or_else(|| ParamError::UnknownKey { key: key.into(), known: known.join(", ") })?;
+            let c = controls.iter_mut().find(|c| c.key == key).ok_or_else(|| ParamError::unknown(key, &known))?;
             c.set_text(value)?;
         }
         trial.validate()?;

@@ -3,7 +3,7 @@
 //! has no paths: a name the user types is the name of the download, and
 //! reading a typed name is refused with a hint to open the file instead.
 
-use grainscope::app::platform::{Answer, FileKind, Picked, Platform};
+use grainscope::app::platform::{Answer, FileKind, Picked, Platform, SharedLink};
 use grainscope::session::Restored;
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -24,12 +24,14 @@ pub struct WebPlatform {
     answers: Rc<RefCell<Vec<Answer>>>,
     /// Whether the page's storage may be written.
     may_save: bool,
+    /// Asks for a frame: an answer that arrives between frames is seen at once.
+    wake: Rc<dyn Fn()>,
 }
 
 impl WebPlatform {
-    /// The platform of the current page.
-    pub fn new() -> Self {
-        WebPlatform { answers: Rc::default(), may_save: true }
+    /// The platform of the current page; `wake` asks the page for a frame.
+    pub fn new(wake: impl Fn() + 'static) -> Self {
+        WebPlatform { answers: Rc::default(), may_save: true, wake: Rc::new(wake) }
     }
 
     /// The queue its answers go to: files dropped on the page join it.
@@ -113,7 +115,7 @@ async fn answer_for(kind: FileKind, file: web_sys::File) -> Answer {
 
 impl Platform for WebPlatform {
     fn pick_file(&mut self, kind: FileKind) {
-        let answers = Rc::clone(&self.answers);
+        let (answers, wake) = (Rc::clone(&self.answers), Rc::clone(&self.wake));
         let input = web_sys::window()
             .and_then(|w| w.document())
             .and_then(|d| d.create_element("input").ok())
@@ -134,6 +136,7 @@ impl Platform for WebPlatform {
                     None => Answer::Cancelled,
                 };
                 answers.borrow_mut().push(answer);
+                wake();
             });
         });
         input.set_onchange(Some(on_change.unchecked_ref()));
@@ -219,7 +222,7 @@ impl Platform for WebPlatform {
     /// The link goes into the address bar (a reload keeps the state, and the
     /// lecturer can copy it from there) and, where the page may write the
     /// clipboard (https, or this machine), onto the clipboard.
-    fn share_link(&mut self, query: &str) -> Result<String, String> {
+    fn share_link(&mut self, query: &str) -> Result<SharedLink, String> {
         let window = web_sys::window().ok_or("no window to give a link")?;
         let location = window.location();
         let page = format!("{}{}", location.origin().unwrap_or_default(), location.pathname().unwrap_or_default());
@@ -231,10 +234,11 @@ impl Platform for WebPlatform {
             let _ = window.navigator().clipboard().write_text(&link);
             true
         };
-        Ok(if copied {
+        let said = if copied {
             format!("link copied, and in the address bar: {link}")
         } else {
             format!("link in the address bar (this page may not write the clipboard): {link}")
-        })
+        };
+        Ok(SharedLink { address: link, said })
     }
 }

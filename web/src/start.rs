@@ -97,6 +97,25 @@ impl WebHandle {
         Ok(clock.now() - start)
     }
 
+    /// The notices shown above the figures (one per line; empty when none).
+    pub fn notices(&self) -> String {
+        self.runner.app_mut::<PageApp>().map(|p| p.app.state.notices.join("\n")).unwrap_or_default()
+    }
+
+    /// The title of what the last click on a figure shows (empty when
+    /// nothing is inspected).
+    pub fn inspection(&self) -> String {
+        let app = self.runner.app_mut::<PageApp>();
+        app.and_then(|p| p.app.inspection().map(|i| i.title.clone())).unwrap_or_default()
+    }
+
+    /// Where figure `figure`'s axes were drawn in the last frame, in CSS
+    /// pixels: `[left, top, right, bottom]` (empty when it was not drawn).
+    pub fn plot_frame(&self, figure: &str) -> Vec<f32> {
+        let app = self.runner.app_mut::<PageApp>();
+        app.and_then(|p| p.app.plot_frame(figure)).map(|r| vec![r.min.x, r.min.y, r.max.x, r.max.y]).unwrap_or_default()
+    }
+
     /// The open scene's identifier.
     pub fn scene(&self) -> String {
         self.runner.app_mut::<PageApp>().map(|p| p.app.params().info().id.to_string()).unwrap_or_default()
@@ -121,9 +140,9 @@ pub async fn start(canvas_id: String) -> Result<WebHandle, JsValue> {
             canvas,
             eframe::WebOptions::default(),
             Box::new(move |cc| {
-                let ctx = cc.egui_ctx.clone();
+                let (ctx, woken) = (cc.egui_ctx.clone(), cc.egui_ctx.clone());
                 let jobs = WorkerRunner::new(move || ctx.request_repaint());
-                let platform = WebPlatform::new();
+                let platform = WebPlatform::new(move || woken.request_repaint());
                 let answers = platform.answers();
                 let mut app = GrainscopeApp::with_runner(Box::new(platform), Box::new(jobs));
                 app.restore_session();

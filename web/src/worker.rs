@@ -2,7 +2,8 @@
 //! at a time, with the same code the desktop runs on its threads, and posts
 //! `[kind, payload]` messages back: `["progress", fraction]`,
 //! `["partial", bytes]` (a coarse preview or a live view), and
-//! `["done", bytes]` (the encoded `Result<Done, JobError>`).
+//! `["done", bytes]` (the encoded `Result<Done, JobError>`, with the model
+//! data that inspecting a clicked point needs).
 
 use crate::wire;
 use grainscope::app::jobs::{self, Done, Job, JobError};
@@ -30,7 +31,8 @@ fn post(kind: &str, payload: &JsValue) {
     let _ = scope.post_message(&js_sys::Array::of2(&JsValue::from_str(kind), payload));
 }
 
-/// An output as the page receives it: the model data stays here.
+/// An intermediate output as the page receives it: the model data, for
+/// inspecting the final result, stays here.
 fn portable(out: &SceneOutput) -> SceneOutput {
     let extra = if matches!(out.extra, Extra::Model(_)) { Extra::None } else { out.extra.clone() };
     SceneOutput { extra, ..out.clone() }
@@ -69,11 +71,7 @@ fn run(job: Job) -> Result<Done, JobError> {
         out.notes.insert(0, "preview at low resolution; the full result follows".into());
         post_partial(&out);
     }
-    let result = CACHES.with(|caches| jobs::run(job, &progress, caches));
-    match result {
-        Ok(Done::Scene(i, out)) => Ok(Done::Scene(i, portable(&out))),
-        other => other,
-    }
+    CACHES.with(|caches| jobs::run(job, &progress, caches))
 }
 
 /// Runs the job encoded in `job` and posts its progress and result.

@@ -165,6 +165,9 @@ function same(label, web, want, tolerance, source = "the native binary's") {
   }
 }
 
+/** Where the top bar's "Open preset…" button is drawn at 1024×768. */
+const OPEN_BUTTON = { x: 197, y: 14 };
+
 /** Where the top bar's Link button is drawn at 1024×768. */
 const LINK_BUTTON = { x: 566, y: 40 };
 
@@ -255,6 +258,25 @@ try {
     ok(`disk map computed in a worker in ${Date.now() - t0} ms`);
     await shot(page, "batch-fig-5-4");
     same("batch-fig-5-4", await scalars(page), native("batch-fig-5-4"), 1e-6);
+
+    // A click on the map inspects the batch under it: the model the worker
+    // computed came with its result.
+    const frame = await page.evaluate(() => Array.from(window.grainscope.plot_frame("disk-map")));
+    if (frame.length !== 4) {
+      fail("disk map: the map's axes were not drawn");
+    } else {
+      await page.mouse.click((frame[0] + frame[2]) / 2, (frame[1] + frame[3]) / 2);
+      await page.waitForFunction(() => window.grainscope.inspection() !== "", null, { timeout: 10_000 }).catch(() => {});
+      const title = await page.evaluate(() => window.grainscope.inspection());
+      if (title === "") {
+        fail("disk map: a click on the map inspected nothing");
+      } else {
+        ok(`disk map: a click on the map inspects "${title}"`);
+        await page.mouse.move(1010, 760);
+        await page.waitForTimeout(400);
+        await page.screenshot({ path: path.join(out, "batch-fig-5-4-inspected.png") });
+      }
+    }
     await page.close();
   }
 
@@ -312,6 +334,61 @@ try {
     await settle(page);
     await shot(page, "porous-growth-03");
     await page.close();
+  }
+
+  // A preset opened with the file picker (the top bar's "Open preset…"), on
+  // a page of its own storage (the pages above leave a deck's session).
+  {
+    const own = await browser.newContext({ viewport: size });
+    const page = await own.newPage();
+    page.on("pageerror", (e) => fail(`file picker: page error: ${e.message.slice(0, 400)}`));
+    await page.goto(base + "?preset=ice-bounce-8ms");
+    await page.waitForFunction(() => typeof window.grainscope?.busy === "function", null, { timeout: 60_000 });
+    await settle(page);
+    const [chooser] = await Promise.all([
+      page.waitForEvent("filechooser", { timeout: 10_000 }).catch(() => null),
+      page.mouse.click(OPEN_BUTTON.x, OPEN_BUTTON.y),
+    ]);
+    if (chooser === null) {
+      await page.screenshot({ path: path.join(out, "file-picker-failed.png") });
+      throw new Error(`no file picker opened (status: ${await page.evaluate(() => window.grainscope.status())})`);
+    }
+    await chooser.setFiles(path.join(here, "..", "..", "presets", "ice-stick-2ms.ron"));
+    await page
+      .waitForFunction(() => window.grainscope.status().includes("ice-stick-2ms"), null, { timeout: 20_000 })
+      .then(
+        async () => {
+          await settle(page);
+          same("ice-stick-2ms.ron from the file picker", await scalars(page), native("ice-stick-2ms"), 1e-6);
+        },
+        async () => fail(`file picker: the picked preset did not open (status: ${await page.evaluate(() => window.grainscope.status())})`),
+      );
+    await own.close();
+  }
+
+  // An unreadable session in the browser's storage: a fresh start with a
+  // message, the old text set aside, never a blank page.
+  {
+    const broken = await browser.newContext({ viewport: size });
+    await broken.addInitScript(() => {
+      if (localStorage.getItem("grainscope-session-unreadable") === null) {
+        localStorage.setItem("grainscope-session", "(scene: \"hysteresis\", broken");
+      }
+    });
+    const page = await broken.newPage();
+    page.on("pageerror", (e) => fail(`unreadable session: page error: ${e.message.slice(0, 400)}`));
+    await page.goto(base);
+    await page.waitForFunction(() => typeof window.grainscope?.busy === "function", null, { timeout: 60_000 });
+    await settle(page);
+    const status = await page.evaluate(() => window.grainscope.notices());
+    const aside = await page.evaluate(() => localStorage.getItem("grainscope-session-unreadable"));
+    const picture = decode(await page.screenshot({ path: path.join(out, "unreadable-session.png") }));
+    if (!status.includes("could not be read") || aside === null || !drawn(picture)) {
+      fail(`unreadable session: notice ${JSON.stringify(status)}, set aside: ${aside !== null}, drawn: ${drawn(picture)}`);
+    } else {
+      ok(`unreadable session: a fresh start that says so ("${status.slice(0, 90)}…"), the old text set aside`);
+    }
+    await broken.close();
   }
 
   // Budget: the restitution scene from cold, on the page against the desktop.

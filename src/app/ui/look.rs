@@ -72,9 +72,10 @@ pub fn plot_look(ui: &egui::Ui, lecture: bool) -> plot::Look {
     }
 }
 
-/// Makes the bundled DejaVu Sans the first proportional font (egui's own
-/// fonts stay as fallbacks), so every figure label has its glyphs: powers of
-/// ten, arrows, Greek letters, subscripts.
+/// Makes the bundled DejaVu Sans the first proportional font, so every
+/// figure label has its glyphs: powers of ten, arrows, Greek letters,
+/// subscripts. egui's own fonts (feature `egui-fonts`) stay as fallbacks and
+/// as the monospace font; without them DejaVu Sans is the only font.
 fn install_fonts(ctx: &egui::Context) {
     let mut fonts = egui::FontDefinitions::default();
     fonts.font_data.insert("dejavu-sans".into(), Arc::new(egui::FontData::from_static(figure::FONT_TTF)));

@@ -7,6 +7,7 @@ pub mod deck_editor;
 pub mod figures;
 pub mod help;
 pub mod inspector;
+pub mod link;
 pub mod look;
 pub mod matters;
 pub mod monomer_card;

@@ -1,0 +1,499 @@
+"""grainscope: dust microphysics from two touching grains to planetesimals.
+
+The models of the grainscope explorer (S. Krijt, *From grains to
+planetesimals*, Leiden 2015), computed in-process: the same Rust code as the
+window and the command line, with numpy arrays out.
+
+>>> import grainscope as gs
+>>> r = gs.run("ice-bounce-8ms", velocity=3.0)
+>>> r.scalars["e"]                         # keyed as `grainscope run --json`
+>>> r.figures[0].series[0].x               # numpy arrays, in the axis units
+>>> t = gs.sweep("restitution-ice", vary={"surface_energy": gs.log(0.1, 1.0, 20)})
+
+Parameters are given by their documented names in SI units (`gs.scenes()`
+lists them with unit, default, range and meaning). A name a scene does not
+have raises `KeyError` naming the close matches; a value out of range raises
+`ValueError` with the command line's message. Computations release the GIL
+and stop at Ctrl-C. Nothing is printed.
+"""
+
+from __future__ import annotations
+
+import csv
+import io
+import json
+import math
+from dataclasses import dataclass
+from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
+
+import numpy as np
+
+from . import _native
+
+__version__: str = _native.__version__
+
+__all__ = [
+    "Axis",
+    "Figure",
+    "Heatmap",
+    "Parameter",
+    "Preset",
+    "Range",
+    "Result",
+    "Scene",
+    "Series",
+    "lin",
+    "log",
+    "presets",
+    "run",
+    "scenes",
+    "sweep",
+]
+
+#: Pixel size of a figure drawn for a notebook (the explorer's export size).
+FIGURE_SIZE: Tuple[int, int] = (1200, 900)
+
+
+@dataclass(frozen=True)
+class Preset:
+    """A shipped preset: a scene with its parameters, as in `grainscope presets`."""
+
+    #: Name to pass to `run` and `sweep`, e.g. "ice-bounce-8ms".
+    name: str
+    #: The scene it opens.
+    scene: str
+    #: Its title.
+    title: str
+
+
+@dataclass(frozen=True)
+class Parameter:
+    """A documented parameter of a scene (as `grainscope params SCENE`)."""
+
+    #: Name, as a keyword of `run` and a key of `sweep(vary=...)`.
+    name: str
+    #: Label in the explorer window.
+    label: str
+    #: "number", "count", "toggle", "material" or "choice".
+    kind: str
+    #: SI unit of the value ("" if dimensionless).
+    unit: str
+    #: The scene's default.
+    default: Any
+    #: Smallest valid value (numbers and counts).
+    min: Optional[float]
+    #: Largest valid value (numbers and counts).
+    max: Optional[float]
+    #: Whether the parameter spans decades (a log slider in the window).
+    log: bool
+    #: The valid values of a choice.
+    choices: Tuple[str, ...]
+    #: What it means.
+    meaning: str
+    #: Whether it changes only the figures' look, not the numbers.
+    style_only: bool
+
+
+@dataclass(frozen=True)
+class Scene:
+    """A scene of the explorer: one computation and its parameters."""
+
+    #: Identifier, for `run(scene=...)`.
+    id: str
+    #: Title.
+    title: str
+    #: Thesis sections and figures it covers.
+    source: str
+    #: Whether one computation takes seconds or more.
+    heavy: bool
+    #: Its parameters.
+    parameters: Tuple[Parameter, ...]
+
+    def parameter(self, name: str) -> Parameter:
+        """The parameter called `name` (KeyError if the scene has none)."""
+        for p in self.parameters:
+            if p.name == name:
+                return p
+        raise KeyError(f"{self.id} has no parameter '{name}'")
+
+
+def presets() -> List[Preset]:
+    """The shipped presets."""
+    return [Preset(*p) for p in _native.presets()]
+
+
+_SCENES: Optional[List[Scene]] = None
+
+
+def scenes() -> List[Scene]:
+    """Every scene with its documented parameters (units SI)."""
+    global _SCENES
+    if _SCENES is None:
+        _SCENES = [
+            Scene(
+                id=s["id"],
+                title=s["title"],
+                source=s["source"],
+                heavy=s["heavy"],
+                parameters=tuple(Parameter(**{**p, "choices": tuple(p["choices"])}) for p in s["parameters"]),
+            )
+            for s in _native.scenes()
+        ]
+    return list(_SCENES)
+
+
+def _text(name: str, value: Any) -> str:
+    """A parameter value as the command line's `--set NAME=TEXT` takes it."""
+    if isinstance(value, (bool, np.bool_)):
+        return "true" if value else "false"
+    if isinstance(value, (int, np.integer)):
+        return str(int(value))
+    if isinstance(value, (float, np.floating)):
+        return repr(float(value))
+    if isinstance(value, str):
+        return value
+    raise TypeError(f"{name}: a number, a bool or a text, not {type(value).__name__}")
+
+
+def _sets(params: Mapping[str, Any], seed: Optional[int], preset: Optional[str], scene: Optional[str]) -> List[Tuple[str, str]]:
+    sets = [(k, _text(k, v)) for k, v in params.items()]
+    if seed is not None:
+        if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
+            raise ValueError(f"seed={seed!r}: a whole number ≥ 0")
+        # A scene that draws no random numbers gives the same result with any seed.
+        id = _native.scene_of(preset, scene)
+        if any(p.name == "seed" for s in scenes() if s.id == id for p in s.parameters):
+            sets.append(("seed", str(int(seed))))
+    return sets
+
+
+@dataclass(frozen=True)
+class Axis:
+    """An axis of a figure: quantity, unit as shown, scale."""
+
+    label: str
+    unit: str
+    log: bool
+
+    @property
+    def title(self) -> str:
+        """"label [unit]", or the label alone when dimensionless."""
+        return f"{self.label} [{self.unit}]" if self.unit else self.label
+
+
+@dataclass(frozen=True)
+class Series:
+    """A curve or set of points of a figure, in its axes' units."""
+
+    #: Legend entry ("" for none).
+    name: str
+    #: Horizontal values.
+    x: np.ndarray
+    #: Vertical values.
+    y: np.ndarray
+    #: How the explorer draws it: "Line", "Dashed", "Points", …
+    style: str
+
+
+@dataclass(frozen=True)
+class Heatmap:
+    """A map drawn under a figure's series."""
+
+    #: Cell centres along x (axis units).
+    x: np.ndarray
+    #: Cell centres along y (axis units).
+    y: np.ndarray
+    #: Values, shape (len(y), len(x)): z[j, i] belongs to (x[i], y[j]).
+    z: np.ndarray
+    #: What the colour shows.
+    label: str
+    #: Unit of the values ("" if dimensionless).
+    unit: str
+    #: Category names of a categorical map (z holds indices into it).
+    categories: Tuple[str, ...]
+
+
+class Figure:
+    """A figure of a result: axes, series as numpy arrays, an optional map.
+
+    In a notebook it shows itself as the explorer draws it.
+    """
+
+    def __init__(self, computed: Any, data: Mapping[str, Any]):
+        self._computed = computed
+        #: Identifier (the file stem of `save`).
+        self.id: str = data["id"]
+        #: Title.
+        self.title: str = data["title"]
+        #: Horizontal axis.
+        self.x: Axis = _axis(data["x"])
+        #: Vertical axis.
+        self.y: Axis = _axis(data["y"])
+        #: The curves and points.
+        self.series: List[Series] = [
+            Series(name=s["name"], x=xy[:, 0], y=xy[:, 1], style=_style(s["style"]))
+            for s in data["series"]
+            for xy in [np.array(s["points"], dtype=float).reshape(-1, 2)]
+        ]
+        h = data.get("heatmap")
+        #: The map under the series, if any.
+        self.heatmap: Optional[Heatmap] = None
+        if h is not None:
+            x = np.array(h["x"], dtype=float)
+            y = np.array(h["y"], dtype=float)
+            self.heatmap = Heatmap(
+                x=x,
+                y=y,
+                z=np.array(h["values"], dtype=float).reshape(len(y), len(x)),
+                label=h["label"],
+                unit=h["unit"],
+                categories=tuple(h.get("categories", ())),
+            )
+
+    def png(self, size: Tuple[int, int] = FIGURE_SIZE) -> bytes:
+        """The figure as PNG bytes, the preset embedded (it reopens in the explorer)."""
+        return self._computed.render(self.id, "png", tuple(size))
+
+    def svg(self, size: Tuple[int, int] = FIGURE_SIZE) -> str:
+        """The figure as an SVG document, the preset embedded."""
+        return self._computed.render(self.id, "svg", tuple(size)).decode("utf-8")
+
+    def _repr_png_(self) -> bytes:
+        return self.png()
+
+    def to_frame(self) -> Any:
+        """The series as a tidy pandas DataFrame: series, x, y (needs pandas)."""
+        pd = _pandas("Figure.to_frame")
+        frames = [pd.DataFrame({"series": s.name, "x": s.x, "y": s.y}) for s in self.series]
+        df = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["series", "x", "y"])
+        df.attrs.update({"figure": self.id, "x": self.x.title, "y": self.y.title})
+        return df
+
+    def __repr__(self) -> str:
+        return f"<Figure {self.id!r}: {self.title}; {len(self.series)} series; x {self.x.title}, y {self.y.title}>"
+
+
+def _axis(a: Mapping[str, Any]) -> Axis:
+    return Axis(label=a["label"], unit=a["unit"], log=_style(a["scale"]) == "Log")
+
+
+def _style(value: Any) -> str:
+    """A unit enum variant as pythonize gives it (a name, or {name: fields})."""
+    if isinstance(value, str):
+        return value
+    if isinstance(value, Mapping) and len(value) == 1:
+        return next(iter(value))
+    return str(value)
+
+
+def _pandas(what: str) -> Any:
+    try:
+        import pandas
+    except ImportError as e:
+        raise ImportError(f"{what} needs pandas: pip install pandas") from e
+    return pandas
+
+
+class Result:
+    """A computed scene: scalars, figures, the preset that reproduces it."""
+
+    def __init__(self, computed: Any):
+        self._computed = computed
+        #: The scene's identifier.
+        self.scene: str = computed.scene
+        #: The preset's title.
+        self.title: str = computed.title
+        #: The scalars, keyed exactly as `grainscope run --json` (SI units;
+        #: None where the command line prints null).
+        self.scalars: Dict[str, Optional[float]] = json.loads(computed.scalars_json())
+        listed = computed.scalars()
+        #: The unit of each scalar ("" if dimensionless).
+        self.units: Dict[str, str] = {k: u for k, _, _, u in listed}
+        #: The label of each scalar, as the explorer shows it.
+        self.labels: Dict[str, str] = {k: label for k, label, _, _ in listed}
+        #: The figures, as exported.
+        self.figures: List[Figure] = [Figure(computed, f) for f in computed.figures()]
+        #: Warnings the scene gave.
+        self.warnings: List[str] = computed.warnings()
+        #: Notes the scene gave.
+        self.notes: List[str] = computed.notes()
+
+    @property
+    def preset(self) -> str:
+        """The preset (RON text) that reproduces this result in the explorer and CLI."""
+        return self._computed.preset_ron()
+
+    def figure(self, id: str) -> Figure:
+        """The figure called `id` (KeyError if none)."""
+        for f in self.figures:
+            if f.id == id:
+                return f
+        raise KeyError(f"no figure '{id}' (figures: {', '.join(f.id for f in self.figures)})")
+
+    def to_frame(self) -> Any:
+        """Every series of every figure as one tidy pandas DataFrame:
+        figure, series, x, y (needs pandas). Axis titles are in `df.attrs`."""
+        pd = _pandas("Result.to_frame")
+        frames = []
+        for f in self.figures:
+            for s in f.series:
+                frames.append(pd.DataFrame({"figure": f.id, "series": s.name, "x": s.x, "y": s.y}))
+        df = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["figure", "series", "x", "y"])
+        df.attrs["axes"] = {f.id: (f.x.title, f.y.title) for f in self.figures}
+        return df
+
+    def save(self, folder: Any) -> List[str]:
+        """Writes what `grainscope run --out FOLDER` writes (CSV, SVG and PNG per
+        figure, scalars.json), all or nothing; returns the paths."""
+        return self._computed.save(str(folder))
+
+    def _repr_png_(self) -> Optional[bytes]:
+        return self.figures[0].png() if self.figures else None
+
+    def _repr_svg_(self) -> Optional[str]:
+        return self.figures[0].svg() if self.figures else None
+
+    def __repr__(self) -> str:
+        shown = ", ".join(f"{k}={v:.4g}" if isinstance(v, float) else f"{k}={v}" for k, v in list(self.scalars.items())[:4])
+        more = ", …" if len(self.scalars) > 4 else ""
+        return f"<Result {self.scene}: {shown}{more}; {len(self.figures)} figures>"
+
+
+def run(preset: Optional[str] = None, /, *, scene: Optional[str] = None, seed: Optional[int] = None, **params: Any) -> Result:
+    """Computes a shipped preset or preset file (`preset`), or a scene's
+    defaults (`scene=`), with `params` (documented names, SI units) changed.
+
+    `seed` sets the first random seed of the Monte Carlo scenes (results are
+    reproducible for a given seed); scenes without random numbers ignore it.
+    """
+    sets = _sets(params, seed, preset, scene)
+    return Result(_native.run(preset, scene, sets))
+
+
+@dataclass(frozen=True)
+class Range:
+    """Values of a swept parameter, spaced evenly (`lin`) or evenly in the
+    logarithm (`log`), `start` first and `stop` last."""
+
+    spacing: str
+    start: float
+    stop: float
+    num: int
+
+    def text(self, name: str) -> str:
+        """The command line's `--vary` text."""
+        return f"{name}={self.spacing}:{self.start!r}:{self.stop!r}:{self.num}"
+
+    def values(self) -> np.ndarray:
+        """The values."""
+        if self.spacing == "log":
+            return np.geomspace(self.start, self.stop, self.num)
+        return np.linspace(self.start, self.stop, self.num)
+
+
+def lin(start: float, stop: float, num: int) -> Range:
+    """`num` values evenly spaced from `start` to `stop`."""
+    return Range("lin", float(start), float(stop), int(num))
+
+
+def log(start: float, stop: float, num: int) -> Range:
+    """`num` values evenly spaced in the logarithm from `start` to `stop` (both > 0)."""
+    return Range("log", float(start), float(stop), int(num))
+
+
+def _vary_text(name: str, values: Union[Range, Sequence[float], np.ndarray]) -> str:
+    if isinstance(values, Range):
+        return values.text(name)
+    if isinstance(values, (str, bytes)):
+        raise TypeError(f"vary[{name!r}]: gs.lin(...), gs.log(...) or a list of numbers")
+    numbers = [float(v) for v in np.asarray(values, dtype=float).ravel()]
+    if not numbers:
+        raise ValueError(f"vary[{name!r}]: no values")
+    bad = [v for v in numbers if not math.isfinite(v)]
+    if bad:
+        raise ValueError(f"vary[{name!r}]: {bad[0]} is not a finite number")
+    return f"{name}=list:" + ":".join(repr(v) for v in numbers)
+
+
+def _shard_table(preset_ron: str, vary: List[str], scalars: List[str], k: int, n: int) -> str:
+    """Shard `k` of `n` of a sweep: what one Dask task computes."""
+    return _native.sweep_table(preset_ron, vary, scalars, k, n)
+
+
+def _workers(client: Any) -> int:
+    try:
+        return max(1, sum(client.nthreads().values()))
+    except Exception:
+        return 1
+
+
+def sweep(
+    preset: Optional[str] = None,
+    /,
+    *,
+    vary: Mapping[str, Union[Range, Sequence[float], np.ndarray]],
+    scene: Optional[str] = None,
+    scalars: Optional[Sequence[str]] = None,
+    out: Any = None,
+    client: Any = None,
+    shards: Optional[int] = None,
+    seed: Optional[int] = None,
+    **params: Any,
+) -> Any:
+    """A scene's scalars over a grid of parameter values: the table of
+    `grainscope sweep` (a row per point: point, the varied values, the
+    scalars, error; units in the column names).
+
+    `vary` maps parameter names to `gs.lin(...)`, `gs.log(...)` or a list of
+    values; several make a grid (the last varies fastest). `scalars` picks
+    columns (keys of `Result.scalars`); all by default. `out` writes the
+    command line's folder (sweep.csv, sweep.ron, figures) and resumes from the
+    rows already in it. `client`, a `dask.distributed.Client`, spreads the
+    points over its workers in `shards` deterministic slices (one per worker
+    thread by default); the table is the same as computed here.
+
+    Returns a pandas DataFrame when pandas is installed, else a dict of
+    numpy arrays (the `error` column a list of texts or None).
+    """
+    if not vary:
+        raise ValueError("nothing to vary: give vary={'name': gs.log(...)}")
+    if out is not None and client is not None:
+        raise ValueError("give out= or client=, not both: a folder is computed here")
+    preset_ron = _native.preset_ron(preset, scene, _sets(params, seed, preset, scene))
+    texts = [_vary_text(k, v) for k, v in vary.items()]
+    chosen = list(scalars) if scalars is not None else []
+    if out is not None:
+        table = _native.sweep_folder(preset_ron, texts, chosen, str(out))
+    elif client is not None:
+        points = _native.sweep_points(preset_ron, texts, chosen)
+        n = max(1, min(points, int(shards) if shards else _workers(client)))
+        futures = client.map(
+            _shard_table, [preset_ron] * n, [texts] * n, [chosen] * n, list(range(1, n + 1)), [n] * n, pure=False
+        )
+        table = _native.merge_tables(preset_ron, texts, chosen, client.gather(futures))
+    else:
+        table = _native.sweep_table(preset_ron, texts, chosen, 1, 1)
+    return _table(table)
+
+
+def _table(text: str) -> Any:
+    """A sweep table as a DataFrame, or without pandas a dict of arrays."""
+    try:
+        import pandas as pd
+    except ImportError:
+        pd = None
+    if pd is not None:
+        df = pd.read_csv(io.StringIO(text), dtype={"error": "string"})
+        return df
+    rows = list(csv.reader(io.StringIO(text)))
+    header, body = rows[0], rows[1:]
+    columns: Dict[str, Any] = {}
+    for j, name in enumerate(header):
+        cells = [r[j] for r in body]
+        if name == "error":
+            columns[name] = [c or None for c in cells]
+        elif name == "point":
+            columns[name] = np.array([int(c) for c in cells], dtype=np.int64)
+        else:
+            columns[name] = np.array([float(c) if c else math.nan for c in cells], dtype=float)
+    return columns

@@ -20,6 +20,7 @@ and stop at Ctrl-C. Nothing is printed.
 from __future__ import annotations
 
 import csv
+import functools
 import io
 import json
 import math
@@ -235,6 +236,10 @@ class Figure:
             for s in data["series"]
             for xy in [np.array(s["points"], dtype=float).reshape(-1, 2)]
         ]
+        #: Text placed at data points: (text, x, y) in the axis units.
+        self.labels: List[Tuple[str, float, float]] = [
+            (label["text"], float(label["at"][0]), float(label["at"][1])) for label in data.get("labels", [])
+        ]
         h = data.get("heatmap")
         #: The map under the series, if any.
         self.heatmap: Optional[Heatmap] = None
@@ -311,12 +316,15 @@ class Result:
         self.units: Dict[str, str] = {k: u for k, _, _, u in listed}
         #: The label of each scalar, as the explorer shows it.
         self.labels: Dict[str, str] = {k: label for k, label, _, _ in listed}
-        #: The figures, as exported.
-        self.figures: List[Figure] = [Figure(computed, f) for f in computed.figures()]
         #: Warnings the scene gave.
         self.warnings: List[str] = computed.warnings()
         #: Notes the scene gave.
         self.notes: List[str] = computed.notes()
+
+    @functools.cached_property
+    def figures(self) -> List[Figure]:
+        """The figures, as exported (made into arrays when first asked for)."""
+        return [Figure(self._computed, f) for f in self._computed.figures()]
 
     @property
     def preset(self) -> str:

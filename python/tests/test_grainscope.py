@@ -114,6 +114,11 @@ def test_figures_are_numpy_arrays_with_axes_and_maps():
     maps = [f.heatmap for f in speeds.figures if f.heatmap is not None]
     assert maps and maps[0].z.shape == (len(maps[0].y), len(maps[0].x))
     assert np.isfinite(maps[0].z).any()
+    # The map of dominant sources names its regions at points inside it.
+    sources = speeds.figure("dominant-source")
+    assert len(sources.labels) >= 3
+    for text, x, y in sources.labels:
+        assert text and sources.heatmap.x[0] <= x <= sources.heatmap.x[-1], (text, x)
 
 
 def test_a_result_draws_itself_and_reopens_its_state():

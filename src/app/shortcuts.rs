@@ -159,7 +159,13 @@ pub const SHORTCUTS: &[Shortcut] = &[
         keys: &[key(Key::Escape)],
         action: Action::Leave,
         mode: Mode::Anywhere,
-        text: "close this list, leave presenter or lecture mode",
+        text: "close this list or the link, leave presenter or lecture mode",
+    },
+    Shortcut {
+        keys: &[key(Key::Q)],
+        action: Action::CopyLink,
+        mode: Mode::Anywhere,
+        text: "a link and QR code that open this state (browser version)",
     },
     Shortcut {
         keys: &[key(Key::R)],

@@ -15,6 +15,7 @@
 import { chromium } from "playwright-core";
 import { PNG } from "pngjs";
 import pixelmatch from "pixelmatch";
+import jsQR from "jsqr";
 import { execFileSync } from "node:child_process";
 import fs from "node:fs";
 import http from "node:http";
@@ -210,6 +211,18 @@ try {
     await page.mouse.click(LINK_BUTTON.x, LINK_BUTTON.y);
     await page.waitForFunction(() => location.search.startsWith("?scene="), null, { timeout: 10_000 }).catch(() => {});
     const query = await page.evaluate(() => location.search);
+    // The Link card shows the address as a QR code a phone can read off the screen.
+    await page.waitForTimeout(600);
+    const card = decode(await page.screenshot({ path: path.join(out, "link-card.png") }));
+    const scanned = jsQR(new Uint8ClampedArray(card.data), card.width, card.height);
+    const address = await page.evaluate(() => location.href);
+    if (scanned?.data !== address) {
+      fail(`Link card: the QR code reads ${JSON.stringify(scanned?.data)}, the address is ${address}`);
+    } else {
+      ok(`Link card: its QR code reads ${address}`);
+    }
+    await page.keyboard.press("Escape");
+    await page.waitForTimeout(300);
     if (!query.startsWith("?scene=hysteresis&") || !query.includes("velocity=")) {
       fail(`Link: the address reads ${JSON.stringify(query)}`);
     } else {

@@ -28,7 +28,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text("L toggles, Esc leaves").changed() {
                 cx.send(Command::SetLecture(lecture));
             }
-            if ui.button("?").on_hover_text("keyboard shortcuts (F1)").clicked() {
+            if ui.button("?").on_hover_text("keyboard shortcuts (? or H)").clicked() {
                 cx.send(Command::Act(Action::Help));
             }
         });
@@ -107,7 +107,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         if ui.button("Keys").on_hover_text("keyboard shortcuts (? or H)").clicked() {
             cx.send(Command::Act(Action::Help));
         }
-        if ui.button("Link").on_hover_text("a link that opens this scene in this state (browser version)").clicked() {
+        if ui
+            .button("Link")
+            .on_hover_text("a link and QR code that open this state in the browser version (Q)")
+            .clicked()
+        {
             cx.send(Command::Act(Action::CopyLink));
         }
     });
@@ -152,6 +156,12 @@ fn presets_menu(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 
 /// The shipped decks, each presented from its first slide when picked.
 pub fn decks_menu(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    // In lecture mode the bar has no room for the Link button: it is here too.
+    if ui.button("Link and QR code to this state (Q)").clicked() {
+        cx.send(Command::Act(Action::CopyLink));
+        ui.close();
+    }
+    ui.separator();
     let mut picked = None;
     for (file, text) in crate::deck::SHIPPED {
         let title = ron::from_str::<crate::deck::Deck>(text).map_or_else(|_| file.to_string(), |d| d.title);

@@ -473,7 +473,7 @@ def sweep(
     if out is not None:
         table = _native.sweep_folder(preset_ron, texts, chosen, str(out))
     elif client is not None:
-        points = _native.sweep_points(preset_ron, texts, chosen)
+        points = _native.sweep_points(preset_ron, texts)
         n = max(1, min(points, int(shards) if shards else _workers(client)))
         futures = client.map(
             _shard_table, [preset_ron] * n, [texts] * n, [chosen] * n, list(range(1, n + 1)), [n] * n, pure=False

@@ -342,14 +342,7 @@ fn run(py: Python<'_>, preset: Option<&str>, scene: Option<&str>, sets: Vec<(Str
 /// The plan and columns of a sweep of `preset_ron` over `vary` (texts as
 /// `--vary` takes them); a varied name the scene lacks is a `KeyError`.
 fn plan_of(py: Python<'_>, preset_ron: &str, vary: &[String], scalars: &[String]) -> PyResult<(Plan, Columns)> {
-    let preset = from_ron(preset_ron)?;
-    let parsed = vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>().map_err(|e| sweep_error(&e))?;
-    let mut probe = preset.scene.clone();
-    let known: Vec<&'static str> = probe.controls().iter().map(|c| c.key).collect();
-    if let Some(v) = parsed.iter().find(|v| !known.contains(&v.key.as_str())) {
-        return Err(param_error(&ParamError::unknown(&v.key, &known)));
-    }
-    let plan = Plan::new(preset.scene, parsed).map_err(|e| sweep_error(&e))?;
+    let plan = checked_plan(preset_ron, vary)?;
     let scalars = scalars.to_vec();
     let base = plan.clone();
     let columns = interruptible(py, &Progress::default(), move |progress| Columns::of(&base, &scalars, progress))?
@@ -357,10 +350,22 @@ fn plan_of(py: Python<'_>, preset_ron: &str, vary: &[String], scalars: &[String]
     Ok((plan, columns))
 }
 
-/// Checks a sweep: its number of points.
+/// The plan of a sweep, checked without computing anything.
+fn checked_plan(preset_ron: &str, vary: &[String]) -> PyResult<Plan> {
+    let preset = from_ron(preset_ron)?;
+    let parsed = vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>().map_err(|e| sweep_error(&e))?;
+    let mut probe = preset.scene.clone();
+    let known: Vec<&'static str> = probe.controls().iter().map(|c| c.key).collect();
+    if let Some(v) = parsed.iter().find(|v| !known.contains(&v.key.as_str())) {
+        return Err(param_error(&ParamError::unknown(&v.key, &known)));
+    }
+    Plan::new(preset.scene, parsed).map_err(|e| sweep_error(&e))
+}
+
+/// Checks a sweep's names and values (nothing computed): its number of points.
 #[pyfunction]
-fn sweep_points(py: Python<'_>, preset_ron: &str, vary: Vec<String>, scalars: Vec<String>) -> PyResult<usize> {
-    Ok(plan_of(py, preset_ron, &vary, &scalars)?.0.len())
+fn sweep_points(preset_ron: &str, vary: Vec<String>) -> PyResult<usize> {
+    Ok(checked_plan(preset_ron, &vary)?.len())
 }
 
 /// The table (the command line's `sweep.csv`) of shard `k` of `n` of a
@@ -423,7 +428,7 @@ fn sweep_folder(
 ) -> PyResult<String> {
     let preset = from_ron(preset_ron)?;
     // Names and values are checked first, with the errors of a sweep in memory.
-    plan_of(py, preset_ron, &vary, &scalars)?;
+    checked_plan(preset_ron, &vary)?;
     let folder = out.clone();
     interruptible(py, &Progress::default(), move |_| {
         grainscope::sweep_files::run(preset, &vary, &scalars, Shard::ALL, &folder, &|_, _| {})

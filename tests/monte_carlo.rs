@@ -2,12 +2,12 @@
 //! mass conservation, seed reproducibility and thread-count independence,
 //! and the porous-ice column of ch. 4 against the semi-analytical track.
 
-use grainscope::physics::aggregate::{Monomer, Thresholds, TurbulenceModel};
+use grainscope::physics::aggregate::{Monomer, Particle, Thresholds, TurbulenceModel, relative_velocity};
 use grainscope::physics::coagulation::{Column, Compaction, RunConfig};
 use grainscope::physics::constants::{AU, YEAR};
 use grainscope::physics::disk::GasDisk;
 use grainscope::physics::growth::{GrowthModel, Porosity};
-use grainscope::physics::monte_carlo::{Analytic, Body, Engine, Settings};
+use grainscope::physics::monte_carlo::{Analytic, Body, Engine, Family, Model, Settings};
 
 const PARTICLES: f64 = 1e20;
 
@@ -181,7 +181,21 @@ fn perfect_sticking_follows_the_semi_analytical_porosity_track_with_full_compact
     for s in run.history.iter().filter(|s| s.m_p > 1e-15) {
         let ratio = s.phi_p / track_phi(s.m_p);
         eprintln!("m_p {:.3e} kg: φ_p {:.3e}, track {:.3e}", s.m_p, s.phi_p, track_phi(s.m_p));
-        assert!((1.0 / 3.0..3.0).contains(&ratio), "φ_p/φ_track = {ratio} at m_p = {:e} kg", s.m_p);
+        // The track assumes growth by equal-size partners; in the first
+        // turbulence regime (Ωt_s below Re_t^{-1/2}, where fluffy aggregates
+        // keep about the monomers' Stokes number) the Monte Carlo aggregates
+        // grow by collecting smaller ones and stay less fluffy, up to 3.4×
+        // at the onset of compaction (App. 5.A names the exception). Before
+        // that (hit-and-stick, m_p < 10⁻¹⁰ kg) and once compaction has set
+        // in (m_p > 10⁻⁵ kg) they agree within 1.4× and 1.3×.
+        let band = if s.m_p < 1e-10 {
+            1.4
+        } else if s.m_p > 1e-5 {
+            1.3
+        } else {
+            4.0
+        };
+        assert!((1.0 / band..band).contains(&ratio), "φ_p/φ_track = {ratio} at m_p = {:e} kg", s.m_p);
         assert!(s.mass_error.abs() < 1e-12);
         checked += 1;
     }
@@ -237,5 +251,33 @@ fn the_smooth_exact_curve_integrates_to_the_exact_bin_masses() {
         let integral: f64 = (0..n).map(|i| kernel.exact_mass_per_ln((a + (i as f64 + 0.5) * h).exp(), t) * h).sum();
         let binned = kernel.exact_mass_between(k, 2.0 * k, t);
         assert!((integral / binned - 1.0).abs() < 1e-3, "{kernel:?}: {integral} vs {binned}");
+    }
+}
+
+#[test]
+fn cached_velocity_terms_give_the_relative_velocity() {
+    // The column's velocity reads the terms of the family with the larger
+    // Stokes number from its cached properties; it must equal the quadratic
+    // sum of `relative_velocity` across every regime of (4.11).
+    let cfg = column(20.0, Compaction::Full);
+    let col = cfg.column;
+    let mono = Monomer::ice();
+    let m0 = mono.mass();
+    let family = |n: f64, phi: f64| {
+        let body = Body { mass: n * m0, filling: phi };
+        Family { mass: body.mass, filling: phi, groups: 1.0, zoom: 0, props: col.props(body) }
+    };
+    let set: Vec<_> = [(1.0, 1.0), (30.0, 0.2), (1e6, 1e-3), (1e12, 1e-4), (1e18, 1e-3), (1e24, 0.1), (1e27, 0.3)]
+        .iter()
+        .map(|&(n, phi)| family(n, phi))
+        .collect();
+    for a in &set {
+        for b in &set {
+            let pa = Particle { mass: a.mass, stokes: a.props.stokes };
+            let pb = Particle { mass: b.mass, stokes: b.props.stokes };
+            let exact = relative_velocity(&col.env, &pa, &pb, TurbulenceModel::Thesis, 0.1).total();
+            let v = col.velocity(a, b);
+            assert!((v / exact - 1.0).abs() < 1e-12, "St {} and {}: {v} against {exact}", pa.stokes, pb.stokes);
+        }
     }
 }

@@ -189,8 +189,8 @@
 //! - (3.15): written with ξ = (a₂ − a₁)/2 and G₂ − G₁ (the thesis writes G₁ − G₂ for the trailing
 //!   half); the printed 1/12 is kept, although keeping the (a₁ − a₂)γ term of (3.11) gives 1/10, so
 //!   (3.15) yields a ξ 17 % smaller than the exact small-asymmetry relation.
-//! - (4.8)/(5.18): the projected area is πa²; Okuzumi et al.'s orientation-averaged area is not
-//!   reproduced (`physics::aggregate::Aggregate::area`).
+//! - (4.8)/(5.18): Okuzumi et al.'s (2009) orientation-averaged area with the BCCA radius taken as the one
+//!   the hit-and-stick rule gives an equal-mass cluster, a₀N^{0.527} (`physics::aggregate::Aggregate::area`).
 //! - (4.11)/(5.22): the middle regime uses 1.55 for "1.4…1.7"; the full Ormel & Cuzzi (2007) form is
 //!   offered as an alternative (`physics::aggregate::TurbulenceModel::OrmelCuzzi`).
 //! - Collisional compaction (Sect. 4.2.4 and App. 5.C, Okuzumi et al. 2012 Eqs. 15 and 31, not

@@ -590,6 +590,31 @@ impl<M: Model> Engine<M> {
         self.row[k] = self.rates[k].iter().sum();
     }
 
+    /// Updates the group rates of family k after its group count changed from
+    /// `before` (nothing else about it): a pair's group rate (4.25) is
+    /// proportional to the group counts of both families, so its row scales;
+    /// the in-group rate is recomputed. Falls back to [`Engine::refresh_rates`]
+    /// where the family is about to be merged (fewer than one group left).
+    fn scale_rates(&mut self, k: usize, before: f64) {
+        let now = self.families[k].groups;
+        if !(before >= 1.0 && now >= 1.0) {
+            self.refresh_rates(k);
+            return;
+        }
+        let ratio = now / before;
+        for j in 0..self.families.len() {
+            if j != k {
+                let old = self.rates[k][j];
+                let w = old * ratio;
+                self.rates[k][j] = w;
+                self.rates[j][k] = w;
+                self.row[j] += w - old;
+            }
+        }
+        self.rates[k][k] = 2.0 * self.group_rate(k, k);
+        self.row[k] = self.rates[k].iter().sum();
+    }
+
     fn rebuild_rates(&mut self) {
         let n = self.families.len();
         for i in 0..n {
@@ -690,6 +715,7 @@ impl<M: Model> Engine<M> {
     }
 
     fn event(&mut self, i: usize, j: usize) {
+        let (before_i, before_j) = (self.families[i].groups, self.families[j].groups);
         let mut made: Vec<Product> = Vec::with_capacity(2);
         if i == j {
             let f = self.families[i];
@@ -708,9 +734,9 @@ impl<M: Model> Engine<M> {
             self.families[hi].groups -= exp2i(-n_eps);
             self.outcome(&l, &h, per, exp2i(l.zoom), l.zoom, &mut made);
         }
-        self.refresh_rates(i);
+        self.scale_rates(i, before_i);
         if j != i {
-            self.refresh_rates(j);
+            self.scale_rates(j, before_j);
         }
         for (body, count, zoom, kind) in made {
             if count > 0.0 && body.mass > 0.0 {

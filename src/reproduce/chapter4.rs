@@ -75,7 +75,7 @@ pub fn chapter4() -> Vec<Check> {
             21.0,
             scalar(&drag, "fractal_re_one").log10(),
             0.5,
-            "\"at a mass of m/m0 ~ 1e21\"; with the projected area pi a^2 used here Re_p reaches 1 at 10^21.75 (Okuzumi et al.'s smaller area for fractals would move it down)",
+            "\"at a mass of m/m0 ~ 1e21\"; ours reaches Re_p = 1 at 10^21.75. Not the projected area: at these masses Okuzumi et al.'s A equals pi a^2 within 1e-4",
         )
         .open(),
         check(
@@ -218,8 +218,9 @@ pub fn implied_mass_ratio(st_1: f64, st_2: f64) -> (f64, f64) {
 }
 
 /// Runs the Monte Carlo presets (Figs. 4.4–4.12, 5.2) and checks the
-/// published outcomes at 5 AU. `quick`: w* = 20 and one run per set, so that
-/// CI can afford it; the checks keep their tolerances.
+/// published outcomes at 5 AU. `quick`: w* = 20 (40 for the porosity track)
+/// and one run per set, so that CI can afford it; the checks keep their
+/// tolerances.
 pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> {
     use crate::physics::PhysicsError;
     use crate::physics::constants::YEAR;
@@ -242,7 +243,13 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
         let mut scene = crate::preset::resolve(name).map_err(|e| PhysicsError::Invalid(e.to_string()))?.scene;
         if quick {
             if let Some(run) = column_of(&mut scene) {
-                run.groups_per_decade = 20.0;
+                // The porosity check keeps its w* = 40: at 20 groups per decade
+                // the peak family cannot resolve the filling-factor minimum at
+                // the onset of compaction (a factor 3.4 from the track there,
+                // 2.6 at w* = 40).
+                if name != "mc-fig-5-2-porosity" {
+                    run.groups_per_decade = 20.0;
+                }
                 run.runs = 1;
             }
             if let SceneParams::KernelTests(k) = &mut scene {
@@ -361,20 +368,18 @@ pub fn monte_carlo(quick: bool) -> Result<MonteCarlo, crate::scene::SceneError> 
             4000f64.log10(),
             settled.log10(),
             0.15,
-            "\"after ~4000 yr a steady-state is reached\"; ours reaches the erosion barrier about 2x later (next row), while the steady state itself agrees (Fig. 4.11 rows)",
-        )
-        .open());
+            "\"after ~4000 yr a steady-state is reached\" (with Okuzumi et al.'s projected area; with pi a^2 ours settled only after ~6800 yr)",
+        ));
         if let Some(k) = r.history.iter().position(|q| q.zeta < 1.0) {
             let (t0, t1) = (r.history[k.saturating_sub(1)].t / YEAR, r.history[k].t / YEAR);
             checks.push(Check::new(
                 "Fig. 4.12",
                 "first erosion of the largest body (zeta < 1), v_eros = 20 m/s [yr]",
-                3200.0,
+                3400.0,
                 (t0 * t1).sqrt(),
                 200.0 + 0.5 * (t1 - t0),
-                "spread small \"during the first 3000 years\", first erosive collisions \"after 3400 years\"; plus half our sampling gap. Ours grows to the erosion barrier in about twice that time although the masses at Omega t_s = 1 agree (Figs. 4.4, 4.6)",
-            )
-            .open());
+                "first erosive collisions \"after 3400 years\", the spread small \"during the first 3000 years\" (the 400 yr between them halved, plus half our sampling gap); with pi a^2 for the drag ours came at ~6400 yr",
+            ));
         }
     }
     if let Some(snap) = eroded.first().and_then(first).and_then(|r| r.snapshots.last().cloned()) {

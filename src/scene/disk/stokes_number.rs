@@ -49,7 +49,8 @@ particle Reynolds numbers Re_p = 4av_dg/(v_th λ) > 1 the drag coefficient C_D =
     (1 < Re < 800) or 0.44 (4.10), where t_s = 2m/(C_D ρ_g v_dg A) depends on the velocity relative to \
 the gas and is found by iteration. Compact grains reach Ωt_s = 1 in the Epstein regime; D_f = 2.5 \
 aggregates switch to Stokes drag near Ωt_s ~ 1e-3 and to Newton drag before Ωt_s = 1. Dashed: \
-Epstein and Stokes drag only. The projected area is πa² (compact form).",
+Epstein and Stokes drag only. A is the orientation-averaged projected area of Okuzumi et al. (2009): \
+πa² for solid grains, about a third of it for hit-and-stick aggregates of 10⁴ monomers.",
         heavy: false,
     };
 

@@ -257,34 +257,70 @@ pub fn relative_velocity(
 ) -> RelativeVelocity {
     let t = env.temperature;
     let cs = env.sound_speed;
-    let eta_vk = env.eta_vk;
-    let omega = env.omega;
     let (s1, s2) = if p1.stokes >= p2.stokes { (p1.stokes, p2.stokes) } else { (p2.stokes, p1.stokes) };
     // Effective difference of the Stokes numbers including the dispersion.
     let diff = ((s1 - s2).powi(2) + (epsilon * s1).powi(2)).sqrt();
     let s2_eff = (s1 - diff).max(0.0);
     let brownian = (8.0 * K_B * t * (p1.mass + p2.mass) / (PI * p1.mass * p2.mass)).sqrt();
-    let vg = env.alpha.sqrt() * cs;
+    let (d1, d2) = (DriftTerms::of(env, s1), DriftTerms::of(env, s2_eff));
     let turbulence = match model {
-        TurbulenceModel::Thesis => {
-            let re = env.reynolds;
-            let st_eta = 1.0 / re.sqrt();
-            if s1 < st_eta {
-                vg * re.sqrt().sqrt() * diff
-            } else if s1 < 1.0 {
-                vg * 1.55 * s1.sqrt()
-            } else {
-                vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2_eff)).sqrt()
-            }
-        }
-        TurbulenceModel::OrmelCuzzi => ormel_cuzzi(vg, env.reynolds, s1, s2_eff),
+        TurbulenceModel::Thesis => thesis_turbulence(env, &d1, s2_eff, diff),
+        TurbulenceModel::OrmelCuzzi => ormel_cuzzi(env.alpha.sqrt() * cs, env.reynolds, s1, s2_eff),
     };
-    let hg = env.scale_height;
-    let settle = |st: f64| omega * st / (1.0 + st) * dust_scale_height(env.alpha, st) * hg;
-    let settling = (settle(s1) - settle(s2_eff)).abs();
-    let radial = (radial_drift(eta_vk, s1) - radial_drift(eta_vk, s2_eff)).abs();
-    let azimuthal = (eta_vk / (1.0 + s1 * s1) - eta_vk / (1.0 + s2_eff * s2_eff)).abs();
-    RelativeVelocity { brownian, turbulence, settling, radial, azimuthal }
+    RelativeVelocity {
+        brownian,
+        turbulence,
+        settling: (d1.settling - d2.settling).abs(),
+        radial: (d1.radial - d2.radial).abs(),
+        azimuthal: (d1.azimuthal - d2.azimuthal).abs(),
+    }
+}
+
+/// The terms of [`relative_velocity`] that depend on one Stokes number St
+/// alone (so that a caller comparing one particle with many can keep them):
+/// St, √St, and the settling speed at one dust scale height, the radial drift
+/// and the azimuthal gas-relative speed, m s⁻¹.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct DriftTerms {
+    /// Stokes number St.
+    pub stokes: f64,
+    /// √St.
+    pub sqrt_stokes: f64,
+    /// Settling speed at one dust scale height, m s⁻¹.
+    pub settling: f64,
+    /// Radial drift (5.8), m s⁻¹.
+    pub radial: f64,
+    /// Azimuthal speed relative to the gas, m s⁻¹.
+    pub azimuthal: f64,
+}
+
+impl DriftTerms {
+    /// The terms of Stokes number `st` at the midplane of `env`.
+    pub fn of(env: &Local, st: f64) -> DriftTerms {
+        DriftTerms {
+            stokes: st,
+            sqrt_stokes: st.sqrt(),
+            settling: env.omega * st / (1.0 + st) * dust_scale_height(env.alpha, st) * env.scale_height,
+            radial: radial_drift(env.eta_vk, st),
+            azimuthal: env.eta_vk / (1.0 + st * st),
+        }
+    }
+}
+
+/// The thesis's three-regime turbulent velocity (4.11) for the larger Stokes
+/// number's terms `d1`, the effective smaller Stokes number `s2_eff` and the
+/// effective difference `diff`, m s⁻¹.
+pub fn thesis_turbulence(env: &Local, d1: &DriftTerms, s2_eff: f64, diff: f64) -> f64 {
+    let vg = env.alpha.sqrt() * env.sound_speed;
+    let re = env.reynolds;
+    let s1 = d1.stokes;
+    if s1 < 1.0 / re.sqrt() {
+        vg * re.sqrt().sqrt() * diff
+    } else if s1 < 1.0 {
+        vg * 1.55 * d1.sqrt_stokes
+    } else {
+        vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2_eff)).sqrt()
+    }
 }
 
 /// The closed form of Ormel & Cuzzi (2007) for St₁ ≥ St₂ with V_g² = αc_s²,

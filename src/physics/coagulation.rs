@@ -27,9 +27,9 @@
 
 use super::PhysicsError;
 use super::aggregate::{
-    Aggregate, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, dust_scale_height, gas_compaction_filling,
-    gas_relative_velocity, gravity_compaction_filling, hit_and_stick_volume, outcome, radial_drift, relative_velocity,
-    stopping_time,
+    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, dust_scale_height,
+    gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling, hit_and_stick_volume, outcome,
+    radial_drift, relative_velocity, stopping_time, thesis_turbulence,
 };
 use super::constants::K_B;
 use super::disk::Local;
@@ -78,18 +78,7 @@ pub struct Props {
     pub scale_height: f64,
     /// The terms of the relative velocity that depend on this family alone,
     /// for the pairs in which it has the larger Stokes number.
-    drift: Drift,
-}
-
-/// Velocity terms of one Stokes number St (see [`relative_velocity`]): √St,
-/// the settling speed at one dust scale height, the radial drift and the
-/// azimuthal gas-relative speed, m s⁻¹ (√St dimensionless).
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Drift {
-    sqrt_stokes: f64,
-    settling: f64,
-    radial: f64,
-    azimuthal: f64,
+    drift: DriftTerms,
 }
 
 /// Collisional-compaction parameter b (Okuzumi et al. 2012).
@@ -115,32 +104,13 @@ impl Column {
         let diff = ((s1 - s2).powi(2) + (self.epsilon * s1).powi(2)).sqrt();
         let s2_eff = (s1 - diff).max(0.0);
         let brownian2 = 8.0 * K_B * env.temperature * (a.mass + b.mass) / (PI * a.mass * b.mass);
-        let vg = env.alpha.sqrt() * env.sound_speed;
-        let re = env.reynolds;
-        let turbulence = if s1 < 1.0 / re.sqrt() {
-            vg * re.sqrt().sqrt() * diff
-        } else if s1 < 1.0 {
-            vg * 1.55 * p1.props.drift.sqrt_stokes
-        } else {
-            vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2_eff)).sqrt()
-        };
-        let other = self.drift(s2_eff);
         let d1 = &p1.props.drift;
-        let settling = d1.settling - other.settling;
-        let radial = d1.radial - other.radial;
-        let azimuthal = d1.azimuthal - other.azimuthal;
+        let turbulence = thesis_turbulence(env, d1, s2_eff, diff);
+        let d2 = DriftTerms::of(env, s2_eff);
+        let settling = d1.settling - d2.settling;
+        let radial = d1.radial - d2.radial;
+        let azimuthal = d1.azimuthal - d2.azimuthal;
         (brownian2 + turbulence * turbulence + settling * settling + radial * radial + azimuthal * azimuthal).sqrt()
-    }
-
-    /// The velocity terms of Stokes number `st` alone.
-    fn drift(&self, st: f64) -> Drift {
-        let env = &self.env;
-        Drift {
-            sqrt_stokes: st.sqrt(),
-            settling: env.omega * st / (1.0 + st) * dust_scale_height(env.alpha, st) * env.scale_height,
-            radial: radial_drift(env.eta_vk, st),
-            azimuthal: env.eta_vk / (1.0 + st * st),
-        }
     }
 
     /// Filling factor of the product of a sticking collision after
@@ -207,7 +177,7 @@ impl Model for Column {
             radius: agg.radius(&self.monomer),
             stokes: st,
             scale_height: dust_scale_height(self.env.alpha, st) * self.env.scale_height,
-            drift: self.drift(st),
+            drift: DriftTerms::of(&self.env, st),
         }
     }
 

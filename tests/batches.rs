@@ -93,6 +93,44 @@ fn planetesimal_zone_converges_as_the_batch_count_doubles() {
     assert!((e500 / e250 - 1.0).abs() < 0.2, "250: {:.2} AU, 500: {:.2} AU", e250 / AU, e500 / AU);
 }
 
+/// The outer edge of planetesimal formation in Fig. 5.9's disk (0.2 M☉,
+/// Z₀ = 0.05, R_c = 30 AU), AU, converged in the batch count and the step:
+/// 2000 batches give 16.71 AU at Δln m = 0.05 and 16.66 AU at 0.025, 4000
+/// batches 16.74 AU at 0.05, 1000 batches 16.72 AU at 0.0125.
+const FIG_5_9_EDGE_AU: f64 = 16.7;
+
+/// Fig. 5.9's disk with `batches` batches and growth step `dlnm`.
+fn fig_5_9(batches: usize, dlnm: f64) -> BatchParams {
+    let mut p = BatchParams { batches, dlnm, ..BatchParams::default() };
+    p.disk.disk_mass = 0.2;
+    p.disk.metallicity = 0.05;
+    p.disk.r_c = 30.0;
+    p
+}
+
+#[test]
+fn zone_edge_approaches_the_converged_reference_as_the_step_halves() {
+    let coarse = params_run(&fig_5_9(1000, 0.1)).outermost_planetesimals() / AU;
+    let fine = params_run(&fig_5_9(1000, 0.05)).outermost_planetesimals() / AU;
+    assert!((fine / coarse - 1.0).abs() < 0.02, "1000 batches: {coarse:.3} AU at 0.1, {fine:.3} AU at 0.05");
+    for edge in [coarse, fine] {
+        assert!((edge / FIG_5_9_EDGE_AU - 1.0).abs() < 0.025, "{edge:.3} AU against {FIG_5_9_EDGE_AU} AU");
+    }
+}
+
+/// The reference itself (about a minute on two cores; `.ci/run` runs it).
+#[test]
+#[ignore]
+fn zone_edge_reference_is_converged_in_batches_and_step() {
+    let base = params_run(&fig_5_9(2000, 0.05)).outermost_planetesimals() / AU;
+    let finer = params_run(&fig_5_9(2000, 0.025)).outermost_planetesimals() / AU;
+    let fewer = params_run(&fig_5_9(1000, 0.05)).outermost_planetesimals() / AU;
+    for (what, edge) in [("2000 batches, 0.05", base), ("2000 batches, 0.025", finer), ("1000 batches, 0.05", fewer)] {
+        assert!((edge / FIG_5_9_EDGE_AU - 1.0).abs() < 0.01, "{what}: {edge:.3} AU against {FIG_5_9_EDGE_AU} AU");
+    }
+    assert!((finer / base - 1.0).abs() < 0.02 && (fewer / base - 1.0).abs() < 0.02);
+}
+
 #[test]
 fn erosion_at_20_m_s_prevents_direct_planetesimal_formation() {
     let r = params_run(&BatchParams { v_eros: 20.0, ..BatchParams::default() });
@@ -177,6 +215,10 @@ fn bad_parameters_are_refused_with_a_clear_message() {
     p.disk.disk_mass = -0.01;
     let e = p.run(&Progress::default()).expect_err("negative mass").to_string();
     assert!(e.contains("mass"), "{e}");
+
+    let p = BatchParams { dlnm: 0.0, ..BatchParams::default() };
+    let e = p.run(&Progress::default()).expect_err("zero step").to_string();
+    assert!(e.contains("dlnm"), "{e}");
 
     let mut s = SceneParams::default_for("planetesimal-yield").expect("scene");
     let e = s.set("n_mass", "0").expect_err("empty sweep").to_string();

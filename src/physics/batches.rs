@@ -108,6 +108,10 @@ impl BatchConfig {
         if self.r_in <= self.model.inner_edge {
             return bad("r_in", self.r_in, "must lie outside the inner edge");
         }
+        let dlnm = self.model.dlnm;
+        if !(dlnm > 0.0 && dlnm <= 1.0) {
+            return bad("dlnm", dlnm, "need 0 < dlnm <= 1");
+        }
         if !(0.0..1.0).contains(&self.offset) {
             return bad("offset", self.offset, "need 0 <= offset < 1");
         }

@@ -72,8 +72,12 @@ pub struct GrowthModel {
     pub dlnm: f64,
     /// Largest step as a fraction of the drift time R/|Ṙ| (0.05, Sect. 5.2.5).
     pub drift_step: f64,
-    /// Advance mass and radius with the rates at the middle of the step
-    /// (second order) instead of its start (first order, the thesis's scheme).
+    /// The second-order scheme: advance mass and radius with the rates at
+    /// the middle of the step (mass, radius and filling factor there), end
+    /// the step exactly at the planetesimal mass or the inner edge, and hold
+    /// the first-regime growth time at its value where the regime is
+    /// entered. False: the thesis's first-order scheme (rates at the start of
+    /// the step, the held value where a step first lands in the regime).
     pub midpoint: bool,
 }
 
@@ -90,6 +94,18 @@ struct Rates {
     first_regime: bool,
     /// |Ṙ|, m s⁻¹.
     v_drift: f64,
+}
+
+/// The filling factor after a step and what set it.
+struct Filling {
+    /// Filling factor.
+    phi: f64,
+    /// Collisional compaction onset: (mass, φ, E/N).
+    onset: Option<(f64, f64, f64)>,
+    /// Gas-pressure compaction sets it.
+    gas: bool,
+    /// Self-gravity compaction sets it.
+    gravity: bool,
 }
 
 /// One point of a track.
@@ -185,6 +201,7 @@ impl GrowthModel {
             filling: 1.0,
             onset: None,
             frozen_t_grow: None,
+            previous: None,
             markers: Markers::default(),
             halted_by: None,
         }
@@ -225,7 +242,6 @@ impl GrowthModel {
     ) -> (TrackPoint, Option<Stop>) {
         let mono = self.monomer;
         let m0 = mono.mass();
-        let e_roll = mono.rolling_energy();
         let (m, phi, r) = (s.mass, s.filling, s.r);
         let start = self.rates(m, phi, r, sigma_d.map(|f| f(s.t, r)));
         let Rates { env, stopping, stokes: st, radius: a, v_rel: rv, first_regime, v_drift, .. } = start;
@@ -242,10 +258,20 @@ impl GrowthModel {
         // particles grow by sweeping up smaller ones at a roughly constant
         // rate (Sect. 4.5): keep t_grow at its value on entering that regime.
         if first_regime && t_grow.is_finite() {
-            t_grow = *s.frozen_t_grow.get_or_insert(t_grow);
+            let held = match (s.frozen_t_grow, s.previous) {
+                (Some(held), _) => held,
+                // Entered during the last step: the value where it was entered.
+                (None, Some(before)) if self.midpoint => {
+                    self.entry_growth_time(before, [s.t, m, phi, r], sigma_d).unwrap_or(t_grow)
+                }
+                (None, _) => t_grow,
+            };
+            s.frozen_t_grow = Some(held);
+            t_grow = held;
         } else {
             s.frozen_t_grow = None;
         }
+        s.previous = if first_regime { None } else { Some([s.t, m, phi, r]) };
         let th = &self.thresholds;
         let halted = if v >= th.v_frag {
             s.halted_by = Some("fragmentation");
@@ -298,75 +324,143 @@ impl GrowthModel {
         if self.drift {
             dt = dt.min(self.drift_step * t_drift);
         }
-        // Rates over the step: at its start, or at its middle.
+        // Rates over the step: at its start, or at its middle (with the mass,
+        // radius and filling factor there).
         let (mut growth_time, mut drift_speed) = (t_grow, v_drift);
         if self.midpoint && dt > 0.0 {
             let half = 0.5 * dt;
             let m_h = if halted { m } else { m * (half / t_grow).exp() };
             let r_h = if self.drift { r - v_drift * half } else { r };
             if r_h > 0.0 {
-                let mid = self.rates(m_h, phi, r_h, sigma_d.map(|f| f(s.t + half, r_h)));
+                let phi_h = if halted { phi } else { self.filling(s.onset, m, phi, v, m_h, r_h, &env).phi };
+                let mid = self.rates(m_h, phi_h, r_h, sigma_d.map(|f| f(s.t + half, r_h)));
                 growth_time = match s.frozen_t_grow {
                     Some(frozen) if mid.first_regime => frozen,
                     _ => mid.t_grow,
                 };
                 drift_speed = mid.v_drift;
             }
+            // End the step where the particle reaches the planetesimal mass
+            // or the inner edge, not beyond.
+            if !halted && m * (dt / growth_time).exp() > self.planetesimal_mass {
+                dt = growth_time * (self.planetesimal_mass / m).ln();
+            }
+            if self.drift && r - drift_speed * dt < self.inner_edge {
+                dt = (r - self.inner_edge) / drift_speed;
+            }
         }
         s.t += dt;
         if self.drift {
             s.r -= drift_speed * dt;
-            if s.r <= self.inner_edge {
+            let landed = if self.midpoint { 1.0 + 1e-12 } else { 1.0 };
+            if s.r <= self.inner_edge * landed {
                 return (point, Some(Stop::InnerEdge));
             }
         }
         if halted {
             return (point, None);
         }
-        let m_new = m * (dt / growth_time).exp();
-        let n = m_new / m0;
-        let phi_hs = n.powf(-0.5).min(1.0);
-        s.filling = match self.porosity {
-            Porosity::Compact => 1.0,
-            Porosity::Collisional | Porosity::Full => {
-                let e_per_n = m * v * v / 4.0 / (m / m0);
-                let collisional = match s.onset {
-                    None if m * v * v / 4.0 > 3.0 * super::monomer::COMPACTION_B * e_roll => {
-                        s.onset = Some((m, phi, e_per_n));
-                        s.markers.collisional = Some([m, phi]);
-                        phi
-                    }
-                    None => phi_hs,
-                    Some((mc, phic, ec)) => {
-                        (phic * (e_per_n / ec).powf(0.3) * (n / (mc / m0)).powf(-0.2)).max(phi_hs).min(1.0)
-                    }
-                };
-                if self.porosity == Porosity::Full {
-                    let env2 = if self.drift { self.disk.local(s.r) } else { env };
-                    let gas = {
-                        // Only solve for the gas-compaction φ when the gas can compress.
-                        let trial = Aggregate { mass: m_new, filling: collisional };
-                        let ts = stopping_time(&env2, &mono, &trial, self.newton).time;
-                        let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
-                            / (PI * trial.radius(&mono).powi(2) * ts);
-                        let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
-                        if p_c < p_gas { gas_compaction_filling(&env2, &mono, m_new, self.newton, phi) } else { 0.0 }
-                    };
-                    let grav = gravity_compaction_filling(&mono, m_new);
-                    if gas > collisional && gas >= grav && s.markers.gas.is_none() {
-                        s.markers.gas = Some([m, phi]);
-                    }
-                    if grav > collisional && grav > gas && s.markers.gravity.is_none() {
-                        s.markers.gravity = Some([m, phi]);
-                    }
-                    collisional.max(gas).max(grav).min(1.0)
-                } else {
-                    collisional
-                }
-            }
+        let m_new = if self.midpoint {
+            (m * (dt / growth_time).exp()).min(self.planetesimal_mass)
+        } else {
+            m * (dt / growth_time).exp()
         };
+        let next = self.filling(s.onset, m, phi, v, m_new, s.r, &env);
+        if next.onset != s.onset {
+            s.markers.collisional = Some([m, phi]);
+        }
+        if next.gas && s.markers.gas.is_none() {
+            s.markers.gas = Some([m, phi]);
+        }
+        if next.gravity && s.markers.gravity.is_none() {
+            s.markers.gravity = Some([m, phi]);
+        }
+        s.onset = next.onset;
+        s.filling = next.phi;
         s.mass = m_new;
         (point, None)
+    }
+
+    /// The filling factor after growth from mass `m` (kg, filling factor
+    /// `phi`, same-size velocity `v`, m s⁻¹) to `m_new` at radius `r_new` (m),
+    /// given the collisional compaction onset so far; `env` is the
+    /// environment at the start, used when the particle does not drift.
+    #[allow(clippy::too_many_arguments)]
+    fn filling(
+        &self,
+        onset: Option<(f64, f64, f64)>,
+        m: f64,
+        phi: f64,
+        v: f64,
+        m_new: f64,
+        r_new: f64,
+        env: &super::disk::Local,
+    ) -> Filling {
+        let mono = self.monomer;
+        let m0 = mono.mass();
+        let e_roll = mono.rolling_energy();
+        let n = m_new / m0;
+        let phi_hs = n.powf(-0.5).min(1.0);
+        let mut out = Filling { phi: 1.0, onset, gas: false, gravity: false };
+        if self.porosity == Porosity::Compact {
+            return out;
+        }
+        let e_per_n = m * v * v / 4.0 / (m / m0);
+        let collisional = match onset {
+            None if m * v * v / 4.0 > 3.0 * super::monomer::COMPACTION_B * e_roll => {
+                out.onset = Some((m, phi, e_per_n));
+                phi
+            }
+            None => phi_hs,
+            Some((mc, phic, ec)) => (phic * (e_per_n / ec).powf(0.3) * (n / (mc / m0)).powf(-0.2)).max(phi_hs).min(1.0),
+        };
+        if self.porosity != Porosity::Full {
+            out.phi = collisional;
+            return out;
+        }
+        let env2 = if self.drift { self.disk.local(r_new) } else { *env };
+        let gas = {
+            // Only solve for the gas-compaction φ when the gas can compress.
+            let trial = Aggregate { mass: m_new, filling: collisional };
+            let ts = stopping_time(&env2, &mono, &trial, self.newton).time;
+            let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
+                / (PI * trial.radius(&mono).powi(2) * ts);
+            let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
+            if p_c < p_gas { gas_compaction_filling(&env2, &mono, m_new, self.newton, phi) } else { 0.0 }
+        };
+        let grav = gravity_compaction_filling(&mono, m_new);
+        out.gas = gas > collisional && gas >= grav;
+        out.gravity = grav > collisional && grav > gas;
+        out.phi = collisional.max(gas).max(grav).min(1.0);
+        out
+    }
+
+    /// The growth time where a step from `before` to `after` (each
+    /// [t, m, φ, R]) entered the first turbulence regime, found by bisection
+    /// in ln m with t, φ and R interpolated alongside, so the held value does
+    /// not depend on where the steps happen to fall. `None` when the start is
+    /// already in the regime or a rate is not finite.
+    fn entry_growth_time(
+        &self,
+        before: [f64; 4],
+        after: [f64; 4],
+        sigma_d: Option<&dyn Fn(f64, f64) -> f64>,
+    ) -> Option<f64> {
+        let at = |w: f64| {
+            let lerp = |k: usize| before[k] + w * (after[k] - before[k]);
+            let (t, r) = (lerp(0), lerp(3));
+            let m = before[1] * (after[1] / before[1]).powf(w);
+            self.rates(m, lerp(2), r, sigma_d.map(|f| f(t, r)))
+        };
+        if at(0.0).first_regime {
+            return None;
+        }
+        let (mut lo, mut hi) = (0.0, 1.0);
+        for _ in 0..40 {
+            let mid = 0.5 * (lo + hi);
+            if at(mid).first_regime { hi = mid } else { lo = mid }
+        }
+        Some(at(hi).t_grow).filter(|t| t.is_finite())
     }
 
     /// Runs a track from monomers at radius `r0` (m) for `t_end` seconds.
@@ -406,6 +500,8 @@ pub struct GrowthState {
     onset: Option<(f64, f64, f64)>,
     /// Growth time held in the first turbulence regime, s.
     frozen_t_grow: Option<f64>,
+    /// The last evaluated state outside the first turbulence regime: [t, m, φ, R].
+    previous: Option<[f64; 4]>,
     /// Turning points reached so far.
     pub markers: Markers,
     /// Why growth was last halted.

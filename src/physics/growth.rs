@@ -327,6 +327,7 @@ impl GrowthModel {
         // Rates over the step: at its start, or at its middle (with the mass,
         // radius and filling factor there).
         let (mut growth_time, mut drift_speed) = (t_grow, v_drift);
+        let (mut lands, mut leaves) = (false, false);
         if self.midpoint && dt > 0.0 {
             let half = 0.5 * dt;
             let m_h = if halted { m } else { m * (half / t_grow).exp() };
@@ -342,25 +343,28 @@ impl GrowthModel {
             }
             // End the step where the particle reaches the planetesimal mass
             // or the inner edge, not beyond.
-            if !halted && m * (dt / growth_time).exp() > self.planetesimal_mass {
+            if !halted && m * (dt / growth_time).exp() >= self.planetesimal_mass {
                 dt = growth_time * (self.planetesimal_mass / m).ln();
+                lands = true;
             }
-            if self.drift && r - drift_speed * dt < self.inner_edge {
+            if self.drift && r - drift_speed * dt <= self.inner_edge {
                 dt = (r - self.inner_edge) / drift_speed;
+                leaves = true;
             }
         }
         s.t += dt;
         if self.drift {
-            s.r -= drift_speed * dt;
-            let landed = if self.midpoint { 1.0 + 1e-12 } else { 1.0 };
-            if s.r <= self.inner_edge * landed {
+            s.r = if leaves { self.inner_edge } else { s.r - drift_speed * dt };
+            if s.r <= self.inner_edge {
                 return (point, Some(Stop::InnerEdge));
             }
         }
         if halted {
             return (point, None);
         }
-        let m_new = if self.midpoint {
+        let m_new = if lands && !leaves {
+            self.planetesimal_mass
+        } else if self.midpoint {
             (m * (dt / growth_time).exp()).min(self.planetesimal_mass)
         } else {
             m * (dt / growth_time).exp()

@@ -54,18 +54,26 @@ fn ensemble(batches: usize, finer: f64) -> (f64, [(f64, f64); 3]) {
 fn main() {
     println!("{} threads", rayon::current_num_threads());
     println!("Fig. 5.6 disk (porous, perfect sticking, 1e6 yr), each over {} grid offsets (mean ± sd)", OFFSETS.len());
-    let (t_ref, [e_ref, q_ref, f_ref]) = ensemble(2000, 4.0);
+    let (t_ref, [e_ref, q_ref, f_ref]) = ensemble(2000, 8.0);
     println!(
-        "  reference, 2000 batches, steps x4 finer ({t_ref:.2} s per run): edge {:.2} ± {:.2} AU, \
+        "  reference, 2000 batches, steps x8 finer ({t_ref:.2} s per run): edge {:.2} ± {:.2} AU, \
          90 % of the mass inside {:.2} ± {:.2} AU, converted {:.4} ± {:.4}",
         e_ref.0, e_ref.1, q_ref.0, q_ref.1, f_ref.0, f_ref.1
     );
     println!(
         "  batches  steps  time/run [s]   edge [AU]       d(edge)   r_90 [AU]      d(r_90)   converted         d(conv)"
     );
-    for (batches, finer) in
-        [(125, 1.0), (250, 1.0), (250, 2.0), (250, 4.0), (500, 1.0), (1000, 1.0), (1000, 2.0), (2000, 1.0)]
-    {
+    for (batches, finer) in [
+        (125, 1.0),
+        (250, 1.0),
+        (250, 4.0),
+        (500, 1.0),
+        (1000, 1.0),
+        (1000, 2.0),
+        (1000, 4.0),
+        (2000, 1.0),
+        (2000, 4.0),
+    ] {
         let (t, [e, q, f]) = ensemble(batches, finer);
         println!(
             "  {batches:>7}  {:>5}  {t:>12.3}   {:.2} ± {:.2}   {:>+6.1}%   {:.2} ± {:.2}   {:>+6.1}%   {:.4} ± {:.4}   {:>+.4}",

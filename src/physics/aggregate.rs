@@ -259,9 +259,8 @@ pub fn relative_velocity(
     let cs = env.sound_speed;
     let (s1, s2) = if p1.stokes >= p2.stokes { (p1.stokes, p2.stokes) } else { (p2.stokes, p1.stokes) };
     // Effective difference of the Stokes numbers including the dispersion.
-    let diff = ((s1 - s2).powi(2) + (epsilon * s1).powi(2)).sqrt();
-    let s2_eff = (s1 - diff).max(0.0);
-    let brownian = (8.0 * K_B * t * (p1.mass + p2.mass) / (PI * p1.mass * p2.mass)).sqrt();
+    let (diff, s2_eff) = effective_difference(s1, s2, epsilon);
+    let brownian = brownian_squared(t, p1.mass, p2.mass).sqrt();
     let (d1, d2) = (DriftTerms::of(env, s1), DriftTerms::of(env, s2_eff));
     let turbulence = match model {
         TurbulenceModel::Thesis => thesis_turbulence(env, &d1, s2_eff, diff),
@@ -274,6 +273,20 @@ pub fn relative_velocity(
         radial: (d1.radial - d2.radial).abs(),
         azimuthal: (d1.azimuthal - d2.azimuthal).abs(),
     }
+}
+
+/// For Stokes numbers St₁ ≥ St₂ and the dispersion ε of the mass-to-area
+/// ratio: the effective difference [(St₁ − St₂)² + (εSt₁)²]^{1/2} and the
+/// effective smaller Stokes number St₁ minus it (at least 0).
+pub fn effective_difference(s1: f64, s2: f64, epsilon: f64) -> (f64, f64) {
+    let diff = ((s1 - s2).powi(2) + (epsilon * s1).powi(2)).sqrt();
+    (diff, (s1 - diff).max(0.0))
+}
+
+/// Square of the Brownian relative velocity 8k_BT(m₁ + m₂)/(πm₁m₂) at
+/// temperature `t` (K) of masses `m1`, `m2` (kg), m² s⁻².
+pub fn brownian_squared(t: f64, m1: f64, m2: f64) -> f64 {
+    8.0 * K_B * t * (m1 + m2) / (PI * m1 * m2)
 }
 
 /// The terms of [`relative_velocity`] that depend on one Stokes number St
@@ -519,6 +532,8 @@ mod tests {
         // A solid grain keeps πa² exactly; the two BCCA fits meet at N = 16.
         let solid = Aggregate { mass: 10.0 * m0, filling: 1.0 };
         assert_eq!(solid.area(&mono), PI * solid.radius(&mono).powi(2));
+        // The exponent is the hit-and-stick rule's own.
+        assert!((BCCA_EXPONENT - hit_and_stick_volume(1.0, 1.0).log2() / 3.0).abs() < 1e-8);
         let below = bcca_area(16.0, 1.0) / 16.0;
         let above = bcca_area(16.0 * (1.0 + 1e-12), 1.0) / 16.0;
         assert!((below / above - 1.0).abs() < 0.005, "{below} {above}");

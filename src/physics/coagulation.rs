@@ -27,11 +27,10 @@
 
 use super::PhysicsError;
 use super::aggregate::{
-    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, dust_scale_height,
-    gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling, hit_and_stick_volume, outcome,
-    radial_drift, relative_velocity, stopping_time, thesis_turbulence,
+    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, brownian_squared,
+    dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
+    hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time, thesis_turbulence,
 };
-use super::constants::K_B;
 use super::disk::Local;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Settings};
 use rayon::prelude::*;
@@ -101,9 +100,8 @@ impl Column {
         let env = &self.env;
         let (p1, p2) = if a.props.stokes >= b.props.stokes { (a, b) } else { (b, a) };
         let (s1, s2) = (p1.props.stokes, p2.props.stokes);
-        let diff = ((s1 - s2).powi(2) + (self.epsilon * s1).powi(2)).sqrt();
-        let s2_eff = (s1 - diff).max(0.0);
-        let brownian2 = 8.0 * K_B * env.temperature * (a.mass + b.mass) / (PI * a.mass * b.mass);
+        let (diff, s2_eff) = effective_difference(s1, s2, self.epsilon);
+        let brownian2 = brownian_squared(env.temperature, a.mass, b.mass);
         let d1 = &p1.props.drift;
         let turbulence = thesis_turbulence(env, d1, s2_eff, diff);
         let d2 = DriftTerms::of(env, s2_eff);

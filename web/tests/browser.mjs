@@ -358,10 +358,17 @@ try {
     await page.goto(base + "?preset=ice-bounce-8ms");
     await page.waitForFunction(() => typeof window.grainscope?.busy === "function", null, { timeout: 60_000 });
     await settle(page);
-    const [chooser] = await Promise.all([
-      page.waitForEvent("filechooser", { timeout: 10_000 }).catch(() => null),
-      page.mouse.click(OPEN_BUTTON.x, OPEN_BUTTON.y),
-    ]);
+    // The pointer rests on the button for a frame before the click, as a
+    // user's would; a click that a busy frame missed is tried again.
+    let chooser = null;
+    for (let attempt = 0; attempt < 3 && chooser === null; attempt++) {
+      await page.mouse.move(OPEN_BUTTON.x, OPEN_BUTTON.y);
+      await page.waitForTimeout(300);
+      [chooser] = await Promise.all([
+        page.waitForEvent("filechooser", { timeout: 10_000 }).catch(() => null),
+        page.mouse.click(OPEN_BUTTON.x, OPEN_BUTTON.y),
+      ]);
+    }
     if (chooser === null) {
       await page.screenshot({ path: path.join(out, "file-picker-failed.png") });
       throw new Error(`no file picker opened (status: ${await page.evaluate(() => window.grainscope.status())})`);

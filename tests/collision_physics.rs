@@ -2,7 +2,7 @@
 //! limits, conservation and stability over the documented ranges.
 
 use grainscope::physics::collision::{
-    Options, Outcome, Setup, collide, restitution, sticking_search, sticking_velocity,
+    Options, Outcome, Setup, collide, restitution, sticking_search, sticking_search_near, sticking_velocity,
 };
 use grainscope::physics::contact::e_independent;
 use grainscope::physics::plasticity::{e_plastic, yield_velocity};
@@ -304,4 +304,39 @@ fn sticking_search_agrees_with_bisection_in_fewer_collisions() {
         assert_eq!(collide(&s, hi, &opts()).expect("collides").outcome, Outcome::Bounce);
         assert!(search.bounces.iter().all(|b| b[0] >= hi && b[1] > 0.0));
     }
+}
+
+#[test]
+fn a_search_from_a_guess_finds_the_same_sticking_velocity() {
+    for (t_vis, gamma) in [(1e-11, 0.74), (1e-14, 0.74), (1e-10, 0.74), (1e-11, 0.1)] {
+        let mut s = ice();
+        s.t_vis = t_vis;
+        s.pair.surface_energy = gamma;
+        let from_vc = sticking_search(&s, &opts(), 1e-3).expect("search");
+        // A guess as good as a neighbouring radius gives, a poor one, and one
+        // on the wrong side by a factor of 20.
+        for miss in [1.0005, 0.7, 20.0] {
+            let near = sticking_search_near(&s, &opts(), 1e-3, from_vc.velocity * miss).expect("search");
+            assert!(
+                (near.velocity / from_vc.velocity - 1.0).abs() <= 1e-3,
+                "T_vis {t_vis}, γ {gamma}, guess ×{miss}: {} vs {}",
+                near.velocity,
+                from_vc.velocity
+            );
+            let [lo, hi] = near.bracket;
+            assert!(hi / lo - 1.0 <= 1e-3);
+            assert_eq!(collide(&s, lo, &opts()).expect("collides").outcome, Outcome::Stick);
+            assert_eq!(collide(&s, hi, &opts()).expect("collides").outcome, Outcome::Bounce);
+            if miss == 1.0005 {
+                assert!(
+                    near.evaluations <= 4 && near.evaluations < from_vc.evaluations,
+                    "T_vis {t_vis}, γ {gamma}: {} collisions from a close guess, {} from v_c",
+                    near.evaluations,
+                    from_vc.evaluations
+                );
+            }
+        }
+    }
+    assert!(sticking_search_near(&ice(), &opts(), 1e-3, f64::NAN).is_err());
+    assert!(sticking_search_near(&ice(), &opts(), 1e-3, -1.0).is_err());
 }

@@ -575,6 +575,33 @@ pub fn sticking_velocity(setup: &Setup, opts: &Options, rel: f64) -> Result<f64,
 /// the search never needs more than twice the collisions of bisection; on
 /// the reference ice set it needs 7 instead of 17 at `rel` = 10⁻⁴.
 pub fn sticking_search(setup: &Setup, opts: &Options, rel: f64) -> Result<StickingSearch, PhysicsError> {
+    search_from(setup, opts, rel, setup.pair.jkr_sticking_velocity(), 2.0)
+}
+
+/// [`sticking_search`] from a guess of v_s (m/s), for example the sticking
+/// velocity of a neighbouring radius: the bracket is sought with a first
+/// step of 2·`rel` that squares while it misses (at `rel` = 10⁻³: 0.2 %,
+/// 0.4 %, 0.8 %, 1.6 %, 3.2 %, …), so a guess within `rel` costs three
+/// collisions, and one 30 % off nine.
+pub fn sticking_search_near(
+    setup: &Setup,
+    opts: &Options,
+    rel: f64,
+    guess: f64,
+) -> Result<StickingSearch, PhysicsError> {
+    super::positive("guess", guess)?;
+    search_from(setup, opts, rel, guess, 1.0 + 2.0 * rel)
+}
+
+/// The search of [`sticking_search`] starting at `start` with bracketing
+/// steps of `factor`, squared after each miss when it is below 2.
+fn search_from(
+    setup: &Setup,
+    opts: &Options,
+    rel: f64,
+    start: f64,
+    mut factor: f64,
+) -> Result<StickingSearch, PhysicsError> {
     setup.validate()?;
     super::positive("rel", rel)?;
     let opts = Options { record: false, follow_after_stick: 0.0, ..*opts };
@@ -592,12 +619,19 @@ pub fn sticking_search(setup: &Setup, opts: &Options, rel: f64) -> Result<Sticki
         Ok(false)
     };
     let (v_min, v_max) = (1e-6, 1e4);
-    let mut v = setup.pair.jkr_sticking_velocity().clamp(v_min, v_max);
+    let mut v = start.clamp(v_min, v_max);
+    let mut widen = || {
+        let f = factor;
+        if factor < 2.0 {
+            factor *= factor;
+        }
+        f
+    };
     let (mut lo, mut hi);
     if try_v(v, &mut bounces)? {
         lo = v;
         loop {
-            v *= 2.0;
+            v *= widen();
             if v > v_max {
                 return Ok(StickingSearch { velocity: f64::INFINITY, bracket: [lo, lo], bounces, evaluations });
             }
@@ -610,7 +644,7 @@ pub fn sticking_search(setup: &Setup, opts: &Options, rel: f64) -> Result<Sticki
     } else {
         hi = v;
         loop {
-            v *= 0.5;
+            v /= widen();
             if v < v_min {
                 return Ok(StickingSearch { velocity: 0.0, bracket: [hi, hi], bounces, evaluations });
             }

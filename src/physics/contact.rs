@@ -157,11 +157,15 @@ impl Pair {
 /// non-finite or negative b, or where the spheres creep apart for longer than
 /// 50(1 + b) scaled times (b ≳ 10, e < 10⁻⁸).
 ///
-/// Classic fourth-order Runge–Kutta with step 10⁻³ (a Hertz collision lasts
-/// 3.22): within 2 × 10⁻⁶ of an adaptive eighth-order integration for
-/// 10⁻³ ≤ b ≤ 5, in about 0.1 ms. Hand-written because the equation is scalar
-/// and the square root at the ends suits a fixed small step better than an
-/// error-controlled one.
+/// Dormand–Prince 5(4) steps under error control (10⁻¹⁰ per step, relative
+/// to x + 10⁻³ and to 1 + |x'|): the square roots make the force non-smooth
+/// where x = 0, so steps shrink towards both ends of contact and are long in
+/// between. The end is the zero of x, found by secant iteration on the length
+/// of the last step (x'' vanishes there, so the speed hardly depends on it).
+/// Within 5 × 10⁻⁹ of the same integration at tolerance 10⁻¹⁴ for
+/// 10⁻⁴ ≤ b ≤ 20, in about 20 µs. Hand-written: a two-component equation
+/// that ends on an event, which a general ODE crate would wrap in more code
+/// than the step itself.
 pub fn viscoelastic_restitution(b: f64) -> f64 {
     if b == 0.0 {
         return 1.0;
@@ -169,27 +173,89 @@ pub fn viscoelastic_restitution(b: f64) -> f64 {
     if !(b.is_finite() && b > 0.0) {
         return 0.0;
     }
-    const H: f64 = 1e-3;
-    let force = |x: f64, v: f64| {
-        let x = x.max(0.0);
-        let r = x.sqrt();
-        -(x * r + b * r * v)
+    viscoelastic_restitution_at(b, VISCOELASTIC_TOLERANCE)
+}
+
+/// Error tolerance (per step, on x and x') of [`viscoelastic_restitution`].
+const VISCOELASTIC_TOLERANCE: f64 = 1e-10;
+
+/// One Dormand–Prince 5(4) step of x'' = −(x^{3/2} + b x^{1/2} x') from
+/// (x, v) with step h: the fifth-order state and the difference to the
+/// embedded fourth-order one.
+fn dopri_step(b: f64, (x, v): (f64, f64), h: f64) -> ((f64, f64), (f64, f64)) {
+    let f = |x: f64, v: f64| {
+        let r = x.max(0.0).sqrt();
+        (v, -(x.max(0.0) * r + b * r * v))
     };
-    let (mut x, mut v) = (0.0_f64, 1.0_f64);
-    let steps = (50.0 * (1.0 + b) / H).ceil() as usize;
-    for step in 0..steps {
-        let (k1x, k1v) = (v, force(x, v));
-        let (k2x, k2v) = (v + 0.5 * H * k1v, force(x + 0.5 * H * k1x, v + 0.5 * H * k1v));
-        let (k3x, k3v) = (v + 0.5 * H * k2v, force(x + 0.5 * H * k2x, v + 0.5 * H * k2v));
-        let (k4x, k4v) = (v + H * k3v, force(x + H * k3x, v + H * k3v));
-        let xn = x + H / 6.0 * (k1x + 2.0 * k2x + 2.0 * k3x + k4x);
-        let vn = v + H / 6.0 * (k1v + 2.0 * k2v + 2.0 * k3v + k4v);
-        if step > 0 && xn <= 0.0 {
-            // The approach crosses zero within this step: interpolate the speed.
-            let s = x / (x - xn);
-            return (-(v + s * (vn - v))).max(0.0);
+    const A: [[f64; 6]; 6] = [
+        [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
+        [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
+        [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
+        [19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0, 0.0, 0.0],
+        [9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0, 0.0],
+        [35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0],
+    ];
+    // Fifth-order weights minus the embedded fourth-order ones.
+    const E: [f64; 7] =
+        [71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0];
+    let mut k = [(0.0, 0.0); 7];
+    k[0] = f(x, v);
+    for stage in 1..7 {
+        let (mut xs, mut vs) = (x, v);
+        for (j, a) in A[stage - 1].iter().enumerate().take(stage) {
+            xs += h * a * k[j].0;
+            vs += h * a * k[j].1;
         }
-        (x, v) = (xn, vn);
+        k[stage] = f(xs, vs);
+    }
+    // The last stage is taken at the new state (first same as last).
+    let (mut xn, mut vn) = (x, v);
+    for (j, a) in A[5].iter().enumerate() {
+        xn += h * a * k[j].0;
+        vn += h * a * k[j].1;
+    }
+    let (mut ex, mut ev) = (0.0, 0.0);
+    for (j, e) in E.iter().enumerate() {
+        ex += h * e * k[j].0;
+        ev += h * e * k[j].1;
+    }
+    ((xn, vn), (ex, ev))
+}
+
+/// [`viscoelastic_restitution`] at error tolerance `tol` (b > 0).
+fn viscoelastic_restitution_at(b: f64, tol: f64) -> f64 {
+    let t_max = 50.0 * (1.0 + b);
+    let (mut t, mut y, mut h) = (0.0, (0.0_f64, 1.0_f64), 1e-3_f64);
+    let mut started = false;
+    while t < t_max {
+        let (yn, (ex, ev)) = dopri_step(b, y, h);
+        let err = (ex / (tol * (1e-3 + y.0.abs().max(yn.0.abs())))).hypot(ev / (tol * (1.0 + y.1.abs())));
+        if err.is_nan() || err > 1.0 {
+            h *= (0.9 * err.powf(-0.2)).clamp(0.1, 0.5);
+            continue;
+        }
+        if started && yn.0 <= 0.0 {
+            // The approach crosses zero within this step: the step length
+            // that ends on x = 0, by secant iteration from (0, x) and (h, x_n).
+            let (mut lo, mut hi) = ((0.0, y.0), (h, yn.0));
+            let mut end = yn;
+            for _ in 0..8 {
+                let hs = lo.0 - lo.1 * (hi.0 - lo.0) / (hi.1 - lo.1);
+                if !(hs > lo.0 && hs < hi.0) {
+                    break;
+                }
+                end = dopri_step(b, y, hs).0;
+                if end.0.abs() <= 1e-14 * (hi.0 - lo.0) {
+                    break;
+                }
+                if end.0 > 0.0 { lo = (hs, end.0) } else { hi = (hs, end.0) }
+            }
+            return (-end.1).max(0.0);
+        }
+        started = true;
+        t += h;
+        y = yn;
+        h *= (0.9 * err.max(1e-10).powf(-0.2)).min(5.0);
     }
     0.0
 }
@@ -245,6 +311,21 @@ mod tests {
         let es: Vec<f64> = [0.01, 0.1, 0.5, 1.0, 2.0, 5.0].iter().map(|&b| viscoelastic_restitution(b)).collect();
         assert!(es.windows(2).all(|w| w[1] < w[0]), "{es:?}");
         assert!(es[5] > 0.0 && es[5] < 0.01, "{es:?}");
+    }
+
+    #[test]
+    fn viscoelastic_restitution_is_converged_in_its_tolerance() {
+        // Against the same integration 10⁴ times tighter, over the damping
+        // from the nearly elastic to the nearly stuck.
+        for i in 0..=24 {
+            let b = 1e-4 * 10f64.powf(i as f64 * 5.3 / 24.0);
+            let (e, tight) = (viscoelastic_restitution(b), viscoelastic_restitution_at(b, 1e-14));
+            assert!((e - tight).abs() < 1e-8, "b = {b}: {e} against {tight}");
+        }
+        // A slightly damped collision loses far less than the tolerance of
+        // the speed would hide: e is strictly below 1 and monotone.
+        assert!(viscoelastic_restitution(1e-6) < 1.0);
+        assert!(viscoelastic_restitution(1e-6) > viscoelastic_restitution(2e-6));
     }
 
     #[test]

@@ -5,7 +5,7 @@
 use super::common::CollisionParams;
 use crate::figure::{Axis, Figure, Scale, Series, Style, human};
 use crate::physics::collision::{
-    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_velocity,
+    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_search_near, sticking_velocity,
 };
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
@@ -523,6 +523,23 @@ fn radius_panel(
     Ok(Panel { figure: fig, scalars: Vec::new(), notes: Vec::new() })
 }
 
+/// A first guess of v_s at `radii[j]` from the sticking velocities `vs` of
+/// the radii before it on the same curve: the straight line in log–log
+/// through the last two, or from the last one with the slope of the JKR v_c
+/// (2.25); `None` for the first radius or after a radius where v_s lies
+/// outside the searched range.
+fn sticking_guess(radii: &[f64], vs: &[f64], j: usize) -> Option<f64> {
+    let finite = |v: &f64| v.is_finite() && *v > 0.0;
+    let last = *vs.get(j.checked_sub(1)?).filter(|v| finite(v))?;
+    let ln_r = |k: usize| radii[k].ln();
+    let slope = match j.checked_sub(2).and_then(|k| vs.get(k).filter(|v| finite(v)).map(|v| (k, *v))) {
+        Some((k, before)) => (last / before).ln() / (ln_r(j - 1) - ln_r(k)),
+        None => -5.0 / 6.0,
+    };
+    let guess = (last.ln() + slope * (ln_r(j) - ln_r(j - 1))).exp();
+    (guess.is_finite() && guess > 0.0).then_some(guess)
+}
+
 fn sticking_panel(
     p: &Params,
     radii: &[f64],
@@ -531,15 +548,30 @@ fn sticking_panel(
     done: &AtomicUsize,
     total: usize,
 ) -> Result<Panel, SceneError> {
-    let jobs: Vec<(usize, f64)> =
-        t_vis.iter().enumerate().flat_map(|(i, _)| radii.iter().map(move |&r| (i, r))).collect();
-    let vs = par_map(&jobs, progress, done, total, |&(i, r)| {
-        let mut c = p.at_radius(r);
-        c.t_vis = t_vis[i];
-        let v = sticking_velocity(&c.setup(), &c.options(), 1e-3)?;
-        done.fetch_add(19, Ordering::Relaxed);
-        Ok(v)
-    })?;
+    // Each T_vis curve walks the radii in order (the curves in parallel):
+    // v_s at one radius, extrapolated along the curve, is the first guess at
+    // the next, which halves the collisions of a search from v_c.
+    let curves: Vec<Vec<f64>> = t_vis
+        .par_iter()
+        .map(|&tv| -> Result<Vec<f64>, SceneError> {
+            let mut vs: Vec<f64> = Vec::with_capacity(radii.len());
+            for (j, &r) in radii.iter().enumerate() {
+                progress.check()?;
+                let mut c = p.at_radius(r);
+                c.t_vis = tv;
+                let setup = c.setup();
+                let v = match sticking_guess(radii, &vs, j) {
+                    Some(guess) => sticking_search_near(&setup, &c.options(), 1e-3, guess)?.velocity,
+                    None => sticking_velocity(&setup, &c.options(), 1e-3)?,
+                };
+                vs.push(v);
+                let n = done.fetch_add(20, Ordering::Relaxed) + 20;
+                progress.set(n as f64 / total as f64);
+            }
+            Ok(vs)
+        })
+        .collect::<Result<_, _>>()?;
+    let vs: Vec<f64> = curves.concat();
     let mut fig = Figure::new(
         "sticking-velocity",
         "Sticking velocity against reduced radius",

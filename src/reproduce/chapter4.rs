@@ -75,7 +75,7 @@ pub fn chapter4() -> Vec<Check> {
             21.0,
             scalar(&drag, "fractal_re_one").log10(),
             0.5,
-            "\"at a mass of m/m0 ~ 1e21\"; ours reaches Re_p = 1 at 10^21.75. Not the projected area: at these masses Okuzumi et al.'s A equals pi a^2 within 1e-4",
+            "\"at a mass of m/m0 ~ 1e21\"; ours reaches Re_p = 1 at 10^21.75. Not the projected area: at these masses Okuzumi et al.'s A equals pi a^2 within 1e-4. Not the turbulent part of v_dg: alpha^1/2 c_s (St/(1+St))^1/2 added in quadrature to the drift gives 10^21.63. Re_p grows about as m there, so 1e21 needs a v_dg 5-6 times the drift (~2 m/s at St ~ 0.02)",
         )
         .open(),
         check(

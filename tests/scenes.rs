@@ -1,6 +1,6 @@
 //! Scene-level checks: caching never changes results, outputs are complete.
 
-use grainscope::physics::collision::{Options, Outcome, Setup, collide};
+use grainscope::physics::collision::{Options, Outcome, Setup, collide, sticking_velocity};
 use grainscope::scene::{self, Caches, Progress, SCENES, SceneParams};
 
 fn small_restitution() -> SceneParams {
@@ -200,6 +200,36 @@ fn the_adaptive_restitution_curve_is_the_model_within_1e4() {
         }
     }
     assert!(bounced > 15, "{bounced}");
+}
+
+#[test]
+fn the_sticking_velocity_panel_is_the_model_within_its_precision() {
+    // Each v_s(R) curve is found from guesses along its radii at a looser
+    // solver tolerance: every point must still be the model's v_s within the
+    // panel's 10⁻³ (here against searches to 10⁻⁶ at the default tolerance).
+    let mut p = SceneParams::default_for("restitution").expect("scene");
+    for (k, v) in [("n_radii", "12"), ("n_t_vis", "3"), ("n_velocities", "20")] {
+        p.set(k, v).expect("valid");
+    }
+    let out = scene::compute(&p, &Progress::default()).expect("scene");
+    let fig = out.figures.iter().find(|f| f.id == "sticking-velocity").expect("v_s(R)");
+    let mut checked = 0;
+    for s in fig.series.iter().filter(|s| s.family.is_some()) {
+        for &[r_um, v] in &s.points {
+            // Equal spheres of reduced radius R: each of radius 2R.
+            let mut c = grainscope::scene::collisions::restitution::Params::default().collision;
+            c.radius_1 = 2.0 * r_um * 1e-6;
+            c.radius_2 = c.radius_1;
+            c.t_vis = s.family.expect("a T_vis");
+            let tight = sticking_velocity(&c.setup(), &Options::default(), 1e-6).expect("v_s");
+            if !tight.is_finite() {
+                continue;
+            }
+            assert!((v / tight - 1.0).abs() <= 1e-3, "R = {r_um} µm, T_vis = {:?}: drawn {v}, model {tight}", s.family);
+            checked += 1;
+        }
+    }
+    assert!(checked >= 30, "{checked}");
 }
 
 /// The model data that inspecting a clicked point needs (a browser's page

@@ -328,6 +328,15 @@ const E_TOLERANCE: f64 = 5e-5;
 /// enough that e just above v_s (where e ∝ (v − v_s)^{1/2}) stays within the
 /// tolerance at the velocity grid.
 const V_STICK_PRECISION: f64 = 1e-6;
+/// Relative precision of the sticking velocities of the v_s(R) panel (a
+/// fraction of a pixel on its log axis).
+const STICKING_PANEL_PRECISION: f64 = 1e-3;
+/// The loosest solver tolerance the v_s(R) panel integrates with (the
+/// solver tolerance of the scene where that is looser): against rtol = 10⁻⁶
+/// it moves v_s by at most 4.3 × 10⁻⁵ for R = 0.01–1000 µm, T_vis =
+/// 10⁻¹⁴–10⁻⁹ s and γ = 0.1–2 J/m², over 20 times below
+/// [`STICKING_PANEL_PRECISION`], at a third of the steps.
+const STICKING_PANEL_RTOL: f64 = 1e-4;
 /// Samples of the first e(v) round, log-spaced over the velocity range.
 const COARSE_VELOCITIES: usize = 9;
 
@@ -560,9 +569,10 @@ fn sticking_panel(
                 let mut c = p.at_radius(r);
                 c.t_vis = tv;
                 let setup = c.setup();
+                let opts = Options { rtol: c.options().rtol.max(STICKING_PANEL_RTOL), ..c.options() };
                 let v = match sticking_guess(radii, &vs, j) {
-                    Some(guess) => sticking_search_near(&setup, &c.options(), 1e-3, guess)?.velocity,
-                    None => sticking_velocity(&setup, &c.options(), 1e-3)?,
+                    Some(guess) => sticking_search_near(&setup, &opts, STICKING_PANEL_PRECISION, guess)?.velocity,
+                    None => sticking_velocity(&setup, &opts, STICKING_PANEL_PRECISION)?,
                 };
                 vs.push(v);
                 let n = done.fetch_add(20, Ordering::Relaxed) + 20;

@@ -437,6 +437,8 @@ fn velocity_panel(
     progress.check()?;
     let pair = setup.pair;
     let a = setup.dissipation_time();
+    // e_D at each velocity, drawn itself and inside e_I.
+    let e_d: Vec<f64> = velocities.iter().map(|&v| pair.e_viscous(a, v)).collect();
     let mut fig = Figure::new(
         "restitution-velocity",
         "Restitution against velocity",
@@ -447,7 +449,7 @@ fn velocity_panel(
     .with(Series::new("e_JKR (2.24)", velocities.iter().map(|&v| [v, pair.e_jkr(v)]).collect(), Style::Dashed, 1))
     .with(Series::new(
         "e_D (γ → 0 limit)",
-        velocities.iter().map(|&v| [v, pair.e_viscous(a, v)]).collect(),
+        velocities.iter().zip(&e_d).map(|(&v, &e)| [v, e]).collect(),
         Style::Dashed,
         2,
     ))
@@ -459,7 +461,7 @@ fn velocity_panel(
     ))
     .with(Series::new(
         "e_I (2.27)",
-        velocities.iter().map(|&v| [v, e_independent(pair.e_jkr(v), pair.e_viscous(a, v))]).collect(),
+        velocities.iter().zip(&e_d).map(|(&v, &e)| [v, e_independent(pair.e_jkr(v), e)]).collect(),
         Style::Dashed,
         3,
     ));

@@ -231,7 +231,11 @@ fn viscoelastic_restitution_at(b: f64, tol: f64) -> f64 {
         let (yn, (ex, ev)) = dopri_step(b, y, h);
         let err = (ex / (tol * (1e-3 + y.0.abs().max(yn.0.abs())))).hypot(ev / (tol * (1.0 + y.1.abs())));
         if err.is_nan() || err > 1.0 {
-            h *= (0.9 * err.powf(-0.2)).clamp(0.1, 0.5);
+            h *= if err.is_nan() { 0.1 } else { (0.9 * err.powf(-0.2)).clamp(0.1, 0.5) };
+            if h < 1e-12 * t_max {
+                // No step resolves the motion (a damping beyond floating point).
+                return 0.0;
+            }
             continue;
         }
         if started && yn.0 <= 0.0 {
@@ -326,6 +330,12 @@ mod tests {
         // the speed would hide: e is strictly below 1 and monotone.
         assert!(viscoelastic_restitution(1e-6) < 1.0);
         assert!(viscoelastic_restitution(1e-6) > viscoelastic_restitution(2e-6));
+        // Dampings beyond any material end with e ≈ 0 instead of a step too
+        // small to advance.
+        for b in [1e3, 1e10, 1e300, f64::MAX] {
+            let e = viscoelastic_restitution(b);
+            assert!((0.0..1e-10).contains(&e), "b = {b}: {e}");
+        }
     }
 
     #[test]

@@ -581,8 +581,8 @@ pub fn sticking_search(setup: &Setup, opts: &Options, rel: f64) -> Result<Sticki
 /// [`sticking_search`] from a guess of v_s (m/s), for example the sticking
 /// velocity of a neighbouring radius: the bracket is sought with a first
 /// step of 2·`rel` that squares while it misses (at `rel` = 10⁻³: 0.2 %,
-/// 0.4 %, 0.8 %, 1.6 %, 3.2 %, …), so a guess within `rel` costs three
-/// collisions, and one 30 % off nine.
+/// 0.4 %, 0.8 %, 1.6 %, 3.2 %, …), so a guess within `rel` costs three or
+/// four collisions, and one 30 % off about a dozen.
 pub fn sticking_search_near(
     setup: &Setup,
     opts: &Options,

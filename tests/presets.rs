@@ -112,6 +112,31 @@ fn old_presets_with_missing_fields_load_with_defaults() {
     }
 }
 
+/// A batch preset written before the `settling` key existed ran with
+/// differential settling among the relative velocities: it keeps it, while a
+/// new scene uses App. 5.B's midplane velocities.
+#[test]
+fn batch_presets_without_the_settling_key_keep_the_velocities_they_were_written_with() {
+    let run = |settling: &str| {
+        let text = format!(
+            "(scene: DiskMap((run: ({settling}disk: (metallicity: 0.05, alpha: 1e-5), batches: 30, duration_yr: 3e4))))"
+        );
+        let p = Preset::from_ron(&text, "<text>").expect("loads");
+        let out = scene::compute(&p.scene, &Progress::default()).expect("runs");
+        (p.scene, format!("{:?}", out.figures))
+    };
+    let (old, old_out) = run("");
+    let (with, with_out) = run("settling: true, ");
+    let (without, without_out) = run("settling: false, ");
+    assert_eq!(old, with, "a preset without the key reads as settling: true");
+    assert_eq!(old_out, with_out, "and gives the same results");
+    assert_ne!(with_out, without_out, "settling changes the run");
+    let fresh = SceneParams::default_for("disk-map").expect("the disk map scene");
+    let ron = ron::to_string(&fresh).expect("serialises");
+    assert!(ron.contains("settling:false"), "a new scene uses the midplane velocities and says so: {ron}");
+    assert_ne!(without, old);
+}
+
 #[test]
 fn unknown_keys_are_reported_with_their_location() {
     let text = "(\n    scene: Hysteresis((\n        collision: (velocty: 3.0),\n    )),\n)";

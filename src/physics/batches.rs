@@ -74,9 +74,11 @@ pub struct BatchConfig {
 
 impl BatchConfig {
     /// The porous perfect-sticking run of Fig. 5.6: M_D = 0.01 M☉, Z₀ = 0.02,
-    /// R_c = 30 AU, γ = 1, α = 10⁻³, 0.1 µm ice, 3–200 AU, 10⁶ yr.
+    /// R_c = 30 AU, γ = 1, α = 10⁻³, 0.1 µm ice, 3–200 AU, 10⁶ yr, with the
+    /// relative velocities of App. 5.B (no settling).
     pub fn figure_5_6(batches: usize) -> BatchConfig {
         let mut model = GrowthModel::chapter4(super::growth::Porosity::Full);
+        model.settling = false;
         model.disk = GasDisk {
             profile: super::disk::Profile::TruncatedPowerLaw { mass: 0.01, r_c: 30.0, slope: 1.0 },
             cold: false,

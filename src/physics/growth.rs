@@ -14,10 +14,10 @@
 //! closed forms φ ∝ m^{-1/8}, const and m^{-1/5}.
 
 use super::aggregate::{
-    Aggregate, Monomer, Particle, R_CRIT, Thresholds, TurbulenceModel, dust_scale_height, gas_compaction_filling,
-    gravity_compaction_filling, radial_drift, relative_velocity, stopping_time,
+    Aggregate, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel, dust_scale_height,
+    gas_compaction_filling, gravity_compaction_filling, radial_drift, relative_velocity, stopping_time,
 };
-use super::disk::GasDisk;
+use super::disk::{GasDisk, Local};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -60,6 +60,11 @@ pub struct GrowthModel {
     pub turbulence: TurbulenceModel,
     /// Dispersion ε of the mass-to-area ratio (0.1).
     pub epsilon: f64,
+    /// Count differential settling (at one dust scale height) among the
+    /// relative velocities, as ch. 4 does (Sect. 4.2.2). Off: the velocities
+    /// of App. 5.B, Brownian motion, turbulence and radial and azimuthal
+    /// drift at the midplane, where settling vanishes.
+    pub settling: bool,
     /// Include Newton drag.
     pub newton: bool,
     /// Let the particle drift (false: a local model at fixed R).
@@ -182,6 +187,7 @@ impl GrowthModel {
             },
             turbulence: TurbulenceModel::Thesis,
             epsilon: 0.1,
+            settling: true,
             newton: true,
             drift: true,
             planetesimal_mass: 1e13,
@@ -207,6 +213,15 @@ impl GrowthModel {
         }
     }
 
+    /// The relative velocity of two particles with this model's sources.
+    fn relative_velocity(&self, env: &Local, p1: &Particle, p2: &Particle) -> RelativeVelocity {
+        let mut v = relative_velocity(env, p1, p2, self.turbulence, self.epsilon);
+        if !self.settling {
+            v.settling = 0.0;
+        }
+        v
+    }
+
     /// Growth and drift rates of a particle of mass `m` (kg) and filling
     /// factor `phi` at radius `r` (m) in dust of surface density `sigma_d`
     /// (kg m⁻²; `None`: the disk's own).
@@ -218,7 +233,7 @@ impl GrowthModel {
         let st = stopping.time * env.omega;
         let a = agg.radius(&mono);
         let me = Particle { mass: m, stokes: st };
-        let rv = relative_velocity(&env, &me, &me, self.turbulence, self.epsilon);
+        let rv = self.relative_velocity(&env, &me, &me);
         let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
         let sigma = sigma_d.unwrap_or(env.dust_surface_density);
         let m_dot = sigma / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * rv.total();
@@ -251,7 +266,7 @@ impl GrowthModel {
         };
         let me = Particle { mass: m, stokes: st };
         let v = rv.total();
-        let v_mono = relative_velocity(&env, &me, &mono_particle, self.turbulence, self.epsilon).total();
+        let v_mono = self.relative_velocity(&env, &me, &mono_particle).total();
         let mut t_grow = start.t_grow;
         let st_eta = env.reynolds.powf(-0.5);
         // In the first turbulence regime same-size velocities vanish and the

@@ -27,6 +27,13 @@ pub struct BatchParams {
     pub v_frag_from_monomer: bool,
     /// Erosion threshold, m s⁻¹ (default 10⁴: none).
     pub v_eros: f64,
+    /// Count differential settling at one dust scale height among the
+    /// relative velocities, as ch. 4 does. Default off: App. 5.B's
+    /// velocities at the midplane (Brownian motion, turbulence, radial and
+    /// azimuthal drift). A preset without this key was written when the batch
+    /// scenes always counted settling, and keeps doing so.
+    #[serde(default = "settling_in_presets_without_the_key")]
+    pub settling: bool,
     /// Innermost initial radius, AU (default 3).
     pub r_in_au: f64,
     /// Outermost initial radius, AU (default 200).
@@ -50,6 +57,7 @@ impl Default for BatchParams {
             v_frag: 1e4,
             v_frag_from_monomer: false,
             v_eros: 1e4,
+            settling: false,
             r_in_au: 3.0,
             r_out_au: 200.0,
             batches: 250,
@@ -57,6 +65,12 @@ impl Default for BatchParams {
             dlnm: 0.2,
         }
     }
+}
+
+/// The relative velocities of a batch preset that does not name `settling`:
+/// those of the batch scenes before the key existed, with settling.
+fn settling_in_presets_without_the_key() -> bool {
+    true
 }
 
 /// Batches in all that a preview of a sweep runs (its first picture within
@@ -99,6 +113,11 @@ impl BatchParams {
             quantities::v_eros(&mut self.v_eros)
                 .default(d.v_eros)
                 .doc("collisions with monomers above it stop growth (1e4: none)"),
+        );
+        c.push(
+            Control::toggle("settling", "settling in Δv", &mut self.settling)
+                .default(d.settling)
+                .doc("count differential settling at one dust scale height among the relative velocities (ch. 4); off: the midplane velocities of App. 5.B"),
         );
         c.push(
             Control::number("r_in_au", "innermost batch", &mut self.r_in_au)
@@ -155,6 +174,7 @@ impl BatchParams {
         model.thresholds.v_frag = v_frag;
         model.thresholds.v_bounce = v_frag;
         model.thresholds.v_eros = self.v_eros;
+        model.settling = self.settling;
         model.dlnm = self.dlnm;
         model.midpoint = true;
         BatchConfig {

@@ -55,10 +55,23 @@ const server = http.createServer((req, res) => {
 await new Promise((resolve) => server.listen(0, "127.0.0.1", resolve));
 const base = `http://127.0.0.1:${server.address().port}/`;
 
-const browser = await chromium.launch({
-  executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
-  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
-});
+// Chromium has been seen to crash at start-up (SIGSEGV before its first
+// page) on a busy machine: a launch is tried up to three times.
+async function launch() {
+  for (let attempt = 1; ; attempt++) {
+    try {
+      return await chromium.launch({
+        executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+        args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader"],
+      });
+    } catch (e) {
+      if (attempt >= 3) throw e;
+      console.log(`Chromium did not start (attempt ${attempt}): ${String(e.message).split("\n")[0]}`);
+      await new Promise((resolve) => setTimeout(resolve, 2000));
+    }
+  }
+}
+const browser = await launch();
 const context = await browser.newContext({ viewport: size, acceptDownloads: true });
 
 /** Opens `query` on a fresh page; every console error or page error fails the test. */

@@ -11,7 +11,7 @@ use std::path::{Path, PathBuf};
 
 /// grainscope: an explorer of dust microphysics. Without a command it opens the window.
 #[derive(Debug, Parser)]
-#[command(name = "grainscope", version, about)]
+#[command(name = "grainscope", version = env!("GRAINSCOPE_BUILD"), about)]
 pub struct Cli {
     /// What to do; omit to open the explorer.
     #[command(subcommand)]

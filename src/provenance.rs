@@ -125,9 +125,41 @@ pub fn stage_figures(
     Ok(())
 }
 
-/// "grainscope VERSION".
+/// Which build a result came from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, serde::Serialize)]
+pub struct Build {
+    /// The program's version, e.g. "0.1.0".
+    pub version: &'static str,
+    /// The commit the build was made from (12 hex digits), or "unknown"
+    /// where the sources were not a git checkout.
+    pub commit: &'static str,
+    /// Whether tracked files differed from that commit.
+    pub dirty: bool,
+    /// The commit's date (YYYY-MM-DD), or "unknown".
+    pub date: &'static str,
+}
+
+/// This build.
+pub fn build() -> Build {
+    Build {
+        version: env!("CARGO_PKG_VERSION"),
+        commit: env!("GRAINSCOPE_COMMIT"),
+        dirty: env!("GRAINSCOPE_DIRTY") == "1",
+        date: env!("GRAINSCOPE_COMMIT_DATE"),
+    }
+}
+
+impl std::fmt::Display for Build {
+    /// "0.1.0 (commit 8359ffd1a2b3, 2026-11-27)", "+ local changes" when dirty
+    /// (the text of `grainscope --version`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(env!("GRAINSCOPE_BUILD"))
+    }
+}
+
+/// "grainscope VERSION (commit …, DATE)": the program and the build that made a result.
 pub fn program() -> String {
-    format!("grainscope {}", env!("CARGO_PKG_VERSION"))
+    format!("grainscope {}", build())
 }
 
 fn escape(s: &str) -> String {

@@ -3,8 +3,10 @@
 
 use grainscope::physics::collision::{
     Options, Outcome, Setup, collide, restitution, sticking_search, sticking_search_near, sticking_velocity,
+    sticking_velocity_with_yield,
 };
 use grainscope::physics::contact::e_independent;
+use grainscope::physics::crack::{CrackLaw, Relation};
 use grainscope::physics::plasticity::{e_plastic, yield_velocity};
 use rand::{Rng, SeedableRng};
 
@@ -226,7 +228,7 @@ fn stability_sweep_over_documented_ranges() {
         s.t_vis = log_uniform(1e-15, 1e-8, &mut rng);
         s.z0 = 1e-10 + rng.random::<f64>() * 9e-10;
         s.crack.k = log_uniform(0.005, 0.3, &mut rng);
-        s.crack.low_speed_fit = rng.random::<bool>();
+        s.crack.relation = [Relation::Full, Relation::Thesis, Relation::General][rng.random_range(0..3)];
         s.yield_strength = rng.random::<bool>().then(|| log_uniform(1e5, 1e11, &mut rng));
         let v = log_uniform(1e-3, 1e3, &mut rng);
         let res = restitution(&s, v, &opts()).unwrap_or_else(|e| panic!("set {i}: {e} ({s:?}, v = {v})"));
@@ -339,4 +341,53 @@ fn a_search_from_a_guess_finds_the_same_sticking_velocity() {
     }
     assert!(sticking_search_near(&ice(), &opts(), 1e-3, f64::NAN).is_err());
     assert!(sticking_search_near(&ice(), &opts(), 1e-3, -1.0).is_err());
+}
+
+#[test]
+fn the_sticking_velocity_counts_plastic_yield() {
+    // Reference ice with plastic yield: below the yield strength where
+    // v_y < v_s the first bounce moves up, and where yield takes all the
+    // rebound nothing bounces up to 10⁴ m/s (an infinite v_s, a lower bound).
+    let adhesive = sticking_search(&ice(), &opts(), 1e-6).expect("search").velocity;
+    let with_yield = |y: f64| {
+        let s = Setup { yield_strength: Some(y), ..ice() };
+        (sticking_velocity_with_yield(&s, &opts(), adhesive, 1e-6).expect("search"), s)
+    };
+    // v_y = 57 km/s: yield never acts below v_s.
+    assert_eq!(with_yield(1e10).0, adhesive);
+    // v_y = 1.6 m/s: the first bounce is at 6.84 m/s, and e changes sign there.
+    let (v_s, s) = with_yield(1.5e8);
+    assert!(v_s > 1.5 * adhesive && v_s.is_finite(), "{v_s}");
+    assert_eq!(restitution(&s, v_s * (1.0 - 1e-4), &opts()).expect("e").e, 0.0);
+    assert!(restitution(&s, v_s * (1.0 + 1e-4), &opts()).expect("e").e > 0.0);
+    // v_y = 0.57 m/s: the combined e (2.30) is zero everywhere.
+    let (v_s, s) = with_yield(1e8);
+    assert!(v_s.is_infinite());
+    for v in [3.0, 10.0, 100.0, 1000.0] {
+        assert_eq!(restitution(&s, v, &opts()).expect("e").e, 0.0, "v = {v}");
+    }
+}
+
+#[test]
+fn the_sticking_velocity_is_continuous_in_k_with_the_full_crack_relation() {
+    // The thesis's law switches to its fits at k = 0.018 and v_s jumps by
+    // 17 %; the full relation has no switch. Over k = 0.005–0.3 (60 log
+    // steps) no neighbour differs by more than 1.5 %, and at k = 0.02 v_s is
+    // within 1 % of the thesis's 3.566 m/s.
+    let ks: Vec<f64> =
+        (0..=60).map(|i| (0.005f64.ln() + (0.3f64.ln() - 0.005f64.ln()) * i as f64 / 60.0).exp()).collect();
+    let vs: Vec<f64> = ks
+        .iter()
+        .map(|&k| {
+            let s = Setup { crack: CrackLaw::full(k), ..ice() };
+            sticking_velocity(&s, &opts(), 1e-5).expect("v_s")
+        })
+        .collect();
+    for (w, k) in vs.windows(2).zip(&ks) {
+        assert!((w[1] / w[0] - 1.0).abs() < 0.015, "k = {k}: {} → {}", w[0], w[1]);
+    }
+    let at = sticking_velocity(&ice(), &opts(), 1e-6).expect("v_s");
+    assert!((at / 3.566 - 1.0).abs() < 0.01, "{at}");
+    let thesis = sticking_velocity(&ice().with_crack(CrackLaw::thesis(0.02)), &opts(), 1e-6).expect("v_s");
+    assert!((thesis / 3.5661 - 1.0).abs() < 2e-4, "{thesis}");
 }

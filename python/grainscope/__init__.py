@@ -143,13 +143,39 @@ def scenes() -> List[Scene]:
     return list(_SCENES)
 
 
-def _text(name: str, value: Any) -> str:
-    """A parameter value as the command line's `--set NAME=TEXT` takes it."""
-    if isinstance(value, (bool, np.bool_)):
+def _kinds(preset: Optional[str], scene: Optional[str]) -> Dict[str, str]:
+    """The kind of every parameter of the scene ("number", "count",
+    "toggle", "material", "choice"), by name."""
+    id = _native.scene_of(preset, scene)
+    return {p.name: p.kind for s in scenes() if s.id == id for p in s.parameters}
+
+
+def _text(name: str, value: Any, kind: Optional[str] = None) -> str:
+    """A parameter value as the command line's `--set NAME=TEXT` takes it,
+    checked against the parameter's kind: a switch takes a bool (Python's or
+    numpy's), a number a real number, a count a whole number, a material or a
+    choice a text."""
+    is_bool = isinstance(value, (bool, np.bool_))
+    is_int = isinstance(value, (int, np.integer)) and not is_bool
+    is_real = is_int or isinstance(value, (float, np.floating))
+    if kind == "toggle":
+        if not is_bool:
+            raise TypeError(f"{name} is a switch: it takes True or False, not {type(value).__name__} {value!r}")
         return "true" if value else "false"
-    if isinstance(value, (int, np.integer)):
+    if kind == "number" and not is_real:
+        raise TypeError(f"{name} takes a number, not {type(value).__name__} {value!r}")
+    if kind == "count":
+        if is_real and not is_int and float(value).is_integer():
+            value = int(value)
+        elif not is_int:
+            raise TypeError(f"{name} takes a whole number, not {type(value).__name__} {value!r}")
+    if kind in ("material", "choice") and not isinstance(value, str):
+        raise TypeError(f"{name} takes a text (one of its documented choices), not {type(value).__name__} {value!r}")
+    if is_bool:
+        return "true" if value else "false"
+    if is_int:
         return str(int(value))
-    if isinstance(value, (float, np.floating)):
+    if is_real:
         return repr(float(value))
     if isinstance(value, str):
         return value
@@ -157,7 +183,10 @@ def _text(name: str, value: Any) -> str:
 
 
 def _sets(params: Mapping[str, Any], seed: Optional[int], preset: Optional[str], scene: Optional[str]) -> List[Tuple[str, str]]:
-    sets = [(k, _text(k, v)) for k, v in params.items()]
+    kinds = _kinds(preset, scene) if params else {}
+    # A name the scene does not have passes unchecked: the module answers
+    # it with its close matches.
+    sets = [(k, _text(k, v, kinds.get(k))) for k, v in params.items()]
     if seed is not None:
         if isinstance(seed, bool) or not isinstance(seed, (int, np.integer)) or seed < 0:
             raise ValueError(f"seed={seed!r}: a whole number ≥ 0")
@@ -463,6 +492,8 @@ def sweep(
     Returns a pandas DataFrame when pandas is installed, else a dict of
     numpy arrays (the `error` column a list of texts or None).
     """
+    if not isinstance(vary, Mapping):
+        raise TypeError(f"vary takes a mapping of parameter names to values, e.g. vary={{'velocity': gs.log(1, 10, 5)}}, not {type(vary).__name__}")
     if not vary:
         raise ValueError("nothing to vary: give vary={'name': gs.log(...)}")
     if out is not None and client is not None:

@@ -166,7 +166,7 @@ def test_a_bad_value_is_a_value_error_with_the_command_lines_message(cli):
     with pytest.raises(ValueError, match="velocity"):
         gs.run("ice-bounce-8ms", velocity=float("nan"))
     with pytest.raises(ValueError):
-        gs.run("ice-bounce-8ms", plasticity="perhaps")
+        gs.run("ice-bounce-8ms", crack_law="perhaps")
     with pytest.raises(TypeError):
         gs.run("ice-bounce-8ms", velocity=[1, 2])
     with pytest.raises(ValueError, match="not both"):
@@ -270,3 +270,23 @@ def test_the_library_prints_nothing(capfd):
     gs.run("mc-kernel-constant", runs=1)
     out, err = capfd.readouterr()
     assert out == "" and err == ""
+
+
+def test_a_switch_takes_a_bool_and_every_wrong_type_is_named():
+    # No silent coercion: "yes", 1 and "perhaps" are not switches.
+    for wrong in ("yes", 1, 1.0, "perhaps"):
+        with pytest.raises(TypeError, match="plasticity is a switch"):
+            gs.run("ice-bounce-8ms", plasticity=wrong)
+    # numpy's bool is a bool.
+    on = gs.run("ice-bounce-8ms", plasticity=np.bool_(True))
+    assert on.scalars["e"] == gs.run("ice-bounce-8ms", plasticity=True).scalars["e"]
+    with pytest.raises(TypeError, match="velocity takes a number"):
+        gs.run("ice-bounce-8ms", velocity="fast")
+    with pytest.raises(TypeError, match="velocity takes a number"):
+        gs.run("ice-bounce-8ms", velocity=True)
+    with pytest.raises(TypeError, match="crack_law takes a text"):
+        gs.run("ice-bounce-8ms", crack_law=2)
+    with pytest.raises(TypeError, match="vary takes a mapping"):
+        gs.sweep("ice-bounce-8ms", vary=[1.0, 2.0])
+    with pytest.raises(TypeError, match="velocity takes a number"):
+        gs.sweep("ice-bounce-8ms", vary={"t_vis": [1e-11]}, velocity="4")

@@ -445,7 +445,7 @@ mod tests {
         match &got[0].result {
             Ok(Done::Scene(_, out)) => {
                 let e = out.scalar("e").expect("e");
-                assert!((e - 0.222).abs() < 0.002, "the 4 m/s result, e = {e}");
+                assert!((e - 0.2247).abs() < 0.002, "the 4 m/s result, e = {e}");
             }
             other => panic!("{other:?}"),
         }

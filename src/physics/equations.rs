@@ -36,8 +36,8 @@
 //! | (2.11) | Tabor parameter μ (= (3.5)) | `physics::contact::Pair::tabor` |
 //! | (2.14) | effective surface energy G_eff(a, δ) (= (3.7)) | `physics::contact::Pair::effective_surface_energy` |
 //! | (2.15) | β = G_eff/γ during a collision (scaled (2.14)) | `physics::collision::ContactOde::point` (private) |
-//! | (2.16) | Greenwood's crack-speed law ȧ(β) | `physics::crack::CrackLaw::general` (private) |
-//! | (2.17) | Greenwood's low-speed fits for k = 0.02 | `physics::crack::CrackLaw::speed` |
+//! | (2.16) | Greenwood's crack-speed law ȧ(β) | `physics::crack::CrackLaw::general` |
+//! | (2.17) | Greenwood's low-speed fits for k = 0.02 | `physics::crack::CrackLaw::low_speed_fit` |
 //! | (2.19) | bulk dissipation constant A = T_vis/ν² | `physics::collision::Setup::dissipation_time` |
 //! | (2.19) | bulk dissipative force F_D = 2AE*aδ̇ | `physics::collision::ContactOde::rhs` (private) |
 //! | (2.20) | equation of motion m*δ̈ = −(F_E + F_D) | `physics::collision::ContactOde::rhs` (private) |
@@ -180,9 +180,11 @@
 //! ## Not implemented, or implemented differently
 //!
 //! - (1.24): uses E*² where the thesis prints E*³, which is not an energy (`Pair::break_energy`).
-//! - (2.16)–(2.17): within |β − 1| < 0.01 the general law is replaced by a quadratic bridge through
-//!   β = 1 (`physics::crack::CrackLaw::bridge`, private); the low-speed fits are used only for
-//!   0.018 ≤ k ≤ 0.022, the k they were made for.
+//! - (2.16)–(2.17): by default the crack speed is the exact relation of the three-element solid with a
+//!   Dugdale zone for any k (`physics::crack::dugdale`), which (2.17) fits at k = 0.02 within 5.3 %;
+//!   the thesis's law stays selectable (`physics::crack::Relation::Thesis`). In it, within |β − 1| < 0.01
+//!   the general law is replaced by a quadratic bridge through β = 1 (`physics::crack::CrackLaw::bridge`,
+//!   private), and the low-speed fits are used only for 0.018 ≤ k ≤ 0.022, the k they were made for.
 //! - (2.39): the time offset of the initial contact is negligible and not added (`physics::collision` docs).
 //! - (3.10): the closed form is implemented; the integral ∬ x p dx dy of the pressure equals minus it,
 //!   so the code reads (3.10) as the torque on the sphere, with the sign of (3.11).

@@ -128,7 +128,7 @@ impl Experiment {
             t_vis,
             poisson_ratio: two.poisson_ratio,
             z0: 3e-10,
-            crack: CrackLaw { k: 0.02, low_speed_fit: true },
+            crack: CrackLaw::thesis(0.02),
             yield_strength,
         })
     }

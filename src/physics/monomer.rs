@@ -206,7 +206,7 @@ impl Monomer {
             t_vis: 1e-11,
             poisson_ratio: nu,
             z0: 3e-10,
-            crack: CrackLaw { k: 0.02, low_speed_fit: true },
+            crack: CrackLaw::thesis(0.02),
             yield_strength: None,
         };
         sticking_velocity(&setup, &Options::default(), rel)

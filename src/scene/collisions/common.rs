@@ -4,7 +4,7 @@
 use crate::figure::{Series, Style};
 use crate::physics::collision::{Options, Setup};
 use crate::physics::contact::Pair;
-use crate::physics::crack::CrackLaw;
+use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::experiments::Bounded;
 use crate::physics::material::{Bodies, Material, TwoBodies};
 use crate::scene::controls::Control;
@@ -34,8 +34,11 @@ pub struct CollisionParams {
     pub z0: f64,
     /// Relaxed-to-instantaneous modulus ratio k (default 0.02).
     pub k: f64,
-    /// Use Greenwood's low-speed crack fits (2.17), which were made for k = 0.02.
-    pub low_speed_fit: bool,
+    /// Crack-speed relation, a key of [`Relation::CHOICES`] (default "full").
+    /// Files written before the choice existed say `low_speed_fit: true`
+    /// (the thesis's law) or `false` ((2.16) alone), and keep their law.
+    #[serde(alias = "low_speed_fit", deserialize_with = "crack_law_or_legacy_switch")]
+    pub crack_law: String,
     /// Include Thornton–Ning plasticity.
     pub plasticity: bool,
     /// Yield strength Y, Pa (default 1e8; used when `plasticity` is on).
@@ -59,7 +62,7 @@ impl Default for CollisionParams {
             t_vis: 1e-11,
             z0: 3e-10,
             k: 0.02,
-            low_speed_fit: true,
+            crack_law: "full".into(),
             plasticity: false,
             yield_strength: 1e8,
             velocity: 8.0,
@@ -117,9 +120,9 @@ impl CollisionParams {
                 .range(0.005, 0.3)
                 .log()
                 .doc("relaxed to instantaneous modulus (default 0.02)"),
-            Control::toggle("low_speed_fit", "low-speed crack fit", &mut self.low_speed_fit)
-                .default(d.low_speed_fit)
-                .doc("use Greenwood's fits (2.17) near β = 1 (made for k = 0.02; applied for k = 0.018–0.022)"),
+            Control::choice("crack_law", "crack law", &mut self.crack_law, Relation::CHOICES.to_vec())
+                .default(d.crack_law.clone())
+                .doc("crack speed ȧ(β): the exact Dugdale-zone relation of the three-element solid at any k, or the thesis's (2.16) with Greenwood's fits (2.17) (made for k = 0.02; applied for k = 0.018–0.022), or (2.16) alone"),
             Control::toggle("plasticity", "plasticity", &mut self.plasticity)
                 .default(d.plasticity)
                 .doc("Thornton–Ning plastic yield (2.29)"),
@@ -177,9 +180,14 @@ impl CollisionParams {
             t_vis: self.t_vis,
             poisson_ratio: two.poisson_ratio,
             z0: self.z0,
-            crack: CrackLaw { k: self.k, low_speed_fit: self.low_speed_fit },
+            crack: self.crack_law(),
             yield_strength: self.plasticity.then_some(self.yield_strength),
         }
+    }
+
+    /// The crack law (the full relation for an unknown key, which validation rejects).
+    pub fn crack_law(&self) -> CrackLaw {
+        CrackLaw { k: self.k, relation: Relation::from_key(&self.crack_law).unwrap_or_default() }
     }
 
     /// Integrator options at the chosen tolerance.
@@ -227,4 +235,20 @@ pub fn describe(b: &Bounded, unit: &str, scale: f64) -> String {
         Bounded::Fixed(x) => format!("{} {unit} (held fixed)", t(x * scale)),
         Bounded::Undetermined { best } => format!("undetermined (best point {} {unit})", t(best * scale)),
     }
+}
+
+/// Reads `crack_law`: a key, or the switch `low_speed_fit` of older files
+/// (true: the thesis's law; false: (2.16) alone).
+fn crack_law_or_legacy_switch<'de, D: serde::Deserializer<'de>>(d: D) -> Result<String, D::Error> {
+    #[derive(Deserialize)]
+    #[serde(untagged)]
+    enum KeyOrSwitch {
+        Switch(bool),
+        Key(String),
+    }
+    Ok(match KeyOrSwitch::deserialize(d)? {
+        KeyOrSwitch::Switch(true) => Relation::Thesis.key().into(),
+        KeyOrSwitch::Switch(false) => Relation::General.key().into(),
+        KeyOrSwitch::Key(k) => k,
+    })
 }

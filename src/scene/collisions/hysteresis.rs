@@ -159,10 +159,12 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
         let e_p = plasticity::e_plastic(v, setup.yield_velocity());
         let e = if run.e_adhesive > 0.0 { plasticity::e_combined(run.e_adhesive, e_p) } else { 0.0 };
         let scalars = vec![
+            // With plastic yield a collision whose combined e (2.30) is zero
+            // sticks although adhesion and viscosity alone would let it go.
             Scalar {
                 key: "sticks",
-                label: "sticks (1) / bounces (0)",
-                value: f64::from(u8::from(run.outcome == Outcome::Stick)),
+                label: "sticks (1) / bounces (0), with plastic yield when on",
+                value: f64::from(u8::from(run.outcome == Outcome::Stick || e == 0.0)),
                 unit: "",
             },
             Scalar { key: "e_A", label: "restitution e_A (adhesion + viscosity)", value: run.e_adhesive, unit: "" },
@@ -204,8 +206,17 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
         if !run.resolved {
             notes.push("The spheres were still in contact at the time limit; counted as sticking.".into());
         }
-        if (c.k - 0.02).abs() > 1e-12 && c.low_speed_fit {
-            notes.push("Greenwood's low-speed fits (2.17) were made for k = 0.02.".into());
+        if run.outcome != Outcome::Stick && e == 0.0 {
+            notes.push(format!(
+                "With plastic yield e = (e_A² + e_P² − 1)^{{1/2}} (2.30) is zero: the spheres stick. The contact drawn is that of adhesion and viscosity alone (e_A = {:.3}, e_P = {:.3}).",
+                run.e_adhesive, e_p
+            ));
+        }
+        if (c.k - 0.02).abs() > 1e-12 && c.crack_law == "thesis" {
+            notes.push(
+                "Greenwood's low-speed fits (2.17) were made for k = 0.02; at this k the thesis's law is (2.16) alone."
+                    .into(),
+            );
         }
         let trajectory = Trajectory {
             radius_1: c.radius_1,

@@ -5,9 +5,11 @@
 use super::common::CollisionParams;
 use crate::figure::{Axis, Figure, Scale, Series, Style, human};
 use crate::physics::collision::{
-    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_search_near, sticking_velocity,
+    Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_search_near,
+    sticking_velocity, sticking_velocity_with_yield,
 };
 use crate::physics::contact::e_independent;
+use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::plasticity;
 use crate::scene::controls::{Control, LogRange, ParamError};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -248,7 +250,9 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
         match key {
             "v_stick" => Some(setup().and_then(|s| {
                 progress.check()?;
-                Ok(sticking_search(&s, &self.collision.options(), V_STICK_PRECISION)?.velocity)
+                let opts = self.collision.options();
+                let adhesive = sticking_search(&s, &opts, V_STICK_PRECISION)?.velocity;
+                Ok(sticking_velocity_with_yield(&s, &opts, adhesive, V_STICK_PRECISION)?)
             })),
             "v_c" => Some(setup().map(|s| s.pair.jkr_sticking_velocity())),
             // The e(v) panel alone: e(R) and v_s(R) do not enter it.
@@ -314,8 +318,9 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
             out.scalars.extend(panel.scalars.iter().cloned());
             out.notes.extend(panel.notes.iter().cloned());
         }
+        out.figures.push(crack_law_figure(&p.collision.crack_law()));
         if p.collision.plasticity {
-            out.notes.push("e(R) and v_s use e_A; plasticity enters e(v) through (2.30).".into());
+            out.notes.push("e(R) and the v_s(R) panel use e_A; plasticity enters e(v) and v_s through (2.30).".into());
         }
         Ok(out)
     }
@@ -423,7 +428,10 @@ fn velocity_panel(
 ) -> Result<Panel, SceneError> {
     let setup = p.collision.setup();
     let opts = p.collision.options();
-    let (e_adhesive, v_s) = adaptive_restitution(&setup, &opts, velocities, progress, done, total)?;
+    let (e_adhesive, v_adhesive) = adaptive_restitution(&setup, &opts, velocities, progress, done, total)?;
+    progress.check()?;
+    // With plastic yield the first bounce can lie above the adhesive v_s.
+    let v_s = sticking_velocity_with_yield(&setup, &opts, v_adhesive, V_STICK_PRECISION)?;
     let v_y = setup.yield_velocity();
     let results: Vec<RestitutionAt> = velocities
         .iter()
@@ -477,13 +485,31 @@ fn velocity_panel(
     let e_max = results.iter().map(|r| r.e).fold(0.0, f64::max);
     let mut notes = Vec::new();
     if v_s.is_infinite() {
-        notes.push("The spheres stick at every velocity up to 10⁴ m/s.".to_string());
+        notes.push(if v_adhesive.is_finite() {
+            format!(
+                "With plastic yield the spheres stick at every velocity up to 10⁴ m/s (without it they bounce above {} m/s): v_s is a lower bound.",
+                human(v_adhesive)
+            )
+        } else {
+            "The spheres stick at every velocity up to 10⁴ m/s: v_s is a lower bound.".to_string()
+        });
+    } else if v_s > v_adhesive * (1.0 + 1e-3) {
+        notes.push(format!(
+            "Plastic yield moves the first bounce from {} m/s (adhesion and viscosity alone) to v_s = {} m/s.",
+            human(v_adhesive),
+            human(v_s)
+        ));
     }
     Ok(Panel {
         notes,
         figure: fig,
         scalars: vec![
-            Scalar { key: "v_stick", label: "sticking velocity v_s (model)", value: v_s, unit: "m s^-1" },
+            Scalar {
+                key: "v_stick",
+                label: "sticking velocity v_s (model; lowest bouncing speed, with plastic yield when on)",
+                value: v_s,
+                unit: "m s^-1",
+            },
             Scalar {
                 key: "v_c",
                 label: "JKR sticking velocity v_c (2.25)",
@@ -563,6 +589,7 @@ fn sticking_panel(
     // Each T_vis curve walks the radii in order (the curves in parallel):
     // v_s at one radius, extrapolated along the curve, is the first guess at
     // the next (at the default size 1052 collisions instead of 1889 from v_c).
+    let failed = std::sync::Mutex::new(Vec::<String>::new());
     let curves: Vec<Vec<f64>> = t_vis
         .par_iter()
         .map(|&tv| -> Result<Vec<f64>, SceneError> {
@@ -573,9 +600,25 @@ fn sticking_panel(
                 c.t_vis = tv;
                 let setup = c.setup();
                 let opts = Options { rtol: c.options().rtol.max(STICKING_PANEL_RTOL), ..c.options() };
-                let v = match sticking_guess(radii, &vs) {
-                    Some(guess) => sticking_search_near(&setup, &opts, STICKING_PANEL_PRECISION, guess)?.velocity,
-                    None => sticking_velocity(&setup, &opts, STICKING_PANEL_PRECISION)?,
+                let found = match sticking_guess(radii, &vs) {
+                    Some(guess) => {
+                        sticking_search_near(&setup, &opts, STICKING_PANEL_PRECISION, guess).map(|s| s.velocity)
+                    }
+                    None => sticking_velocity(&setup, &opts, STICKING_PANEL_PRECISION),
+                };
+                // A search whose collision the integrator cannot follow (the
+                // fastest, smallest grains at large k) leaves a gap that a
+                // note names; it does not take the other curves with it.
+                let v = match found {
+                    Ok(v) => v,
+                    Err(e) => {
+                        failed.lock().unwrap_or_else(|p| p.into_inner()).push(format!(
+                            "T_vis = {} s, R = {} µm: {e} (not drawn).",
+                            human(tv),
+                            human(r * 1e6)
+                        ));
+                        f64::NAN
+                    }
                 };
                 vs.push(v);
                 let n = done.fetch_add(20, Ordering::Relaxed) + 20;
@@ -595,7 +638,12 @@ fn sticking_panel(
     // panels above mean e_I, e_JKR and e_D.
     .family("relaxation time T_vis", "s", Scale::Log);
     for (i, tv) in t_vis.iter().enumerate() {
-        let pts = radii.iter().enumerate().map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]]).collect();
+        let pts = radii
+            .iter()
+            .enumerate()
+            .map(|(j, &r)| [r * 1e6, vs[i * radii.len() + j]])
+            .filter(|p| !p[1].is_nan())
+            .collect();
         fig = fig.with(Series::new(format!("T_vis = {} s", human(*tv)), pts, Style::Line, i % 6).at(*tv));
     }
     let jkr = radii.iter().map(|&r| [r * 1e6, p.at_radius(r).setup().pair.jkr_sticking_velocity()]).collect();
@@ -611,5 +659,43 @@ fn sticking_panel(
             ));
         }
     }
+    let mut failed = failed.into_inner().unwrap_or_else(|p| p.into_inner());
+    failed.sort();
+    notes.extend(failed);
     Ok(Panel { figure: fig, scalars: Vec::new(), notes })
+}
+
+/// The crack law at the scene's k (Greenwood's Fig. 6 form): β = G_eff/γ
+/// against the scaled crack speed v* = σ₀²T_vis|ȧ|/(E*γ), opening (β > 1)
+/// and healing (β < 1), for the full relation, (2.16) and the fits (2.17)
+/// (made for k = 0.02); the collisions use the one chosen in the
+/// parameters.
+pub fn crack_law_figure(law: &CrackLaw) -> Figure {
+    let k = law.k;
+    let (v_lo, v_hi) = (1e-4, 1e4);
+    // β from ln(β − k) − ln(1 − β) = z, and the same for 1/β: both ends
+    // of each branch are reached evenly.
+    let zs: Vec<f64> = (0..=600).map(|i| -14.0 + 24.0 * i as f64 / 600.0).collect();
+    let healing: Vec<f64> = zs.iter().map(|z| (k + z.exp()) / (1.0 + z.exp())).collect();
+    let opening: Vec<f64> = healing.iter().map(|b| 1.0 / b).collect();
+    let curve = |g: &dyn Fn(f64) -> Option<f64>, betas: &[f64]| -> Vec<[f64; 2]> {
+        let mut pts: Vec<[f64; 2]> =
+            betas.iter().filter_map(|&b| g(b).map(|v| [v.abs(), b])).filter(|p| p[0] >= v_lo && p[0] <= v_hi).collect();
+        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        pts
+    };
+    let full = CrackLaw::full(k).resolve();
+    let full_g = |b: f64| full.speed(b).map(|s| s.0);
+    let general = CrackLaw { k, relation: Relation::General };
+    let general_g = |b: f64| general.general(b).map(|s| s.0);
+    let fit_g = |b: f64| CrackLaw::low_speed_fit(b);
+    let title = format!("Crack law at k = {}", human(k));
+    const FITS: &str = "(2.17), fits for k = 0.02";
+    Figure::new("crack-law", &title, Axis::log("crack speed v* = σ₀²T_vis|ȧ|/(E*γ)", ""), Axis::log("β = G_eff/γ", ""))
+        .with(Series::new("full relation, opening", curve(&full_g, &opening), Style::Line, 0).keyed("full relation"))
+        .with(Series::new("full relation, healing", curve(&full_g, &healing), Style::Line, 0).keyed("full relation"))
+        .with(Series::new("(2.16), opening", curve(&general_g, &opening), Style::Dashed, 1).keyed("(2.16)"))
+        .with(Series::new("(2.16), healing", curve(&general_g, &healing), Style::Dashed, 1).keyed("(2.16)"))
+        .with(Series::new("(2.17), opening", curve(&fit_g, &opening), Style::Dotted, 2).keyed(FITS))
+        .with(Series::new("(2.17), healing", curve(&fit_g, &healing), Style::Dotted, 2).keyed(FITS))
 }

@@ -1,0 +1,40 @@
+//! Records which sources a build was made from: the commit, whether the
+//! work tree differed from it, and the commit's date, read from git when
+//! the sources are a git checkout ("unknown" otherwise). `provenance::build`
+//! reads them.
+
+use std::process::Command;
+
+fn git(args: &[&str]) -> Option<String> {
+    let out = Command::new("git").args(args).output().ok()?;
+    out.status.success().then(|| String::from_utf8_lossy(&out.stdout).trim().to_string())
+}
+
+fn main() {
+    let commit = git(&["rev-parse", "--short=12", "HEAD"]).filter(|c| !c.is_empty());
+    let date = commit.as_ref().and_then(|_| git(&["log", "-1", "--format=%cs"]));
+    // Tracked files that differ from the commit; untracked files do not count.
+    let dirty = commit
+        .as_ref()
+        .and_then(|_| git(&["status", "--porcelain", "--untracked-files=no"]))
+        .is_some_and(|s| !s.is_empty());
+    println!("cargo:rustc-env=GRAINSCOPE_COMMIT={}", commit.as_deref().unwrap_or("unknown"));
+    println!("cargo:rustc-env=GRAINSCOPE_COMMIT_DATE={}", date.as_deref().unwrap_or("unknown"));
+    println!("cargo:rustc-env=GRAINSCOPE_DIRTY={}", u8::from(dirty));
+    // The same as one line, for `grainscope --version`.
+    let version = std::env::var("CARGO_PKG_VERSION").unwrap_or_default();
+    println!(
+        "cargo:rustc-env=GRAINSCOPE_BUILD={version} (commit {}{}, {})",
+        commit.as_deref().unwrap_or("unknown"),
+        if dirty { " + local changes" } else { "" },
+        date.as_deref().unwrap_or("unknown")
+    );
+    if let Some(dir) = git(&["rev-parse", "--git-dir"]) {
+        for f in ["HEAD", "index"] {
+            println!("cargo:rerun-if-changed={dir}/{f}");
+        }
+    }
+    for path in ["src", "assets", "presets", "Cargo.toml", "build.rs"] {
+        println!("cargo:rerun-if-changed={path}");
+    }
+}

@@ -1,0 +1,460 @@
+//! The exact crack-speed relation of a three-element viscoelastic solid with
+//! a Dugdale (Maugis–Dugdale) cohesive zone, for any modulus ratio k.
+//!
+//! The solid has the creep compliance ψ(t)/E* with ψ(t) = 1 − (1 − k)e^{−t/T}
+//! (ψ(0) = k: the instantaneous modulus is E*/k, the relaxed one E*). At the
+//! contact edge a cohesive zone of length c carries the uniform stress
+//! σ₀ = γ/z₀ over a separation h₀ = γ/σ₀ (Dugdale). A crack moving steadily
+//! at speed V takes the time τ = c/V to cross the zone; write θ = τ/T.
+//!
+//! **Opening crack** (Schapery; Greenwood & Johnson 1981; Greenwood 2004).
+//! The stresses are the elastic ones and the opening is the hereditary
+//! integral of the elastic opening δ_e(ρ) of the uniform-stress zone. The
+//! opening where the zone ends must be h₀, which gives
+//!
+//!   1/β = ∫₀¹ ψ(τ(1 − u²)) u ln[(1 + u)/(1 − u)] du = k + (1 − k) F_L(θ),
+//!
+//! with G = K²/(2E*) the far-field (relaxed) energy release rate, β = G/γ and
+//! c = πE*βγ/(4σ₀²), so that the scaled crack speed is
+//! g = σ₀²Tȧ/(E*γ) = −(π/4)β/θ.
+//!
+//! **Healing crack.** A point meets the cohesive stress σ₀ once its faces
+//! come within h₀ and is bonded when they touch. With the relaxation form
+//! of the correspondence principle the elastic-equivalent stress in the
+//! zone is σ₀ψ(t) (t the time since the point entered it), and the elastic
+//! problem of a semi-infinite crack loaded by that stress, free of a stress
+//! singularity where the faces close and opened by h₀ where they enter the
+//! zone, gives
+//!
+//!   J₂ = ∫₀¹ ψ(τ(1 − u²)) du = k + (1 − k) F₁(θ),
+//!   J₁ = ∫₀¹ ψ(τ(1 − u²)) [2 − u ln((1 + u)/(1 − u))] du = k + (1 − k)(2F₁ − F_L),
+//!   β = J₂²/J₁,   g = (π/4)/(θ J₁).
+//!
+//! Both are exact within the Dugdale model, and depend on k only through
+//! ψ. The four functions of θ alone,
+//!
+//!   E₁(θ) = ∫₀¹ e^{−θ(1−u²)} du,   E_L(θ) = ∫₀¹ e^{−θ(1−u²)} u ln[(1+u)/(1−u)] du,
+//!
+//! and their complements F₁ = 1 − E₁, F_L = 1 − E_L (computed directly, so
+//! that neither end loses digits), are integrated once per process on a
+//! grid of ln θ; the table of a k is arithmetic on them (a few µs) and is
+//! kept in a small cache. Between nodes ln|g| is a cubic Hermite function of
+//! z = ln(β − k) − ln(1 − β) (of 1/β for the opening branch) with exact
+//! slopes at the nodes, so g(β) is continuously differentiable, monotone and
+//! smooth in k; beyond the table it continues linearly in z, where
+//! ln|g| ≈ −z + const holds to the logarithm of a logarithm.
+//!
+//! Limits: slow cracks give 1 ∓ β ≈ (1 − k)[ln(4θ) + γ_E]/(2θ) with
+//! g = ±(π/4)/θ; fast ones β − k ≈ (1 − k)θ/3 (healing) and
+//! 1/β − k ≈ (1 − k)θ/3 (opening).
+
+use std::f64::consts::PI;
+use std::sync::{Arc, Mutex, OnceLock};
+
+/// ln θ of the first and last node, and the spacing.
+const LN_THETA_MIN: f64 = -24.0;
+const LN_THETA_MAX: f64 = 24.0;
+const LN_THETA_STEP: f64 = 0.125;
+
+/// Gauss–Legendre points of one panel.
+const GAUSS_POINTS: usize = 12;
+
+/// E₁, F₁, E_L, F_L and the derivatives dE₁/dθ, dE_L/dθ at one θ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct Moments {
+    pub e1: f64,
+    pub f1: f64,
+    pub el: f64,
+    pub fl: f64,
+    pub de1: f64,
+    pub del: f64,
+}
+
+/// Gauss–Legendre nodes and weights on [−1, 1] by Newton's iteration on
+/// P_n (a dozen lines; no quadrature crate is needed for one fixed rule).
+pub(crate) fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
+    let mut rule = Vec::with_capacity(n);
+    for i in 0..n {
+        let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+        let mut dp = 1.0;
+        for _ in 0..100 {
+            let (mut p0, mut p1) = (1.0, x);
+            for j in 2..=n {
+                let p2 = ((2 * j - 1) as f64 * x * p1 - (j - 1) as f64 * p0) / j as f64;
+                p0 = p1;
+                p1 = p2;
+            }
+            dp = n as f64 * (x * p1 - p0) / (x * x - 1.0);
+            let dx = p1 / dp;
+            x -= dx;
+            if dx.abs() < 1e-16 {
+                break;
+            }
+        }
+        rule.push((x, 2.0 / ((1.0 - x * x) * dp * dp)));
+    }
+    rule
+}
+
+/// The moments at θ by composite Gauss–Legendre quadrature, written over
+/// v = 1 − u² ∈ (0, 1): E₁ = ∫ e^{−θv} dv/(2√(1−v)), E_L = ∫ e^{−θv} artanh√(1−v) dv.
+/// On (0, ½] the variable is ln v (the log singularity of artanh and the
+/// boundary layer of width 1/θ become smooth), on [½, 1) it is r = √(1−v).
+pub(crate) fn moments(theta: f64, rule: &[(f64, f64)]) -> Moments {
+    let mut m = Moments { e1: 0.0, f1: 0.0, el: 0.0, fl: 0.0, de1: 0.0, del: 0.0 };
+    let mut add = |v: f64, w1: f64, wl: f64, jac: f64| {
+        let e = (-theta * v).exp();
+        let f = -(-theta * v).exp_m1();
+        m.e1 += jac * e * w1;
+        m.f1 += jac * f * w1;
+        m.el += jac * e * wl;
+        m.fl += jac * f * wl;
+        m.de1 -= jac * v * e * w1;
+        m.del -= jac * v * e * wl;
+    };
+    // (0, ½] in t = ln v, panels of unit width down to where nothing is left.
+    let t_top = 0.5f64.ln();
+    let t_low = -(40.0 + theta.ln().max(0.0));
+    let panels = (t_top - t_low).ceil() as usize;
+    for p in 0..panels {
+        let hi = t_top - p as f64;
+        let lo = hi - 1.0;
+        let (mid, half) = (0.5 * (hi + lo), 0.5 * (hi - lo));
+        for &(x, w) in rule {
+            let t = mid + half * x;
+            let v = t.exp();
+            let r = (1.0 - v).sqrt();
+            // artanh r = ln(1 + r) − ½ ln v, without the cancellation in 1 − r.
+            let wl = (1.0 + r).ln() - 0.5 * t;
+            add(v, 0.5 / r, wl, w * half * v);
+        }
+    }
+    // [½, 1) in r = √(1 − v): dv = 2r dr, so dv/(2√(1−v)) = dr.
+    let r_top = 0.5f64.sqrt();
+    let n = 4;
+    for p in 0..n {
+        let lo = r_top * p as f64 / n as f64;
+        let hi = r_top * (p + 1) as f64 / n as f64;
+        let (mid, half) = (0.5 * (hi + lo), 0.5 * (hi - lo));
+        for &(x, w) in rule {
+            let r = mid + half * x;
+            let v = 1.0 - r * r;
+            add(v, 1.0 / (2.0 * r), r.atanh(), w * half * 2.0 * r);
+        }
+    }
+    m
+}
+
+/// The k-independent moments on the ln θ grid.
+struct Base {
+    ln_theta: Vec<f64>,
+    moments: Vec<Moments>,
+}
+
+fn base() -> &'static Base {
+    static BASE: OnceLock<Base> = OnceLock::new();
+    BASE.get_or_init(|| {
+        let rule = gauss_legendre(GAUSS_POINTS);
+        let n = ((LN_THETA_MAX - LN_THETA_MIN) / LN_THETA_STEP).round() as usize;
+        let ln_theta: Vec<f64> = (0..=n).map(|i| LN_THETA_MIN + i as f64 * LN_THETA_STEP).collect();
+        let moments = ln_theta.iter().map(|&s| moments(s.exp(), &rule)).collect();
+        Base { ln_theta, moments }
+    })
+}
+
+/// One branch of the law at one k: ln|g| against z, with slopes.
+#[derive(Debug, Clone)]
+struct Branch {
+    z: Vec<f64>,
+    y: Vec<f64>,
+    slope: Vec<f64>,
+}
+
+impl Branch {
+    /// ln|g| and d ln|g|/dz at z (cubic Hermite inside, linear outside).
+    fn eval(&self, z: f64) -> (f64, f64) {
+        let n = self.z.len();
+        if z <= self.z[0] {
+            return (self.y[0] + self.slope[0] * (z - self.z[0]), self.slope[0]);
+        }
+        if z >= self.z[n - 1] {
+            return (self.y[n - 1] + self.slope[n - 1] * (z - self.z[n - 1]), self.slope[n - 1]);
+        }
+        let i = self.z.partition_point(|&x| x <= z).clamp(1, n - 1) - 1;
+        let h = self.z[i + 1] - self.z[i];
+        let t = (z - self.z[i]) / h;
+        let (y0, y1) = (self.y[i], self.y[i + 1]);
+        let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
+        let t2 = t * t;
+        let t3 = t2 * t;
+        let y =
+            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * m1;
+        let dy = ((6.0 * t2 - 6.0 * t) * y0
+            + (3.0 * t2 - 4.0 * t + 1.0) * m0
+            + (-6.0 * t2 + 6.0 * t) * y1
+            + (3.0 * t2 - 2.0 * t) * m1)
+            / h;
+        (y, dy)
+    }
+}
+
+/// The exact Dugdale crack law at one modulus ratio k.
+#[derive(Debug, Clone)]
+pub struct FullLaw {
+    k: f64,
+    healing: Branch,
+    opening: Branch,
+}
+
+/// β, g and their θ-derivatives of the healing branch at one node.
+pub(crate) struct Node {
+    /// β (healing) or 1/β (opening).
+    #[cfg_attr(not(test), allow(dead_code))]
+    pub beta: f64,
+    pub beta_minus_k: f64,
+    pub one_minus_beta: f64,
+    pub g: f64,
+    pub dbeta: f64,
+    pub dlng: f64,
+}
+
+/// The healing crack (β < 1) at θ from its moments.
+pub(crate) fn healing_node(k: f64, theta: f64, m: &Moments) -> Node {
+    let q = 1.0 - k;
+    let j1 = k + q * (2.0 * m.f1 - m.fl);
+    let j2 = k + q * m.f1;
+    let dj1 = q * (-2.0 * m.de1 + m.del);
+    let dj2 = -q * m.de1;
+    Node {
+        beta: j2 * j2 / j1,
+        beta_minus_k: q * (q * m.f1 * m.f1 + k * m.fl) / j1,
+        one_minus_beta: q * (m.el - q * m.e1 * m.e1) / j1,
+        g: PI / 4.0 / (theta * j1),
+        dbeta: (2.0 * j2 * dj2 * j1 - j2 * j2 * dj1) / (j1 * j1),
+        dlng: -1.0 / theta - dj1 / j1,
+    }
+}
+
+/// The opening crack (β > 1) at θ, written for b = 1/β (g is −`g`).
+pub(crate) fn opening_node(k: f64, theta: f64, m: &Moments) -> Node {
+    let q = 1.0 - k;
+    let b = k + q * m.fl;
+    let db = -q * m.del;
+    Node {
+        beta: b,
+        beta_minus_k: q * m.fl,
+        one_minus_beta: q * m.el,
+        g: PI / 4.0 / (theta * b),
+        dbeta: db,
+        dlng: -1.0 / theta - db / b,
+    }
+}
+
+impl FullLaw {
+    /// Builds the law at modulus ratio `k` (0 < k < 1) from the shared moments.
+    fn new(k: f64) -> FullLaw {
+        let base = base();
+        let mut healing = Branch { z: Vec::new(), y: Vec::new(), slope: Vec::new() };
+        let mut opening = healing.clone();
+        for (&s, m) in base.ln_theta.iter().zip(&base.moments) {
+            let theta = s.exp();
+            for (branch, node) in [(&mut healing, healing_node(k, theta, m)), (&mut opening, opening_node(k, theta, m))]
+            {
+                if !(node.beta_minus_k > 0.0 && node.one_minus_beta > 0.0) {
+                    continue;
+                }
+                let z = node.beta_minus_k.ln() - node.one_minus_beta.ln();
+                let dz = node.dbeta * (1.0 / node.beta_minus_k + 1.0 / node.one_minus_beta);
+                if branch.z.last().is_some_and(|&last| z <= last) || dz <= 0.0 {
+                    continue;
+                }
+                branch.z.push(z);
+                branch.y.push(node.g.ln());
+                branch.slope.push(node.dlng / dz);
+            }
+        }
+        FullLaw { k, healing, opening }
+    }
+
+    /// The law at `k`, from a cache of recently used k.
+    pub fn at(k: f64) -> Arc<FullLaw> {
+        static CACHE: Mutex<Vec<Arc<FullLaw>>> = Mutex::new(Vec::new());
+        let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+        if let Some(law) = cache.iter().find(|l| l.k.to_bits() == k.to_bits()) {
+            return law.clone();
+        }
+        let law = Arc::new(FullLaw::new(k));
+        if cache.len() >= 64 {
+            cache.remove(0);
+        }
+        cache.push(law.clone());
+        law
+    }
+
+    /// g(β) = σ₀²T ȧ/(E*γ) and dg/dβ for k < β < 1/k.
+    pub fn speed(&self, beta: f64) -> (f64, f64) {
+        let k = self.k;
+        if beta < 1.0 {
+            let (bk, ob) = (beta - k, 1.0 - beta);
+            let (y, dy) = self.healing.eval(bk.ln() - ob.ln());
+            let g = y.exp();
+            (g, g * dy * (1.0 / bk + 1.0 / ob))
+        } else if beta > 1.0 {
+            let b = 1.0 / beta;
+            let (bk, ob) = (b - k, 1.0 - b);
+            let (y, dy) = self.opening.eval(bk.ln() - ob.ln());
+            let g = -y.exp();
+            let dg_db = g * dy * (1.0 / bk + 1.0 / ob);
+            (g, -dg_db * b * b)
+        } else {
+            (0.0, 0.0)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// E₁, F₁, E_L, F_L, dE₁/dθ, dE_L/dθ at θ, integrated with mpmath at 30 digits.
+    const REFERENCE: [(f64, [f64; 6]); 8] = [
+        (
+            1e-9,
+            [
+                0.99999999933333333,
+                6.666666664e-10,
+                0.99999999966666667,
+                3.3333333324444444e-10,
+                -0.66666666613333333,
+                -0.33333333315555556,
+            ],
+        ),
+        (
+            1e-4,
+            [
+                0.99993333599992381,
+                6.6664000076188783e-5,
+                0.99996666755553651,
+                3.3332444463491725e-5,
+                -0.66661333561897989,
+                -0.33331555612697058,
+            ],
+        ),
+        (
+            0.1,
+            [
+                0.93592547232883117,
+                0.064074527671168822,
+                0.96753684149705082,
+                0.032463158502949183,
+                -0.61555283397298706,
+                -0.31611369168219639,
+            ],
+        ),
+        (
+            1.0,
+            [
+                0.53807950691276842,
+                0.46192049308723158,
+                0.7394416300990793,
+                0.2605583699009207,
+                -0.30711926036915263,
+                -0.20136212318631088,
+            ],
+        ),
+        (
+            10.0,
+            [
+                0.053037580992901645,
+                0.94696241900709835,
+                0.21057151592798644,
+                0.78942848407201356,
+                -0.0056894600425467271,
+                -0.015753393493508479,
+            ],
+        ),
+        (
+            1e3,
+            [
+                0.0005002503759407961,
+                0.9994997496240592,
+                0.004435382464688457,
+                0.99556461753531154,
+                -5.0050112876649542e-7,
+                -3.9351320887476609e-6,
+            ],
+        ),
+        (
+            1e6,
+            [
+                5.00000250000375e-7,
+                0.99999949999974999,
+                7.8895100419926613e-6,
+                0.99999211048995801,
+                -5.00000500001125e-13,
+                -7.3895097919922863e-12,
+            ],
+        ),
+        (
+            1e9,
+            [
+                5.0000000025e-10,
+                0.99999999949999999,
+                1.1343387931233917e-8,
+                0.99999998865661207,
+                -5.000000005e-19,
+                -1.0843387930983917e-17,
+            ],
+        ),
+    ];
+
+    #[test]
+    fn moments_match_a_thirty_digit_quadrature() {
+        let rule = gauss_legendre(GAUSS_POINTS);
+        for (theta, want) in REFERENCE {
+            let m = moments(theta, &rule);
+            let got = [m.e1, m.f1, m.el, m.fl, m.de1, m.del];
+            for (g, w) in got.iter().zip(want) {
+                assert!((g / w - 1.0).abs() < 1e-12, "θ = {theta}: {got:?} against {want:?}");
+            }
+        }
+    }
+
+    #[test]
+    fn gauss_legendre_integrates_polynomials_exactly() {
+        let rule = gauss_legendre(GAUSS_POINTS);
+        for p in 0..(2 * GAUSS_POINTS) {
+            let sum: f64 = rule.iter().map(|(x, w)| w * x.powi(p as i32)).sum();
+            let exact = if p % 2 == 1 { 0.0 } else { 2.0 / (p as f64 + 1.0) };
+            assert!((sum - exact).abs() < 1e-14, "x^{p}: {sum} against {exact}");
+        }
+    }
+
+    #[test]
+    fn interpolation_between_nodes_matches_the_relation() {
+        // Halfway between two nodes of ln θ the interpolated g(β) must equal
+        // the relation computed directly there.
+        let rule = gauss_legendre(GAUSS_POINTS);
+        for k in [0.005, 0.02, 0.1, 0.3] {
+            let law = FullLaw::new(k);
+            let mut worst: f64 = 0.0;
+            let mut s = LN_THETA_MIN + 0.5 * LN_THETA_STEP;
+            while s < LN_THETA_MAX {
+                let theta = s.exp();
+                let m = moments(theta, &rule);
+                let h = healing_node(k, theta, &m);
+                if h.one_minus_beta > 1e-8 && h.beta_minus_k > 1e-8 * k {
+                    let (g, _) = law.speed(h.beta);
+                    worst = worst.max((g / h.g - 1.0).abs());
+                }
+                let o = opening_node(k, theta, &m);
+                if o.one_minus_beta > 1e-8 && o.beta_minus_k > 1e-8 * k {
+                    let (g, _) = law.speed(1.0 / o.beta);
+                    worst = worst.max((-g / o.g - 1.0).abs());
+                }
+                s += LN_THETA_STEP;
+            }
+            assert!(worst < 2e-6, "k = {k}: largest relative error of g between nodes {worst:e}");
+        }
+    }
+}

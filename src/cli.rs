@@ -228,9 +228,15 @@ fn tell(text: impl std::fmt::Display) {
     let _ = writeln!(std::io::stderr(), "{text}");
 }
 
-fn print_scalars(out: &SceneOutput) -> Result<()> {
+fn print_scalars(out: &SceneOutput, censored: &[scene::Censored]) -> Result<()> {
     for s in &out.scalars {
-        say(format_args!("{:<45} {:>12.6e} {}", s.label, s.value, s.unit))?;
+        match scene::status(censored, s.key, s.value) {
+            scene::Status::Value => say(format_args!("{:<45} {:>12.6e} {}", s.label, s.value, s.unit))?,
+            scene::Status::Above { bound, why } => {
+                say(format_args!("{:<45} > {:>10.4e} {} (a lower bound: {why})", s.label, bound, s.unit))?
+            }
+            scene::Status::Undefined { why } => say(format_args!("{:<45} {:>12} ({why})", s.label, "undefined"))?,
+        }
     }
     for n in &out.notes {
         say(format_args!("note: {n}"))?;
@@ -258,7 +264,12 @@ pub fn run(command: Command) -> Result<()> {
                     tell(format_args!("wrote {} files to {}", files.len(), dir.display()));
                 }
             }
-            if json { say(serde_json::to_string(&result.scalars_json())?) } else { print_scalars(&result) }
+            let censored = p.scene.censored();
+            if json {
+                say(serde_json::to_string(&result.scalars_json(censored))?)
+            } else {
+                print_scalars(&result, censored)
+            }
         }
         Command::Sweep { preset, vary, set, scalars, shard, out } => {
             let mut p = resolve(&preset)?;
@@ -293,11 +304,13 @@ pub fn run(command: Command) -> Result<()> {
                     .map(|r| {
                         serde_json::json!({"key": r.key, "unit": r.unit, "value": r.value, "elasticity": r.elasticity,
                             "converged": r.converged, "low": r.range[0], "high": r.range[1],
-                            "low_sd": r.range_sd[0], "high_sd": r.range_sd[1], "below_noise": r.below_noise})
+                            "low_sd": r.range_sd[0], "high_sd": r.range_sd[1], "below_noise": r.below_noise,
+                            "low_status": r.range_status[0], "high_status": r.range_status[1]})
                     })
                     .collect();
                 return say(serde_json::json!({"output": output, "value": m.here.mean, "sd": m.here.sd,
-                    "seeds": m.here.runs, "factor": factor, "parameters": rows}));
+                    "seeds": m.here.runs, "factor": factor, "parameters": rows,
+                    "program": crate::provenance::program(), "preset": p.to_ron()?}));
             }
             say(format_args!("{}", crate::sensitivity::matters_text(&m, &output, factor)))
         }

@@ -11,7 +11,9 @@ use anyhow::{Context, Result};
 use std::path::{Path, PathBuf};
 
 /// Writes every figure of `out` as CSV, SVG and PNG into `dir`, plus the
-/// scalars as JSON, all or nothing: every file is rendered and staged before
+/// scalars as JSON and, with the `preset`, `preset.ron` (its first line names
+/// the build that computed the folder; `grainscope run DIR/preset.ron`
+/// computes it again), all or nothing: every file is rendered and staged before
 /// any is put in place, so a failure (a full disk, a read-only folder) leaves
 /// the folder as it was and no temporary file behind. With the `preset` that
 /// produced `out`, the figures show its time cursor and every file carries
@@ -23,8 +25,13 @@ pub fn write_outputs(out: &SceneOutput, preset: Option<&Preset>, dir: &Path) -> 
     let mut set = FileSet::new();
     let staged = (|| -> Result<()> {
         stage_figures(&mut set, &figures, dir, "", stamp.as_ref())?;
-        let text = serde_json::to_string_pretty(&out.scalars_json())?;
+        let censored = preset.map_or(&[][..], |p| p.scene.censored());
+        let text = serde_json::to_string_pretty(&out.scalars_json(censored))?;
         set.stage(&dir.join("scalars.json"), text.as_bytes())?;
+        if let Some(p) = preset {
+            let ron = format!("// computed by {}\n{}", crate::provenance::program(), p.to_ron()?);
+            set.stage(&dir.join("preset.ron"), ron.as_bytes())?;
+        }
         Ok(())
     })();
     if let Err(e) = staged {

@@ -78,14 +78,21 @@ fn cache() -> &'static Mutex<HashMap<String, Option<f64>>> {
 }
 
 /// Scalar `output` of one computation at `params`, from the cache where it
-/// was computed before. Non-finite values count as undefined.
+/// was computed before. Non-finite values count as undefined (what they
+/// mean, a bound or no value, is [`raw`]'s).
 fn single(params: &SceneParams, output: &str, progress: &Progress) -> Result<Option<f64>, SceneError> {
+    Ok(raw(params, output, progress)?.filter(|x| x.is_finite()))
+}
+
+/// Scalar `output` at `params` as the scene gives it, non-finite values
+/// included (cached).
+fn raw(params: &SceneParams, output: &str, progress: &Progress) -> Result<Option<f64>, SceneError> {
     // Debug text of the parameters writes every float exactly: equal text, equal point.
     let key = format!("{output}\u{1f}{params:?}");
     if let Some(v) = cache().lock().ok().and_then(|c| c.get(&key).copied()) {
         return Ok(v);
     }
-    let v = scene::scalar(params, output, &progress.quiet_child())?.filter(|x| x.is_finite());
+    let v = scene::scalar(params, output, &progress.quiet_child())?;
     if let Ok(mut c) = cache().lock() {
         if c.len() >= CACHE_LIMIT {
             c.clear();
@@ -189,6 +196,26 @@ pub struct Influence {
     /// error of the difference (Monte Carlo): an effect the seeds cannot
     /// tell from noise.
     pub below_noise: bool,
+    /// Why an end of `range` has no value: "" where it has one, else
+    /// "> BOUND: WHY" (only a bound is known), "undefined: WHY", or
+    /// "refused or failed" (the point could not be computed).
+    #[serde(default)]
+    pub range_status: [String; 2],
+}
+
+/// What an end of a parameter's range is, where it has no value.
+fn end_status(point: Option<&SceneParams>, output: &str, progress: &Progress) -> String {
+    let Some(p) = point else { return "refused or failed".into() };
+    match raw(p, output, progress) {
+        Ok(Some(v)) => match scene::status(p.censored(), output, v) {
+            scene::Status::Value => String::new(),
+            scene::Status::Above { bound, why } => format!("> {}: {why}", crate::figure::human(bound)),
+            scene::Status::Undefined { why } => format!("undefined: {why}"),
+        },
+        // Monte Carlo ends are means over seeds: one undefined seed leaves the mean undefined.
+        Ok(None) => "undefined".into(),
+        Err(_) => "refused or failed".into(),
+    }
 }
 
 /// What moves a scalar: its value here and every parameter's influence.
@@ -268,8 +295,17 @@ pub fn what_matters(base: &SceneParams, output: &str, factor: f64, progress: &Pr
             // Undefined here, or no such scalar at all: say which.
             let out = scene::compute(base, progress)?;
             let id = base.info().id;
-            let why = if out.scalar(output).is_some() {
-                format!("'{output}' is undefined at the current point of {id}")
+            let why = if let Some(v) = out.scalar(output) {
+                match scene::status(base.censored(), output, v) {
+                    scene::Status::Above { bound, why } => format!(
+                        "'{output}' is only a bound at the current point of {id} (> {}: {why}): move the point to where it has a value",
+                        crate::figure::human(bound)
+                    ),
+                    scene::Status::Undefined { why } => {
+                        format!("'{output}' is undefined at the current point of {id} ({why})")
+                    }
+                    scene::Status::Value => format!("'{output}' is undefined at the current point of {id}"),
+                }
             } else {
                 let keys: Vec<&str> = out.scalars.iter().map(|s| s.key).collect();
                 format!("no scalar '{output}' in {id} (its scalars: {})", keys.join(", "))
@@ -327,6 +363,13 @@ pub fn what_matters(base: &SceneParams, output: &str, factor: f64, progress: &Pr
                 range: [r[4].mean, r[5].mean],
                 range_sd: [r[4].sd, r[5].sd],
                 below_noise,
+                range_status: [4, 5].map(|e| {
+                    if r[e].mean.is_some() {
+                        String::new()
+                    } else {
+                        end_status(points[k * offsets.len() + e].as_ref(), output, progress)
+                    }
+                }),
             }
         })
         .collect();
@@ -352,7 +395,12 @@ pub fn matters_text(m: &Matters, output: &str, factor: f64) -> String {
     let num = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.5e}"));
     for r in &m.rows {
         let e = r.elasticity.map_or("-".to_string(), |e| format!("{e:+.4}{}", if r.converged { "" } else { "?" }));
-        let noise = if r.below_noise { "  below the noise" } else { "" };
+        let mut noise = if r.below_noise { "  below the noise".to_string() } else { String::new() };
+        for (end, why) in ["p/f", "p*f"].iter().zip(&r.range_status) {
+            if !why.is_empty() {
+                let _ = write!(noise, "  at {end}: {why}");
+            }
+        }
         let _ = writeln!(
             t,
             "{:<26} {:>12} {:>11} {:>12} {:>12}{noise}",
@@ -373,12 +421,14 @@ pub fn matters_csv(m: &Matters, output: &str, factor: f64) -> String {
     let mut t = format!("# {output} = {} (sd {}), factor {factor}\n", num(m.here.mean), num(m.here.sd));
     t.push_str(
         "parameter,unit,value,elasticity,converged,x_at_p_over_factor,x_at_p_times_factor,\
-         sd_at_p_over_factor,sd_at_p_times_factor,below_noise\n",
+         sd_at_p_over_factor,sd_at_p_times_factor,below_noise,status_at_p_over_factor,status_at_p_times_factor\n",
     );
+    let quoted =
+        |s: &str| if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() };
     for r in &m.rows {
         let _ = writeln!(
             t,
-            "{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{}",
             r.key,
             r.unit,
             r.value,
@@ -388,7 +438,9 @@ pub fn matters_csv(m: &Matters, output: &str, factor: f64) -> String {
             num(r.range[1]),
             num(r.range_sd[0]),
             num(r.range_sd[1]),
-            r.below_noise
+            r.below_noise,
+            quoted(&r.range_status[0]),
+            quoted(&r.range_status[1])
         );
     }
     t

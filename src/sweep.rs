@@ -10,7 +10,7 @@
 //! row and the sweep goes on. Nothing here touches files: the command line
 //! reads and writes the table.
 
-use crate::scene::{self, ControlKind, Progress, SceneError, SceneOutput, SceneParams};
+use crate::scene::{self, ControlKind, Progress, SceneError, SceneOutput, SceneParams, Status};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -298,9 +298,20 @@ pub struct Columns {
     pub keys: Vec<String>,
     /// Their units (empty: dimensionless).
     pub units: Vec<String>,
+    /// Whether the scalar can be a bound or undefined (the scene declares
+    /// it, see [`crate::scene::Scene::CENSORED`]): such a column is followed
+    /// by a `KEY status` column.
+    pub censored: Vec<bool>,
 }
 
 impl Columns {
+    /// The columns `keys` with their `units` for a sweep of `base`'s scene.
+    pub fn new(keys: Vec<String>, units: Vec<String>, base: &SceneParams) -> Columns {
+        let declared = base.censored();
+        let censored = keys.iter().map(|k| declared.iter().any(|c| c.key == k)).collect();
+        Columns { keys, units, censored }
+    }
+
     /// The columns of the scene's result at the plan's base parameters: all
     /// its scalars, or those named in `only` (in that order).
     pub fn of(plan: &Plan, only: &[String], progress: &Progress) -> Result<Columns, SweepError> {
@@ -319,15 +330,17 @@ impl Columns {
                 })
                 .collect::<Result<_, _>>()?
         };
-        Ok(Columns {
-            keys: chosen.iter().map(|c| c.0.clone()).collect(),
-            units: chosen.into_iter().map(|c| c.1).collect(),
-        })
+        Ok(Columns::new(
+            chosen.iter().map(|c| c.0.clone()).collect(),
+            chosen.into_iter().map(|c| c.1).collect(),
+            &plan.base,
+        ))
     }
 }
 
 /// One point's row: its number, varied values, scalars (None where the scene
-/// reports none: a gap, not a zero) and its error, if it failed.
+/// reports none: a gap, not a zero; the bound where only a bound is known),
+/// their status and its error, if it failed.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Row {
     /// The point's number in the plan.
@@ -336,6 +349,9 @@ pub struct Row {
     pub values: Vec<f64>,
     /// The scalars, in column order.
     pub scalars: Vec<Option<f64>>,
+    /// For each scalar, "" for a value, else "above: WHY" (the scalar is the
+    /// bound) or "undefined: WHY".
+    pub status: Vec<String>,
     /// Why the point has no result.
     pub error: Option<String>,
 }
@@ -375,14 +391,27 @@ pub fn for_points<T: Send>(
 /// The row of point `index` from its result.
 fn row_of(plan: &Plan, columns: &Columns, index: usize, result: Result<SceneOutput, SceneError>) -> Row {
     let values = plan.point(index);
+    let n = columns.keys.len();
     match result {
-        Ok(out) => Row {
-            index,
-            values,
-            scalars: columns.keys.iter().map(|k| out.scalar(k).filter(|v| v.is_finite())).collect(),
-            error: None,
-        },
-        Err(e) => Row { index, values, scalars: vec![None; columns.keys.len()], error: Some(e.to_string()) },
+        Ok(out) => {
+            let declared = plan.base.censored();
+            let (scalars, status) = columns
+                .keys
+                .iter()
+                .map(|k| match out.scalar(k) {
+                    Some(v) => match scene::status(declared, k, v) {
+                        Status::Value => (Some(v), String::new()),
+                        Status::Above { bound, why } => (Some(bound), format!("above: {why}")),
+                        Status::Undefined { why } => (None, format!("undefined: {why}")),
+                    },
+                    None => (None, String::new()),
+                })
+                .unzip();
+            Row { index, values, scalars, status, error: None }
+        }
+        Err(e) => {
+            Row { index, values, scalars: vec![None; n], status: vec![String::new(); n], error: Some(e.to_string()) }
+        }
     }
 }
 
@@ -424,21 +453,30 @@ fn field(s: &str) -> String {
 pub fn header(plan: &Plan, columns: &Columns) -> String {
     let mut h = vec!["point".to_string()];
     h.extend(plan.vary.iter().zip(&plan.units).map(|(v, u)| titled(&v.key, u)));
-    h.extend(columns.keys.iter().zip(&columns.units).map(|(k, u)| titled(k, u)));
+    for ((k, u), censored) in columns.keys.iter().zip(&columns.units).zip(&columns.censored) {
+        h.push(titled(k, u));
+        if *censored {
+            h.push(format!("{k} status"));
+        }
+    }
     h.push("error".into());
     h.iter().map(|s| field(s)).collect::<Vec<_>>().join(",")
 }
 
 /// One row as a line of the table (without line end).
-pub fn line(row: &Row) -> String {
+pub fn line(row: &Row, columns: &Columns) -> String {
     let mut s = row.index.to_string();
     for v in &row.values {
         let _ = write!(s, ",{}", number(*v));
     }
-    for v in &row.scalars {
+    for (k, v) in row.scalars.iter().enumerate() {
         s.push(',');
         if let Some(v) = v {
             s.push_str(&number(*v));
+        }
+        if columns.censored.get(k).copied().unwrap_or(false) {
+            s.push(',');
+            s.push_str(&field(row.status.get(k).map_or("", String::as_str)));
         }
     }
     s.push(',');
@@ -453,7 +491,7 @@ pub fn table(plan: &Plan, columns: &Columns, rows: &[Row]) -> String {
     let mut s = header(plan, columns);
     s.push('\n');
     for r in rows {
-        s.push_str(&line(r));
+        s.push_str(&line(r, columns));
         s.push('\n');
     }
     s
@@ -477,7 +515,8 @@ pub fn read_rows(text: &str, plan: &Plan, columns: &Columns) -> Result<Vec<Row>,
     }
     let body: String = lines.filter(|l| l.ends_with('\n')).collect();
     let mut reader = csv::ReaderBuilder::new().has_headers(false).flexible(true).from_reader(body.as_bytes());
-    let width = 2 + plan.vary.len() + columns.keys.len();
+    let statuses = columns.censored.iter().filter(|c| **c).count();
+    let width = 2 + plan.vary.len() + columns.keys.len() + statuses;
     let mut rows = Vec::new();
     for (n, record) in reader.records().enumerate() {
         let bad = |why: &str| SweepError::Table(format!("row {}: {why}", n + 1));
@@ -494,14 +533,22 @@ pub fn read_rows(text: &str, plan: &Plan, columns: &Columns) -> Result<Vec<Row>,
         if values != plan.point(index) {
             return Err(bad(&format!("point {index} has other values than this sweep gives it")));
         }
-        let scalars = (0..columns.keys.len())
-            .map(|k| {
-                let s = &record[1 + plan.vary.len() + k];
-                if s.is_empty() { Ok(None) } else { num(s).map(Some) }
-            })
-            .collect::<Result<Vec<_>, _>>()?;
+        let mut at = 1 + plan.vary.len();
+        let mut scalars = Vec::with_capacity(columns.keys.len());
+        let mut status = Vec::with_capacity(columns.keys.len());
+        for censored in &columns.censored {
+            let s = &record[at];
+            scalars.push(if s.is_empty() { None } else { Some(num(s)?) });
+            at += 1;
+            if *censored {
+                status.push(record[at].to_string());
+                at += 1;
+            } else {
+                status.push(String::new());
+            }
+        }
         let error = Some(record[width - 1].to_string()).filter(|e| !e.is_empty());
-        rows.push(Row { index, values, scalars, error });
+        rows.push(Row { index, values, scalars, status, error });
     }
     Ok(rows)
 }
@@ -590,22 +637,38 @@ mod tests {
     #[test]
     fn a_failed_point_and_a_gap_survive_the_table() {
         let p = plan();
-        let columns = Columns { keys: vec!["e".into(), "v_s".into()], units: vec![String::new(), "m s^-1".into()] };
+        let columns = Columns {
+            keys: vec!["e".into(), "v_s".into()],
+            units: vec![String::new(), "m s^-1".into()],
+            censored: vec![false, true],
+        };
+        let none = || vec![String::new(), String::new()];
         let rows = vec![
-            Row { index: 0, values: p.point(0), scalars: vec![Some(0.5), None], error: None },
+            Row { index: 0, values: p.point(0), scalars: vec![Some(0.5), None], status: none(), error: None },
+            Row {
+                index: 1,
+                values: p.point(1),
+                scalars: vec![Some(0.1), Some(1e4)],
+                status: vec![String::new(), "above: no bounce, up to 10⁴ m/s".into()],
+                error: None,
+            },
             Row {
                 index: 3,
                 values: p.point(3),
                 scalars: vec![None, None],
+                status: none(),
                 error: Some("no \"bounce\", at all".into()),
             },
         ];
         let text = table(&p, &columns, &rows);
-        assert!(text.starts_with("point,velocity [m s^-1],surface_energy [J m^-2],e,v_s [m s^-1],error\n"), "{text}");
+        assert!(
+            text.starts_with("point,velocity [m s^-1],surface_energy [J m^-2],e,v_s [m s^-1],v_s status,error\n"),
+            "{text}"
+        );
         assert_eq!(read_rows(&text, &p, &columns).expect("reads"), rows);
         // A line cut short by a crash is skipped, not misread.
         let cut = &text[..text.len() - 5];
-        assert_eq!(read_rows(cut, &p, &columns).expect("reads"), rows[..1]);
+        assert_eq!(read_rows(cut, &p, &columns).expect("reads"), rows[..2]);
     }
 
     #[test]

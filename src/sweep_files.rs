@@ -29,13 +29,30 @@ pub struct SweepFile {
     pub units: Vec<String>,
     /// This folder's shard, `K/N`.
     pub shard: String,
+    /// The build that computed the rows (`grainscope --version`); several,
+    /// separated by "; ", where a run was resumed or shards merged across
+    /// builds. Empty in folders written before builds were recorded.
+    #[serde(default)]
+    pub program: String,
+}
+
+/// `earlier` and `now` as one record of builds: `now` alone where they agree.
+fn builds(earlier: &str, now: &str) -> String {
+    let mut all: Vec<&str> = earlier.split("; ").filter(|b| !b.is_empty()).collect();
+    for b in now.split("; ").filter(|b| !b.is_empty()) {
+        if !all.contains(&b) {
+            all.push(b);
+        }
+    }
+    all.join("; ")
 }
 
 impl SweepFile {
     fn plan(&self) -> Result<(Plan, Columns)> {
         let vary = self.vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>()?;
         let plan = Plan::new(self.preset.scene.clone(), vary)?;
-        Ok((plan, Columns { keys: self.scalars.clone(), units: self.units.clone() }))
+        let columns = Columns::new(self.scalars.clone(), self.units.clone(), &plan.base);
+        Ok((plan, columns))
     }
 
     fn read(dir: &Path) -> Result<SweepFile> {
@@ -76,23 +93,26 @@ pub fn run(
     let plan = Plan::new(preset.scene.clone(), parsed)?;
     let progress = Progress::default();
     let columns = Columns::of(&plan, scalars, &progress)?;
-    let file = SweepFile {
+    let mut file = SweepFile {
         preset,
         vary: plan.vary.iter().map(Vary::text).collect(),
         scalars: columns.keys.clone(),
         units: columns.units.clone(),
         shard: format!("{}/{}", shard.k, shard.n),
+        program: crate::provenance::program(),
     };
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let ron_path = out.join("sweep.ron");
     if ron_path.exists() {
         let before = SweepFile::read(out)?;
-        if before != file {
+        if (SweepFile { program: file.program.clone(), ..before.clone() }) != file {
             bail!(
                 "{} holds another sweep (other preset, ranges, scalars or shard); choose another --out",
                 out.display()
             );
         }
+        // Rows resumed from another build: the folder names both.
+        file.program = builds(&before.program, &file.program);
     }
     write_atomically(&ron_path, &file.bytes()?)?;
     // Rows already done: the finished table, and rows appended by a run cut short.
@@ -126,7 +146,7 @@ pub fn run(
     let total = mine.len();
     let append = |row: &Row| {
         if let Ok(mut f) = partial.lock() {
-            let _ = writeln!(f, "{}", sweep::line(row));
+            let _ = writeln!(f, "{}", sweep::line(row, &columns));
             let _ = f.flush();
         }
         report(count.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1, total);
@@ -163,15 +183,17 @@ fn finish(plan: &Plan, columns: &Columns, rows: &[Row], out: &Path, whole: bool)
 /// Merges shard folders into `out`: exactly the files of the unsharded run.
 pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Vec<PathBuf>> {
     let Some(first) = dirs.first() else { bail!("no shard folders given") };
-    let head = SweepFile::read(first)?;
+    let mut head = SweepFile::read(first)?;
     let (plan, columns) = head.plan()?;
     let mut rows: Vec<Row> = Vec::new();
+    let mut program = String::new();
     for dir in dirs {
         let f = SweepFile::read(dir)?;
-        let same = SweepFile { shard: head.shard.clone(), ..f.clone() } == head;
+        let same = SweepFile { shard: head.shard.clone(), program: head.program.clone(), ..f.clone() } == head;
         if !same {
             bail!("{} is a shard of another sweep than {}", dir.display(), first.display());
         }
+        program = builds(&program, &f.program);
         let path = dir.join("sweep.csv");
         let text = std::fs::read_to_string(&path)
             .with_context(|| format!("{} has no sweep.csv: is that shard finished?", dir.display()))?;
@@ -189,6 +211,7 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Vec<PathBuf>> {
         );
     }
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    head.program = program;
     let whole = SweepFile { shard: "1/1".into(), ..head };
     write_atomically(&out.join("sweep.ron"), &whole.bytes()?)?;
     let mut files = vec![out.join("sweep.ron")];

@@ -30,9 +30,18 @@ fn out_writes_csv_svg_png() {
     let d = dir.path().to_str().expect("utf8");
     let out = grainscope(&["run", "presets/adhesion-ice-monomers.ron", "--out", d]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
-    for f in ["collision-regimes.csv", "collision-regimes.svg", "collision-regimes.png", "scalars.json"] {
+    for f in ["collision-regimes.csv", "collision-regimes.svg", "collision-regimes.png", "scalars.json", "preset.ron"] {
         assert!(dir.path().join(f).exists(), "{f}");
     }
+    // The folder names the build that made it, and its preset computes it again.
+    let preset = std::fs::read_to_string(dir.path().join("preset.ron")).expect("preset.ron");
+    let first = preset.lines().next().expect("a line");
+    assert!(first.starts_with("// computed by grainscope ") && first.contains("(commit "), "{first}");
+    let again = grainscope(&["run", dir.path().join("preset.ron").to_str().expect("utf8"), "--json"]);
+    let before = std::fs::read_to_string(dir.path().join("scalars.json")).expect("scalars");
+    let a: serde_json::Value = serde_json::from_slice(&again.stdout).expect("json");
+    let b: serde_json::Value = serde_json::from_str(&before).expect("json");
+    assert_eq!(a, b);
 }
 
 #[test]

@@ -35,6 +35,7 @@ __version__: str = _native.__version__
 
 __all__ = [
     "Axis",
+    "Censored",
     "Figure",
     "Heatmap",
     "Parameter",
@@ -328,6 +329,39 @@ def _pandas(what: str) -> Any:
     return pandas
 
 
+class Censored(float):
+    """A scalar that has no value, as a float that says so: a bound
+    (`status` "above": the value lies above the float, the bound) or
+    undefined (`status` "undefined": the float is NaN). `why` gives the
+    reason. Arithmetic sees the plain float."""
+
+    status: str
+    why: str
+
+    def __new__(cls, value: float, status: str, why: str) -> "Censored":
+        self = super().__new__(cls, value)
+        self.status = status
+        self.why = why
+        return self
+
+    def __repr__(self) -> str:
+        if self.status == "above":
+            return f"> {float(self)!r} ({self.why})"
+        return f"undefined ({self.why})"
+
+    __str__ = __repr__
+
+
+def _scalar(value: Any) -> Any:
+    """A scalar of `run --json`: a float, or a `Censored` for a bound or an
+    undefined value."""
+    if isinstance(value, Mapping):
+        status = str(value.get("status", "undefined"))
+        bound = value.get("bound")
+        return Censored(float(bound) if bound is not None else math.nan, status, str(value.get("why", "")))
+    return value
+
+
 class Result:
     """A computed scene: scalars, figures, the preset that reproduces it."""
 
@@ -337,9 +371,15 @@ class Result:
         self.scene: str = computed.scene
         #: The preset's title.
         self.title: str = computed.title
-        #: The scalars, keyed exactly as `grainscope run --json` (SI units;
-        #: None where the command line prints null).
-        self.scalars: Dict[str, Optional[float]] = json.loads(computed.scalars_json())
+        #: The scalars, keyed exactly as `grainscope run --json` (SI units).
+        #: A bound or an undefined value is a `Censored` float: the bound
+        #: (or NaN) with its `status` ("above", "undefined") and `why`.
+        self.scalars: Dict[str, float] = {k: _scalar(v) for k, v in json.loads(computed.scalars_json()).items()}
+        #: Each scalar's status: "value", "above" (only a lower bound is
+        #: known) or "undefined".
+        self.status: Dict[str, str] = {
+            k: (v.status if isinstance(v, Censored) else "value") for k, v in self.scalars.items()
+        }
         listed = computed.scalars()
         #: The unit of each scalar ("" if dimensionless).
         self.units: Dict[str, str] = {k: u for k, _, _, u in listed}
@@ -349,6 +389,8 @@ class Result:
         self.warnings: List[str] = computed.warnings()
         #: Notes the scene gave.
         self.notes: List[str] = computed.notes()
+        #: The build that computed it: "grainscope VERSION (commit …, DATE)".
+        self.program: str = _native.program()
 
     @functools.cached_property
     def figures(self) -> List[Figure]:
@@ -377,6 +419,8 @@ class Result:
                 frames.append(pd.DataFrame({"figure": f.id, "series": s.name, "x": s.x, "y": s.y}))
         df = pd.concat(frames, ignore_index=True) if frames else pd.DataFrame(columns=["figure", "series", "x", "y"])
         df.attrs["axes"] = {f.id: (f.x.title, f.y.title) for f in self.figures}
+        df.attrs["program"] = self.program
+        df.attrs["preset"] = self.preset
         return df
 
     def save(self, folder: Any) -> List[str]:
@@ -489,8 +533,12 @@ def sweep(
     points over its workers in `shards` deterministic slices (one per worker
     thread by default); the table is the same as computed here.
 
-    Returns a pandas DataFrame when pandas is installed, else a dict of
-    numpy arrays (the `error` column a list of texts or None).
+    Returns a pandas DataFrame when pandas is installed (its `attrs` name
+    the build, "program", and the preset, "preset"), else a dict of numpy
+    arrays (the `error` and `KEY status` columns lists of texts or None).
+    A scalar that can be a bound or undefined has a `KEY status` column
+    beside it: empty for a value, else "above: WHY" (the value column holds
+    the bound) or "undefined: WHY".
     """
     if not isinstance(vary, Mapping):
         raise TypeError(f"vary takes a mapping of parameter names to values, e.g. vary={{'velocity': gs.log(1, 10, 5)}}, not {type(vary).__name__}")
@@ -512,7 +560,12 @@ def sweep(
         table = _native.merge_tables(preset_ron, texts, chosen, client.gather(futures))
     else:
         table = _native.sweep_table(preset_ron, texts, chosen, 1, 1)
-    return _table(table)
+    t = _table(table)
+    if hasattr(t, "attrs"):
+        # Which build and preset made the table (a DataFrame's attrs).
+        t.attrs["program"] = _native.program()
+        t.attrs["preset"] = preset_ron
+    return t
 
 
 def _table(text: str) -> Any:
@@ -521,18 +574,20 @@ def _table(text: str) -> Any:
         import pandas as pd
     except ImportError:
         pd = None
+    texts = [n for n in next(csv.reader(io.StringIO(text))) if n == "error" or n.endswith(" status")]
     if pd is not None:
-        df = pd.read_csv(io.StringIO(text), dtype={"error": "string"})
+        df = pd.read_csv(io.StringIO(text), dtype={n: "string" for n in texts})
         return df
     rows = list(csv.reader(io.StringIO(text)))
     header, body = rows[0], rows[1:]
     columns: Dict[str, Any] = {}
     for j, name in enumerate(header):
         cells = [r[j] for r in body]
-        if name == "error":
+        if name in texts:
             columns[name] = [c or None for c in cells]
         elif name == "point":
             columns[name] = np.array([int(c) for c in cells], dtype=np.int64)
         else:
             columns[name] = np.array([float(c) if c else math.nan for c in cells], dtype=float)
     return columns
+

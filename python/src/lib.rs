@@ -142,6 +142,12 @@ fn from_ron(text: &str) -> PyResult<Preset> {
 }
 
 /// The shipped presets: (name, scene id, title).
+/// The build: "grainscope VERSION (commit …, DATE)", as every exported file names it.
+#[pyfunction]
+fn program() -> String {
+    grainscope::provenance::program()
+}
+
 #[pyfunction]
 fn presets() -> PyResult<Vec<(String, String, String)>> {
     preset::SHIPPED
@@ -273,7 +279,8 @@ impl Computed {
 
     /// The scalars as the command line's `run --json` prints them.
     fn scalars_json(&self) -> PyResult<String> {
-        serde_json::to_string(&self.out.scalars_json()).map_err(|e| PyValueError::new_err(e.to_string()))
+        serde_json::to_string(&self.out.scalars_json(self.preset.scene.censored()))
+            .map_err(|e| PyValueError::new_err(e.to_string()))
     }
 
     /// The scalars: (key, label, value, unit), value in SI units.
@@ -443,6 +450,7 @@ fn sweep_folder(
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add("__version__", env!("CARGO_PKG_VERSION"))?;
     m.add_class::<Computed>()?;
+    m.add_function(wrap_pyfunction!(program, m)?)?;
     m.add_function(wrap_pyfunction!(presets, m)?)?;
     m.add_function(wrap_pyfunction!(scenes, m)?)?;
     m.add_function(wrap_pyfunction!(preset_ron, m)?)?;

@@ -50,8 +50,14 @@ def cli_error(cli, preset, *sets):
 def same_numbers(a, b):
     assert a.keys() == b.keys()
     for k in a:
-        if a[k] is None or b[k] is None:
-            assert a[k] is None and b[k] is None, k
+        if isinstance(b[k], dict):
+            # A bound or an undefined value: the same status, bound and reason.
+            assert isinstance(a[k], gs.Censored), (k, a[k])
+            assert (a[k].status, a[k].why) == (b[k]["status"], b[k]["why"]), (k, a[k], b[k])
+            if "bound" in b[k]:
+                assert float(a[k]) == b[k]["bound"], k
+            else:
+                assert math.isnan(a[k]), k
         else:
             # The same code; a different build may round the last bit otherwise.
             assert math.isclose(a[k], b[k], rel_tol=1e-12, abs_tol=1e-300), (k, a[k], b[k])
@@ -290,3 +296,32 @@ def test_a_switch_takes_a_bool_and_every_wrong_type_is_named():
         gs.sweep("ice-bounce-8ms", vary=[1.0, 2.0])
     with pytest.raises(TypeError, match="velocity takes a number"):
         gs.sweep("ice-bounce-8ms", vary={"t_vis": [1e-11]}, velocity="4")
+
+
+def test_a_bound_and_an_undefined_value_say_so():
+    # With plastic yield at 100 MPa nothing bounces up to 10⁴ m/s: v_s is a
+    # lower bound; without plasticity there is no yield velocity.
+    r = gs.run("restitution-ice", plasticity=True, n_radii=2, n_t_vis=1, n_velocities=20)
+    v = r.scalars["v_stick"]
+    assert isinstance(v, gs.Censored) and r.status["v_stick"] == "above"
+    assert float(v) == 1e4 and "bounces" in v.why and repr(v).startswith("> 10000.0")
+    plain = gs.run("restitution-ice", n_radii=2, n_t_vis=1, n_velocities=20)
+    assert plain.status["v_y"] == "undefined" and math.isnan(plain.scalars["v_y"])
+    assert "plasticity is off" in plain.scalars["v_y"].why
+    assert plain.status["v_stick"] == "value" and type(plain.scalars["v_stick"]) is float
+    # A sticking collision has no contact time.
+    stick = gs.run("ice-stick-2ms")
+    assert stick.status["t_c"] == "undefined" and "stick" in stick.scalars["t_c"].why
+    # In a sweep the status stands beside the value.
+    t = gs.sweep("ice-bounce-8ms", vary={"velocity": [2.0, 8.0]}, scalars=["e", "t_c"])
+    assert list(t.columns) == ["point", "velocity [m s^-1]", "e", "t_c [s]", "t_c status", "error"]
+    assert t["t_c status"][0].startswith("undefined: ") and math.isnan(t["t_c [s]"][0])
+
+
+def test_results_and_tables_name_the_build_and_preset():
+    r = gs.run("ice-bounce-8ms")
+    assert r.program.startswith("grainscope ") and "(commit " in r.program
+    df = r.to_frame()
+    assert df.attrs["program"] == r.program and "Hysteresis" in df.attrs["preset"]
+    t = gs.sweep("ice-bounce-8ms", vary={"velocity": [2.0, 8.0]}, scalars=["e"])
+    assert t.attrs["program"] == r.program and "velocity" in t.attrs["preset"]

@@ -44,6 +44,12 @@ pub trait Scene:
     /// Whether the computation honours [`Progress::set_paused`].
     const PAUSABLE: bool = false;
 
+    /// What the scene's non-finite scalars mean: a bound (the value lies
+    /// beyond what was searched) or an undefined result, with the reason.
+    /// Every output (JSON, CSV, Python, the window, the sensitivity tools)
+    /// reads a non-finite scalar through [`status`]. Empty by default.
+    const CENSORED: &'static [Censored] = &[];
+
     /// The documented parameters, with mutable access for the window and `--set`.
     fn controls(&mut self) -> Vec<Control<'_>>;
 
@@ -108,6 +114,93 @@ pub struct Scalar {
     pub value: f64,
     /// Unit of `value`, empty for dimensionless quantities.
     pub unit: &'static str,
+}
+
+/// What a non-finite value of one scalar means.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Censored {
+    /// The scalar's key.
+    pub key: &'static str,
+    /// What +∞ means: the value lies above this bound (in the scalar's
+    /// unit), for this reason; None when +∞ does not occur.
+    pub above: Option<(f64, &'static str)>,
+    /// What any other non-finite value (NaN, or +∞ without `above`)
+    /// means: no value exists, for this reason.
+    pub undefined: Option<&'static str>,
+}
+
+/// How a scalar's value reads.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Status {
+    /// A value.
+    Value,
+    /// Only a bound is known: the value lies above `bound` (the scalar's unit).
+    Above {
+        /// The bound.
+        bound: f64,
+        /// Why there is no value.
+        why: &'static str,
+    },
+    /// No value exists.
+    Undefined {
+        /// Why.
+        why: &'static str,
+    },
+}
+
+impl Status {
+    /// The status as one word: "value", "above" or "undefined".
+    pub fn word(&self) -> &'static str {
+        match self {
+            Status::Value => "value",
+            Status::Above { .. } => "above",
+            Status::Undefined { .. } => "undefined",
+        }
+    }
+
+    /// Why there is no value ("" for a value).
+    pub fn why(&self) -> &'static str {
+        match self {
+            Status::Value => "",
+            Status::Above { why, .. } | Status::Undefined { why } => why,
+        }
+    }
+
+    /// The number to show for the scalar: the value, the bound, or NaN.
+    pub fn number(&self, value: f64) -> f64 {
+        match self {
+            Status::Value => value,
+            Status::Above { bound, .. } => *bound,
+            Status::Undefined { .. } => f64::NAN,
+        }
+    }
+
+    /// The scalar as JSON: a number for a value, else an object with the
+    /// status, the bound where there is one, and the reason.
+    pub fn json(&self, value: f64) -> serde_json::Value {
+        match self {
+            Status::Value => serde_json::json!(value),
+            Status::Above { bound, why } => serde_json::json!({"status": "above", "bound": bound, "why": why}),
+            Status::Undefined { why } => serde_json::json!({"status": "undefined", "why": why}),
+        }
+    }
+}
+
+/// How scalar `key` with value `value` reads, by the scene's declarations
+/// `censored` (see [`Scene::CENSORED`]). A finite value is a value; a
+/// non-finite one is what the scene declares, or undefined ("not a finite
+/// number") where it declares nothing.
+pub fn status(censored: &[Censored], key: &str, value: f64) -> Status {
+    if value.is_finite() {
+        return Status::Value;
+    }
+    let declared = censored.iter().find(|c| c.key == key);
+    if value == f64::INFINITY
+        && let Some((bound, why)) = declared.and_then(|c| c.above)
+    {
+        return Status::Above { bound, why };
+    }
+    Status::Undefined { why: declared.and_then(|c| c.undefined).unwrap_or("not a finite number") }
 }
 
 /// A [`Scalar`] as read back from bytes; its texts are interned.
@@ -277,10 +370,13 @@ pub struct SceneOutput {
 }
 
 impl SceneOutput {
-    /// Scalars as one JSON object `{key: value}`.
-    pub fn scalars_json(&self) -> serde_json::Value {
+    /// Scalars as one JSON object `{key: value}`, where a scalar that is a
+    /// bound or undefined by the scene's declarations `censored` (see
+    /// [`Scene::CENSORED`]) is an object `{"status": "above", "bound": …,
+    /// "why": …}` or `{"status": "undefined", "why": …}`.
+    pub fn scalars_json(&self, censored: &[Censored]) -> serde_json::Value {
         let map: serde_json::Map<String, serde_json::Value> =
-            self.scalars.iter().map(|s| (s.key.to_string(), serde_json::json!(s.value))).collect();
+            self.scalars.iter().map(|s| (s.key.to_string(), status(censored, s.key, s.value).json(s.value))).collect();
         serde_json::Value::Object(map)
     }
 

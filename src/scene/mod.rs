@@ -24,8 +24,8 @@ pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Context, Extra, Progress, Report, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath,
-    Trajectory, Watcher, logspace,
+    Caches, Censored, Context, Extra, Progress, Report, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput,
+    Status, TimedPath, Trajectory, Watcher, logspace, status,
 };
 pub use registry::{
     Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, scalar, scenes_by_chapter,

@@ -9,7 +9,7 @@
 //! [`SceneParams`] for its `Params`) to its chapter in the list below.
 
 use super::controls::{Control, ControlKind, DefaultValue, ParamError};
-use super::core::{Caches, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use super::core::{Caches, Censored, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
 use super::timeline::Cursor;
 use super::{batches, collisions, debris, disk, inspect, monomer, monte_carlo, overview, rolling};
 use crate::physics::fit::Measurement;
@@ -53,6 +53,13 @@ macro_rules! scenes {
             pub fn info(&self) -> &'static SceneInfo {
                 match self {
                     $($( SceneParams::$scene(_) => &<$chapter::$module::Params as Scene>::INFO, )*)*
+                }
+            }
+
+            /// What the scene's non-finite scalars mean (see [`Scene::CENSORED`]).
+            pub fn censored(&self) -> &'static [Censored] {
+                match self {
+                    $($( SceneParams::$scene(_) => <$chapter::$module::Params as Scene>::CENSORED, )*)*
                 }
             }
 

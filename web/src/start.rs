@@ -83,7 +83,8 @@ impl WebHandle {
     /// line's `--json` (empty while there is no result).
     pub fn scalars_json(&self) -> String {
         let app = self.runner.app_mut::<PageApp>();
-        app.and_then(|p| p.app.output().map(|o| o.scalars_json().to_string())).unwrap_or_default()
+        app.and_then(|p| p.app.output().map(|o| o.scalars_json(p.app.params().censored()).to_string()))
+            .unwrap_or_default()
     }
 
     /// Milliseconds to compute shipped preset `name` from cold on the page's

@@ -256,15 +256,17 @@ fn chart(
                 }
             }
             painter.vline(rect.center().x, rect.y_range(), ui.visuals().widgets.noninteractive.fg_stroke);
-            let range = |x: Option<f64>| x.map_or("undefined".to_string(), human);
+            let range = |x: Option<f64>, why: &str| {
+                x.map_or_else(|| if why.is_empty() { "undefined".to_string() } else { why.to_string() }, human)
+            };
             let sd = |s: Option<f64>| s.map_or(String::new(), |s| format!(" ± {}", human(s)));
             let noise = if r.below_noise { " (below the noise of the seeds)" } else { "" };
             resp.on_hover_text(format!(
                 "X = {}{} at p ÷ factor, {} here, {}{} at p × factor{noise}",
-                range(r.range[0]),
+                range(r.range[0], &r.range_status[0]),
                 sd(r.range_sd[0]),
                 human(x0),
-                range(r.range[1]),
+                range(r.range[1], &r.range_status[1]),
                 sd(r.range_sd[1])
             ));
             ui.end_row();

@@ -107,10 +107,23 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
         return;
     };
     let system = crate::scene::chapter(cx.state.index()).units();
+    let censored = cx.state.params().censored();
     egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
         for s in &out.scalars {
             ui.label(s.label);
-            ui.label(crate::units::text(s.value, s.unit, system));
+            // A bound reads "> 10⁴ m s⁻¹", an undefined value "undefined";
+            // hovering either says why.
+            match crate::scene::status(censored, s.key, s.value) {
+                crate::scene::Status::Value => {
+                    ui.label(crate::units::text(s.value, s.unit, system));
+                }
+                crate::scene::Status::Above { bound, why } => {
+                    ui.label(format!("> {}", crate::units::text(bound, s.unit, system))).on_hover_text(why);
+                }
+                crate::scene::Status::Undefined { why } => {
+                    ui.label("undefined").on_hover_text(why);
+                }
+            }
             ui.end_row();
         }
     });

@@ -7,7 +7,7 @@ use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
 use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
@@ -43,6 +43,9 @@ t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is report
 mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] =
+        &[Censored { key: "outermost_planetesimals", above: None, undefined: Some("no planetesimals form") }];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {
@@ -147,7 +150,8 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
             Scalar {
                 key: "outermost_planetesimals",
                 label: "outermost planetesimal formation",
-                value: run.outermost_planetesimals() / AU,
+                // NaN (undefined) where no batch forms planetesimals.
+                value: Some(run.outermost_planetesimals() / AU).filter(|&r| r > 0.0).unwrap_or(f64::NAN),
                 unit: "AU",
             },
             Scalar { key: "max_loading", label: "largest midplane ρ*_d/ρ_g", value: max_loading, unit: "" },

@@ -5,7 +5,7 @@ use super::common::{BatchParams, log_grid, sweep_controls};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -66,6 +66,9 @@ Massive, dust-rich disks form planetesimals further out; a cold disk nearly doub
 disks run in parallel.",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] =
+        &[Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") }];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {
@@ -177,7 +180,8 @@ disks run in parallel.",
                 );
             }
         }
-        let widest = edges.iter().copied().fold(0.0, f64::max);
+        // NaN (undefined) where no disk of the grid forms planetesimals.
+        let widest = Some(edges.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN);
         scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
         scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
         Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })

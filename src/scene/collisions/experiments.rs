@@ -7,7 +7,7 @@ use crate::physics::collision::{Options, Outcome, Setup, collide, sticking_veloc
 use crate::physics::experiments::{Experiment, experiment, experiments};
 use crate::physics::plasticity::{e_combined, e_plastic};
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -82,6 +82,16 @@ A yield strength known only as a lower limit (\"> 67 MPa\") means no yield in th
 range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored { key: "v_stick", above: Some((1e4, "no collision bounces up to 10⁴ m/s")), undefined: None },
+        Censored {
+            key: "v_y",
+            above: None,
+            undefined: Some("no plastic yield: the fit gives Y only as a lower limit"),
+        },
+        Censored { key: "gamma_L", above: None, undefined: Some("no literature surface energy for these materials") },
+    ];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {

@@ -8,7 +8,9 @@ use crate::physics::collision::{Options, Outcome, collide};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
 use crate::scene::controls::Control;
-use crate::scene::core::{Context, Cursor, Extra, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory};
+use crate::scene::core::{
+    Censored, Context, Cursor, Extra, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory,
+};
 use crate::scene::quantities;
 use crate::scene::timeline::{self, Mark};
 use serde::{Deserialize, Serialize};
@@ -48,6 +50,9 @@ Contact ends when β reaches 1/k. Energy: U_K + U_E + U_S + U_CD + U_BD is conse
 U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk (App. 2.C).",
         heavy: false,
     };
+
+    const CENSORED: &'static [Censored] =
+        &[Censored { key: "t_c", above: None, undefined: Some("the spheres stick: the contact never ends") }];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {
@@ -170,7 +175,12 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
             Scalar { key: "e_A", label: "restitution e_A (adhesion + viscosity)", value: run.e_adhesive, unit: "" },
             Scalar { key: "e_P", label: "plastic restitution e_P", value: e_p, unit: "" },
             Scalar { key: "e", label: "restitution e", value: e, unit: "" },
-            Scalar { key: "t_c", label: "contact time t_c", value: run.contact_time, unit: "s" },
+            Scalar {
+                key: "t_c",
+                label: "contact time t_c",
+                value: if run.outcome == Outcome::Stick { f64::NAN } else { run.contact_time },
+                unit: "s",
+            },
             Scalar { key: "t_H", label: "Hertz time t_H", value: run.hertz_time, unit: "s" },
             Scalar {
                 key: "crack_fraction",

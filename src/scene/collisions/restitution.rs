@@ -12,7 +12,7 @@ use crate::physics::contact::e_independent;
 use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::plasticity;
 use crate::scene::controls::{Control, LogRange, ParamError};
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::solver::sampling::{Refined, interpolate, refine};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
@@ -150,6 +150,11 @@ bounces to zero; viscosity at the crack raises it far above v_c for small grains
 e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored { key: "v_stick", above: Some((1e4, "no collision bounces up to 10⁴ m/s")), undefined: None },
+        Censored { key: "v_y", above: None, undefined: Some("no plastic yield: plasticity is off") },
+    ];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {

@@ -29,9 +29,16 @@ fn main() {
         if dirty { " + local changes" } else { "" },
         date.as_deref().unwrap_or("unknown")
     );
+    // A new commit moves the branch's ref, not HEAD: watch both, and the
+    // packed refs.
     if let Some(dir) = git(&["rev-parse", "--git-dir"]) {
-        for f in ["HEAD", "index"] {
-            println!("cargo:rerun-if-changed={dir}/{f}");
+        let branch = git(&["symbolic-ref", "-q", "HEAD"]);
+        for f in ["HEAD", "index", "packed-refs"].into_iter().map(String::from).chain(branch) {
+            // A path that does not exist would rerun this script on every build.
+            let path = std::path::Path::new(&dir).join(&f);
+            if path.exists() {
+                println!("cargo:rerun-if-changed={}", path.display());
+            }
         }
     }
     for path in ["src", "assets", "presets", "Cargo.toml", "build.rs"] {

@@ -170,10 +170,13 @@ function same(label, web, want, tolerance, source = "the native binary's") {
     const a = web[k];
     const b = want[k];
     if (a === null || b === null) return a !== b;
+    // A bound or an undefined value: the same status, bound and reason.
+    if (typeof a === "object" || typeof b === "object") return JSON.stringify(a) !== JSON.stringify(b);
     return !(Math.abs(a - b) <= tolerance * Math.max(Math.abs(a), Math.abs(b)) || a === b);
   });
   if (off.length > 0 || Object.keys(web).length !== keys.length) {
-    fail(`${label}: scalars differ from the native binary: ${off.map((k) => `${k} ${web[k]} vs ${want[k]}`).join(", ")}`);
+    const text = (v) => (typeof v === "object" ? JSON.stringify(v) : v);
+    fail(`${label}: scalars differ from the native binary: ${off.map((k) => `${k} ${text(web[k])} vs ${text(want[k])}`).join(", ")}`);
   } else {
     ok(`${label}: ${keys.length} scalars equal ${source} (relative ${tolerance})`);
   }

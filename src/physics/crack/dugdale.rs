@@ -317,6 +317,8 @@ mod tests {
     use super::*;
 
     /// E₁, F₁, E_L, F_L, dE₁/dθ, dE_L/dθ at θ, integrated with mpmath at 30 digits.
+    // The digits as the quadrature printed them.
+    #[allow(clippy::excessive_precision)]
     const REFERENCE: [(f64, [f64; 6]); 8] = [
         (
             1e-9,

@@ -187,12 +187,7 @@ range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
             Scalar { key: "reduced_radius", label: "reduced radius R", value: e.reduced_radius(), unit: "m" },
             Scalar { key: "tabor", label: "Tabor parameter μ (γ_L)", value: mu, unit: "" },
             Scalar { key: "v_stick", label: "sticking velocity (model)", value: v_s, unit: "m s^-1" },
-            Scalar {
-                key: "v_y",
-                label: "yield velocity v_y (∞: no yield)",
-                value: setup.yield_velocity(),
-                unit: "m s^-1",
-            },
+            Scalar { key: "v_y", label: "yield velocity v_y (2.28)", value: setup.yield_velocity(), unit: "m s^-1" },
         ];
         let notes = vec![
             format!(

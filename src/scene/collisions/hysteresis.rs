@@ -168,7 +168,7 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
             // sticks although adhesion and viscosity alone would let it go.
             Scalar {
                 key: "sticks",
-                label: "sticks (1) / bounces (0), with plastic yield when on",
+                label: "sticks (1) / bounces (0)",
                 value: f64::from(u8::from(run.outcome == Outcome::Stick || e == 0.0)),
                 unit: "",
             },

@@ -509,24 +509,14 @@ fn velocity_panel(
         notes,
         figure: fig,
         scalars: vec![
-            Scalar {
-                key: "v_stick",
-                label: "sticking velocity v_s (model; lowest bouncing speed, with plastic yield when on)",
-                value: v_s,
-                unit: "m s^-1",
-            },
+            Scalar { key: "v_stick", label: "sticking velocity v_s (model)", value: v_s, unit: "m s^-1" },
             Scalar {
                 key: "v_c",
                 label: "JKR sticking velocity v_c (2.25)",
                 value: pair.jkr_sticking_velocity(),
                 unit: "m s^-1",
             },
-            Scalar {
-                key: "v_y",
-                label: "yield velocity v_y (2.28; inf without plasticity)",
-                value: v_y,
-                unit: "m s^-1",
-            },
+            Scalar { key: "v_y", label: "yield velocity v_y (2.28)", value: v_y, unit: "m s^-1" },
             Scalar { key: "e_max", label: "largest e on the velocity grid", value: e_max, unit: "" },
         ],
     })

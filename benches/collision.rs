@@ -5,6 +5,7 @@
 //! comes from a run at rtol = 1e-11; then the time of whole scenes.
 
 use grainscope::physics::collision::{Options, Setup, collide, sticking_search};
+use grainscope::physics::crack::CrackLaw;
 use grainscope::scene::{self, Caches, Progress, SceneParams};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -46,9 +47,11 @@ fn solver_table(name: &str, setup: &Setup, v: f64) {
 fn main() {
     let ice = Setup::reference_ice();
     solver_table("reference ice collision", &ice, 8.0);
+    solver_table("reference ice, the thesis's crack law", &ice.with_crack(CrackLaw::thesis(0.02)), 8.0);
     let mut hard = ice;
     hard.t_vis = 1e-14;
     solver_table("quasi-static hard case", &hard, 4.0);
+    solver_table("quasi-static hard case, the thesis's crack law", &hard.with_crack(CrackLaw::thesis(0.02)), 4.0);
     let mut harder = ice;
     harder.t_vis = 1e-15;
     solver_table("quasi-static, T_vis = 1e-15 s", &harder, 4.0);

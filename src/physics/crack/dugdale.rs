@@ -198,12 +198,64 @@ impl Branch {
     }
 }
 
+/// A branch resampled on a uniform grid of z, so that an evaluation finds
+/// its interval by one multiplication instead of a search (a collision
+/// evaluates the law some thousand times). The grid is eight times finer
+/// than the nodes of ln θ, so the second interpolation adds below 10⁻⁹.
+#[derive(Debug, Clone)]
+struct Uniform {
+    z0: f64,
+    h: f64,
+    y: Vec<f64>,
+    slope: Vec<f64>,
+}
+
+/// Points of a resampled branch.
+const UNIFORM_POINTS: usize = 3072;
+
+impl Uniform {
+    fn of(b: &Branch) -> Uniform {
+        let (z0, z1) = (b.z[0], b.z[b.z.len() - 1]);
+        let h = (z1 - z0) / (UNIFORM_POINTS - 1) as f64;
+        let (y, slope) = (0..UNIFORM_POINTS).map(|j| b.eval(z0 + h * j as f64)).unzip();
+        Uniform { z0, h, y, slope }
+    }
+
+    /// ln|g| and d ln|g|/dz at z (cubic Hermite inside, linear outside).
+    fn eval(&self, z: f64) -> (f64, f64) {
+        let n = self.y.len();
+        let t = (z - self.z0) / self.h;
+        if !(t > 0.0) {
+            return (self.y[0] + self.slope[0] * (z - self.z0), self.slope[0]);
+        }
+        if t >= (n - 1) as f64 {
+            let z1 = self.z0 + self.h * (n - 1) as f64;
+            return (self.y[n - 1] + self.slope[n - 1] * (z - z1), self.slope[n - 1]);
+        }
+        let i = (t as usize).min(n - 2);
+        let t = t - i as f64;
+        let h = self.h;
+        let (y0, y1) = (self.y[i], self.y[i + 1]);
+        let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
+        let t2 = t * t;
+        let t3 = t2 * t;
+        let y =
+            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * m1;
+        let dy = ((6.0 * t2 - 6.0 * t) * y0
+            + (3.0 * t2 - 4.0 * t + 1.0) * m0
+            + (-6.0 * t2 + 6.0 * t) * y1
+            + (3.0 * t2 - 2.0 * t) * m1)
+            / h;
+        (y, dy)
+    }
+}
+
 /// The exact Dugdale crack law at one modulus ratio k.
 #[derive(Debug, Clone)]
 pub struct FullLaw {
     k: f64,
-    healing: Branch,
-    opening: Branch,
+    healing: Uniform,
+    opening: Uniform,
 }
 
 /// β, g and their θ-derivatives of the healing branch at one node.
@@ -273,7 +325,7 @@ impl FullLaw {
                 branch.slope.push(node.dlng / dz);
             }
         }
-        FullLaw { k, healing, opening }
+        FullLaw { k, healing: Uniform::of(&healing), opening: Uniform::of(&opening) }
     }
 
     /// The law at `k`, from a cache of recently used k.

@@ -206,13 +206,18 @@ pub struct Influence {
 /// What an end of a parameter's range is, where it has no value.
 fn end_status(point: Option<&SceneParams>, output: &str, progress: &Progress) -> String {
     let Some(p) = point else { return "refused or failed".into() };
+    // A Monte Carlo end is the mean over seeds, computed seed by seed: one
+    // undefined seed leaves it undefined, and the whole runs are not
+    // computed again to say more.
+    if seeds(p).is_some_and(|(_, runs)| runs > 1) {
+        return "undefined at one seed or more".into();
+    }
     match raw(p, output, progress) {
         Ok(Some(v)) => match scene::status(p.censored(), output, v) {
             scene::Status::Value => String::new(),
             scene::Status::Above { bound, why } => format!("> {}: {why}", crate::figure::human(bound)),
             scene::Status::Undefined { why } => format!("undefined: {why}"),
         },
-        // Monte Carlo ends are means over seeds: one undefined seed leaves the mean undefined.
         Ok(None) => "undefined".into(),
         Err(_) => "refused or failed".into(),
     }

@@ -162,6 +162,24 @@ fn base() -> &'static Base {
     })
 }
 
+/// The cubic Hermite interpolant of values `y` with slopes `slope` on the
+/// interval from node `i` to `i + 1` of width `h`, at fraction `t` of it:
+/// its value and slope.
+fn hermite(y: &[f64], slope: &[f64], i: usize, t: f64, h: f64) -> (f64, f64) {
+    let (y0, y1) = (y[i], y[i + 1]);
+    let (m0, m1) = (slope[i] * h, slope[i + 1] * h);
+    let t2 = t * t;
+    let t3 = t2 * t;
+    let value =
+        (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * m1;
+    let rate = ((6.0 * t2 - 6.0 * t) * y0
+        + (3.0 * t2 - 4.0 * t + 1.0) * m0
+        + (-6.0 * t2 + 6.0 * t) * y1
+        + (3.0 * t2 - 2.0 * t) * m1)
+        / h;
+    (value, rate)
+}
+
 /// One branch of the law at one k: ln|g| against z, with slopes.
 #[derive(Debug, Clone)]
 struct Branch {
@@ -183,18 +201,7 @@ impl Branch {
         let i = self.z.partition_point(|&x| x <= z).clamp(1, n - 1) - 1;
         let h = self.z[i + 1] - self.z[i];
         let t = (z - self.z[i]) / h;
-        let (y0, y1) = (self.y[i], self.y[i + 1]);
-        let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let y =
-            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * m1;
-        let dy = ((6.0 * t2 - 6.0 * t) * y0
-            + (3.0 * t2 - 4.0 * t + 1.0) * m0
-            + (-6.0 * t2 + 6.0 * t) * y1
-            + (3.0 * t2 - 2.0 * t) * m1)
-            / h;
-        (y, dy)
+        hermite(&self.y, &self.slope, i, t, h)
     }
 }
 
@@ -235,18 +242,7 @@ impl Uniform {
         let i = (t as usize).min(n - 2);
         let t = t - i as f64;
         let h = self.h;
-        let (y0, y1) = (self.y[i], self.y[i + 1]);
-        let (m0, m1) = (self.slope[i] * h, self.slope[i + 1] * h);
-        let t2 = t * t;
-        let t3 = t2 * t;
-        let y =
-            (2.0 * t3 - 3.0 * t2 + 1.0) * y0 + (t3 - 2.0 * t2 + t) * m0 + (-2.0 * t3 + 3.0 * t2) * y1 + (t3 - t2) * m1;
-        let dy = ((6.0 * t2 - 6.0 * t) * y0
-            + (3.0 * t2 - 4.0 * t + 1.0) * m0
-            + (-6.0 * t2 + 6.0 * t) * y1
-            + (3.0 * t2 - 2.0 * t) * m1)
-            / h;
-        (y, dy)
+        hermite(&self.y, &self.slope, i, t, h)
     }
 }
 

@@ -232,7 +232,7 @@ impl Uniform {
     fn eval(&self, z: f64) -> (f64, f64) {
         let n = self.y.len();
         let t = (z - self.z0) / self.h;
-        if !(t > 0.0) {
+        if t.is_nan() || t <= 0.0 {
             return (self.y[0] + self.slope[0] * (z - self.z0), self.slope[0]);
         }
         if t >= (n - 1) as f64 {

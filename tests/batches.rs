@@ -1,7 +1,7 @@
 //! The global dust-batch model of thesis ch. 5: conservation, the published
 //! checks, convergence with the batch count and parameter errors.
 
-use grainscope::physics::batches::{BatchConfig, BatchRun, Fate, MIN_HALF_WIDTH, alpha_midplane, run, surface_density};
+use grainscope::physics::batches::{BatchConfig, BatchRun, Fate, alpha_midplane, run, surface_density};
 use grainscope::physics::constants::AU;
 use grainscope::scene::batches::common::BatchParams;
 use grainscope::scene::{self, Progress, SceneParams};
@@ -35,7 +35,7 @@ fn initial_batches_reproduce_the_dust_surface_density() {
     let cfg = BatchConfig::figure_5_6(500);
     let r = go(&BatchConfig { t_end: 1e-6 * cfg.t_end, ..cfg.clone() });
     let points: Vec<(f64, f64)> = r.initial_radii.iter().copied().zip(r.masses.iter().copied()).collect();
-    let sigma = surface_density(&points, cfg.smoothing, MIN_HALF_WIDTH);
+    let sigma = surface_density(&points, cfg.density_smoothing());
     for (i, (radius, _)) in points.iter().enumerate() {
         if *radius > 5.0 * AU && *radius < 150.0 * AU {
             let expected = cfg.model.disk.dust_surface_density(*radius);
@@ -70,10 +70,12 @@ fn figure_5_3_compact_silicates_empty_the_disk_within_a_million_years() {
 }
 
 #[test]
-fn figure_5_6_planetesimals_form_out_to_about_5_au() {
-    let r = go(&BatchConfig::figure_5_6(250));
+fn figure_5_6_planetesimals_form_out_to_about_5_au_and_converge_as_the_batch_count_doubles() {
+    // "~5 AU" in the thesis; 6.19 AU with the default kernel, whose width the
+    // thesis does not give (5.65 AU at a half-width of 0.07; README).
+    let r = go(&BatchConfig::figure_5_6(2000));
     let edge = r.outermost_planetesimals() / AU;
-    assert!((4.0..6.0).contains(&edge), "edge {edge:.2} AU");
+    assert!((4.0..6.5).contains(&edge), "edge {edge:.2} AU");
     // Inside-out: batches that start further in turn into planetesimals earlier.
     let formed: Vec<(f64, f64)> = r
         .fates
@@ -84,20 +86,15 @@ fn figure_5_6_planetesimals_form_out_to_about_5_au() {
     assert!(formed.len() > 10);
     assert!(formed.first().expect("some").1 < formed.last().expect("some").1);
     assert!(r.converted_fraction() > 0.3);
-}
-
-#[test]
-fn planetesimal_zone_converges_as_the_batch_count_doubles() {
-    let e250 = go(&BatchConfig::figure_5_6(250)).outermost_planetesimals();
-    let e500 = go(&BatchConfig::figure_5_6(500)).outermost_planetesimals();
-    assert!((e500 / e250 - 1.0).abs() < 0.2, "250: {:.2} AU, 500: {:.2} AU", e250 / AU, e500 / AU);
+    let half = go(&BatchConfig::figure_5_6(1000)).outermost_planetesimals() / AU;
+    assert!((half / edge - 1.0).abs() < 0.1, "1000 batches: {half:.2} AU, 2000: {edge:.2} AU");
 }
 
 /// The outer edge of planetesimal formation in Fig. 5.9's disk (0.2 M☉,
 /// Z₀ = 0.05, R_c = 30 AU), AU, converged in the batch count and the step:
-/// 2000 batches give 16.56 AU at Δln m = 0.05 and 16.50 AU at 0.025, 4000
-/// batches 16.59 AU at 0.05, 1000 batches 16.58 AU at 0.0125.
-const FIG_5_9_EDGE_AU: f64 = 16.55;
+/// 21.68 / 21.67 AU with 2000 batches at Δln m = 0.05 / 0.025, 21.72 AU with
+/// 4000 at 0.1 (the ignored test below); 500 batches at 0.2 give 21.45 AU.
+const FIG_5_9_EDGE_AU: f64 = 21.7;
 
 /// Fig. 5.9's disk with `batches` batches and growth step `dlnm`.
 fn fig_5_9(batches: usize, dlnm: f64) -> BatchParams {
@@ -109,26 +106,88 @@ fn fig_5_9(batches: usize, dlnm: f64) -> BatchParams {
 }
 
 #[test]
-fn zone_edge_approaches_the_converged_reference_as_the_step_halves() {
-    let coarse = params_run(&fig_5_9(1000, 0.1)).outermost_planetesimals() / AU;
-    let fine = params_run(&fig_5_9(1000, 0.05)).outermost_planetesimals() / AU;
-    let off = |edge: f64| (edge / FIG_5_9_EDGE_AU - 1.0).abs();
-    assert!((fine / coarse - 1.0).abs() < 0.02, "1000 batches: {coarse:.3} AU at 0.1, {fine:.3} AU at 0.05");
-    assert!(off(fine) < off(coarse), "{fine:.3} AU at 0.05 is no closer than {coarse:.3} AU at 0.1");
-    assert!(off(coarse) < 0.03 && off(fine) < 0.01, "{coarse:.3} and {fine:.3} AU against {FIG_5_9_EDGE_AU} AU");
+fn zone_edge_is_within_2_percent_of_the_converged_reference_from_500_batches() {
+    for (batches, dlnm) in [(500, 0.2), (1000, 0.1)] {
+        let edge = params_run(&fig_5_9(batches, dlnm)).outermost_planetesimals() / AU;
+        assert!(
+            (edge / FIG_5_9_EDGE_AU - 1.0).abs() < 0.02,
+            "{batches} batches at {dlnm}: {edge:.3} AU against {FIG_5_9_EDGE_AU} AU"
+        );
+    }
 }
 
-/// The reference itself (about a minute on two cores; `.ci/run` runs it).
+/// The reference itself (about two minutes on two cores; `.ci/run` runs it).
 #[test]
 #[ignore]
 fn zone_edge_reference_is_converged_in_batches_and_step() {
     let base = params_run(&fig_5_9(2000, 0.05)).outermost_planetesimals() / AU;
     let finer = params_run(&fig_5_9(2000, 0.025)).outermost_planetesimals() / AU;
-    let fewer = params_run(&fig_5_9(1000, 0.05)).outermost_planetesimals() / AU;
-    for (what, edge) in [("2000 batches, 0.05", base), ("2000 batches, 0.025", finer), ("1000 batches, 0.05", fewer)] {
+    let more = params_run(&fig_5_9(4000, 0.1)).outermost_planetesimals() / AU;
+    for (what, edge) in [("2000 batches, 0.05", base), ("2000 batches, 0.025", finer), ("4000 batches, 0.1", more)] {
         assert!((edge / FIG_5_9_EDGE_AU - 1.0).abs() < 0.01, "{what}: {edge:.3} AU against {FIG_5_9_EDGE_AU} AU");
     }
-    assert!((finer / base - 1.0).abs() < 0.02 && (fewer / base - 1.0).abs() < 0.02);
+}
+
+/// A single disk of the formation-zone scene at its default resolution:
+/// (edge, reported error), AU.
+fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
+    use grainscope::scene::batches::formation_zone::Params;
+    let p = Params {
+        mass_min: mass,
+        mass_max: mass,
+        n_mass: 1,
+        z_min: z,
+        z_max: z,
+        n_z: 1,
+        r_c_1: r_c,
+        r_c_2: r_c,
+        run: BatchParams { r_out_au: 300.0, ..BatchParams::default() },
+        ..Params::default()
+    };
+    let out = scene::compute(&SceneParams::FormationZone(p), &Progress::default()).expect("valid disk");
+    (out.scalar("widest_zone").expect("edge"), out.scalar("widest_zone_error").expect("error"))
+}
+
+#[test]
+fn zone_edge_at_the_default_resolution_on_a_disk_not_in_the_thesis() {
+    // 0.1 M☉, Z₀ = 0.01, R_c = 30 AU: converged 8.33 AU (4000 batches at
+    // Δln m = 0.1; 8.30 AU with 2000), where the annuli of earlier versions
+    // gave 9.75 / 7.90 / 7.38 / 8.08 / 6.10 AU with 120 to 2000 batches.
+    let (edge, change) = zone_of(0.1, 0.01, 30.0);
+    assert!((edge / 8.33 - 1.0).abs() < 0.05, "{edge:.2} AU against 8.33 AU");
+    assert!(change.is_finite() && change >= 0.0, "change with half the batches {change}");
+}
+
+/// A second disk not in the thesis (0.03 M☉, Z₀ = 0.03, R_c = 50 AU):
+/// 10.24 AU at the default 500 batches, 10.39 AU with 4000 (`.ci/run` runs
+/// it, about a minute).
+#[test]
+#[ignore]
+fn zone_edge_of_a_second_disk_not_in_the_thesis_is_converged_at_2000_batches() {
+    let disk = |batches: usize| {
+        let mut p = BatchParams { batches, dlnm: 0.1, r_out_au: 300.0, ..BatchParams::default() };
+        p.disk.disk_mass = 0.03;
+        p.disk.metallicity = 0.03;
+        p.disk.r_c = 50.0;
+        params_run(&p).outermost_planetesimals() / AU
+    };
+    let (a, b) = (disk(2000), disk(4000));
+    let default = params_run(&BatchParams {
+        batches: 500,
+        dlnm: 0.2,
+        r_out_au: 300.0,
+        disk: grainscope::scene::disk::common::DiskParams {
+            disk_mass: 0.03,
+            metallicity: 0.03,
+            r_c: 50.0,
+            ..BatchParams::default().disk
+        },
+        ..BatchParams::default()
+    })
+    .outermost_planetesimals()
+        / AU;
+    assert!((a / b - 1.0).abs() < 0.01, "2000: {a:.3} AU, 4000: {b:.3} AU");
+    assert!((default / b - 1.0).abs() < 0.05, "500 batches at 0.2: {default:.3} AU, 4000: {b:.3} AU");
 }
 
 #[test]
@@ -158,17 +217,20 @@ fn without_coagulation_micron_grains_barely_drift() {
 
 #[test]
 fn cold_disk_widens_the_zone_and_richer_disks_reach_further() {
-    let base = BatchParams { batches: 150, ..BatchParams::default() };
+    // The warm and cold disks of Fig. 5.10 (0.01 M☉, Z₀ = 0.02, R_c = 100 AU).
+    let mut base = BatchParams::default();
+    base.disk.r_c = 100.0;
     let warm = params_run(&base).outermost_planetesimals();
     let mut c = base.clone();
     c.disk.cold = true;
     let cold = params_run(&c).outermost_planetesimals();
     assert!(cold / warm > 1.5 && cold / warm < 2.5, "cold/warm {:.2}", cold / warm);
     let mut rich = base.clone();
+    rich.disk.r_c = 30.0;
     rich.disk.disk_mass = 0.2;
     rich.disk.metallicity = 0.05;
     let rich_edge = params_run(&rich).outermost_planetesimals() / AU;
-    assert!((16.0..25.0).contains(&rich_edge), "0.2 M_sun, Z0 = 0.05: {rich_edge:.1} AU");
+    assert!((16.0..24.0).contains(&rich_edge), "0.2 M_sun, Z0 = 0.05: {rich_edge:.1} AU");
 }
 
 #[test]

@@ -88,7 +88,7 @@ fn the_rolling_law_moves_the_formation_zone_of_fig_5_9() {
     }
     // The ladder's disk step is the batch model's own result.
     let map =
-        scene("disk-map", &[("disk_mass", "0.2"), ("metallicity", "0.05"), ("batches", "250"), ("r_out_au", "300")]);
+        scene("disk-map", &[("disk_mass", "0.2"), ("metallicity", "0.05"), ("batches", "500"), ("r_out_au", "300")]);
     assert_eq!(scalar(&map, "outermost_planetesimals"), calibrated);
 }
 

@@ -142,6 +142,30 @@ fn batch_presets_without_the_settling_key_keep_the_velocities_they_were_written_
     assert_ne!(without, old);
 }
 
+/// A batch preset written before the `surface_density` key existed read Σ_d
+/// from neighbour annuli with 250 batches by default: it keeps both, while a
+/// new scene uses the kernel estimate and 500 batches.
+#[test]
+fn batch_presets_without_the_surface_density_key_keep_the_annuli_and_their_batch_count() {
+    let run = |keys: &str| {
+        let text = format!(
+            "(scene: DiskMap((run: (settling: false, {keys}disk: (metallicity: 0.05, alpha: 1e-5), duration_yr: 3e4))))"
+        );
+        let p = Preset::from_ron(&text, "<text>").expect("loads");
+        let out = scene::compute(&p.scene, &Progress::default()).expect("runs");
+        (p.scene, format!("{:?}", out.figures))
+    };
+    let (old, old_out) = run("");
+    let (annuli, annuli_out) = run("surface_density: \"annuli\", batches: 250, ");
+    let (_, kernel_out) = run("surface_density: \"kernel\", batches: 250, ");
+    assert_eq!(old, annuli, "a preset without the keys reads as the annuli and 250 batches");
+    assert_eq!(old_out, annuli_out, "and gives the same results");
+    assert_ne!(annuli_out, kernel_out, "the estimate changes the run");
+    let fresh = SceneParams::default_for("disk-map").expect("the disk map scene");
+    let ron = ron::to_string(&fresh).expect("serialises");
+    assert!(ron.contains("surface_density:\"kernel\"") && ron.contains("batches:500"), "{ron}");
+}
+
 #[test]
 fn unknown_keys_are_reported_with_their_location() {
     let text = "(\n    scene: Hysteresis((\n        collision: (velocty: 3.0),\n    )),\n)";

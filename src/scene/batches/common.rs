@@ -1,6 +1,6 @@
 //! Parameters shared by the global dust-batch scenes (thesis ch. 5).
 
-use crate::physics::batches::{BatchConfig, BatchRun, MIN_HALF_WIDTH, run};
+use crate::physics::batches::{BatchConfig, BatchRun, KERNEL_HALF_WIDTH, Smoothing, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
 use crate::scene::controls::Control;
@@ -38,13 +38,29 @@ pub struct BatchParams {
     pub r_in_au: f64,
     /// Outermost initial radius, AU (default 200).
     pub r_out_au: f64,
-    /// Number of batches (default 250).
+    /// Number of batches (default 500: the zone edge of Fig. 5.9's disks
+    /// within 5 % of its converged value with the kernel estimate). A preset
+    /// without this key was written when the default was 250 and keeps it.
+    #[serde(default = "batches_in_presets_without_the_key")]
     pub batches: usize,
+    /// How the dust surface density (5.7) is read from the batches: "kernel"
+    /// (a triangular kernel of half-width `smoothing` in ln R) or "annuli"
+    /// (each batch's annulus and two neighbours', at least ±5 %: the estimate
+    /// of earlier versions, whose zone edge moves with the batch count and the
+    /// step). A preset without this key was written with the annuli and keeps
+    /// them.
+    #[serde(default = "annuli_in_presets_without_the_key")]
+    pub surface_density: String,
+    /// Half-width of the Σ_d kernel in ln R (default 0.1, at least two initial
+    /// batch spacings): the radial scale over which the batch model sees the
+    /// dust, a model choice that sets how far a pile-up of drifting batches
+    /// reaches.
+    pub smoothing: f64,
     /// Duration, yr (default 10⁶).
     pub duration_yr: f64,
     /// Growth per step, Δln m (default 0.2; the disk's own step is not used
-    /// here). The formation-zone edge of Fig. 5.9's disk converges to 2 %
-    /// from 0.1 at 2000 batches, the warm disk of Fig. 5.10 from 0.05.
+    /// here). With the kernel estimate of Σ_d the zone edge of 500 batches
+    /// moves by under 5 % from 0.2 to 0.1.
     pub dlnm: f64,
 }
 
@@ -60,7 +76,9 @@ impl Default for BatchParams {
             settling: false,
             r_in_au: 3.0,
             r_out_au: 200.0,
-            batches: 250,
+            batches: 500,
+            surface_density: "kernel".into(),
+            smoothing: KERNEL_HALF_WIDTH,
             duration_yr: 1e6,
             dlnm: 0.2,
         }
@@ -71,6 +89,18 @@ impl Default for BatchParams {
 /// those of the batch scenes before the key existed, with settling.
 fn settling_in_presets_without_the_key() -> bool {
     true
+}
+
+/// The surface density of a batch preset that does not name
+/// `surface_density`: the annuli of the versions that wrote it.
+fn annuli_in_presets_without_the_key() -> String {
+    "annuli".into()
+}
+
+/// The batch count of a preset that does not name `batches`: the default of
+/// the versions that wrote it.
+fn batches_in_presets_without_the_key() -> usize {
+    250
 }
 
 /// Batches in all that a preview of a sweep runs (its first picture within
@@ -141,13 +171,30 @@ impl BatchParams {
                 .range(10.0, 2000.0)
                 .doc("number of batches (10²–10³ in the thesis)"),
         );
+        c.push(
+            Control::choice(
+                "surface_density",
+                "Σ_d estimate",
+                &mut self.surface_density,
+                vec![("kernel", "kernel (±smoothing)"), ("annuli", "neighbour annuli (older presets)")],
+            )
+            .default(d.surface_density.clone())
+            .doc("how the dust surface density (5.7) is read from the batches: a kernel of fixed width (converges with the batch count) or the annuli of earlier versions"),
+        );
+        c.push(
+            Control::number("smoothing", "Σ_d smoothing", &mut self.smoothing)
+                .default(d.smoothing)
+                .range(0.02, 0.5)
+                .log()
+                .doc("half-width in ln R of the kernel over which Σ_d is averaged (at least two batch spacings); wider kernels let pile-ups reach further out"),
+        );
         c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
         c.push(
             Control::number("dlnm", "step Δln m", &mut self.dlnm)
                 .default(d.dlnm)
                 .range(0.01, 1.0)
                 .log()
-                .doc("mass growth per step of a batch (second-order scheme; 0.05 for a converged zone edge)"),
+                .doc("mass growth per step of a batch (second-order scheme)"),
         );
         c
     }
@@ -184,8 +231,11 @@ impl BatchParams {
             batches: self.batches,
             t_end: self.duration_yr * YEAR,
             coagulation: self.coagulation,
-            smoothing: 2,
-            smoothing_width: MIN_HALF_WIDTH,
+            smoothing: if self.surface_density == "annuli" {
+                Smoothing::ANNULI
+            } else {
+                Smoothing::Kernel { half_width: self.smoothing }
+            },
             frames_per_decade: 40,
             offset: 0.0,
         }

@@ -40,7 +40,7 @@ pub struct Params {
 impl Default for Params {
     fn default() -> Self {
         Params {
-            run: BatchParams { batches: 120, ..BatchParams::default() },
+            run: BatchParams::default(),
             mass_min: 0.01,
             mass_max: 0.2,
             n_mass: 5,
@@ -63,12 +63,14 @@ impl Scene for Params {
 disk mass, for several metallicities. Solid lines use R_c; the dashed set changes one thing: a second \
 R_c (Fig. 5.9), a cold disk with the temperature halved, the slope 3/2 or α = 1e-5 (Fig. 5.10). \
 Massive, dust-rich disks form planetesimals further out; a cold disk nearly doubles the zone. All \
-disks run in parallel.",
+disks run in parallel, each also with half the batches: the change estimates the edges' resolution error.",
         heavy: true,
     };
 
-    const CENSORED: &'static [Censored] =
-        &[Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") }];
+    const CENSORED: &'static [Censored] = &[
+        Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") },
+        Censored { key: "widest_zone_error", above: None, undefined: Some("no disk of the grid forms planetesimals") },
+    ];
 
     /// The documented parameters.
     fn controls(&mut self) -> Vec<Control<'_>> {
@@ -125,11 +127,17 @@ disks run in parallel.",
         let combos: Vec<(usize, usize, usize)> =
             (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
         let done = std::sync::atomic::AtomicUsize::new(0);
-        let total = combos.len();
-        let edges: Vec<f64> = combos
+        // Every disk also runs with half the batches: the change says how far
+        // the edges are from converged (it can understate it where the edge
+        // still drifts with the batch count, see the README).
+        let half = (p.run.batches / 2).max(10);
+        let runs: Vec<(usize, usize, usize, usize)> =
+            [p.run.batches, half].iter().flat_map(|&n| combos.iter().map(move |&(c, zi, mi)| (c, zi, mi, n))).collect();
+        let total = runs.len();
+        let all: Vec<f64> = runs
             .par_iter()
-            .map(|&(c, zi, mi)| {
-                let mut b = p.run.clone();
+            .map(|&(c, zi, mi, batches)| {
+                let mut b = BatchParams { batches, ..p.run.clone() };
                 b.disk.profile = "power-law".into();
                 b.disk.disk_mass = masses[mi];
                 b.disk.metallicity = zs[zi];
@@ -145,6 +153,7 @@ disks run in parallel.",
                 b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
             })
             .collect::<Result<_, _>>()?;
+        let (edges, coarser) = all.split_at(combos.len());
         let mut fig = Figure::new(
             "formation-zone",
             "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
@@ -181,8 +190,24 @@ disks run in parallel.",
             }
         }
         // NaN (undefined) where no disk of the grid forms planetesimals.
-        let widest = Some(edges.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN);
+        let widest_of =
+            |e: &[f64]| Some(e.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN);
+        let widest = widest_of(edges);
+        let widest_error = (widest - widest_of(coarser)).abs();
+        let largest_error = edges.iter().zip(coarser).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
         scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
+        scalars.push(Scalar {
+            key: "widest_zone_error",
+            label: "its change with half the batches",
+            value: if widest.is_nan() { f64::NAN } else { widest_error },
+            unit: "AU",
+        });
+        scalars.push(Scalar {
+            key: "edge_error",
+            label: "largest change with half the batches",
+            value: largest_error,
+            unit: "AU",
+        });
         scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
         Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }

@@ -3,7 +3,7 @@
 
 use super::common::{BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
-use crate::physics::batches::{Fate, MIN_HALF_WIDTH, surface_density};
+use crate::physics::batches::{Fate, surface_density, surface_density_in};
 use crate::physics::constants::{AU, YEAR};
 use crate::scene::controls::Control;
 use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
@@ -70,7 +70,8 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         let (p, progress) = (self, ctx.progress);
         let cache: &mut RunCache = ctx.caches.get();
         let run = cache.get(&p.run, progress)?;
-        let disk = p.run.config().model.disk;
+        let cfg = p.run.config();
+        let (disk, smoothing) = (cfg.model.disk, cfg.density_smoothing());
         let rs = logspace(1.0, p.run.r_out_au * 1.5, 120);
         let mut fig = Figure::new(
             "surface-density",
@@ -101,7 +102,7 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
             shown.push(f.t);
             let dust: Vec<(f64, f64)> =
                 f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
-            let sd = surface_density(&dust, 2, MIN_HALF_WIDTH);
+            let sd = surface_density_in(&dust, smoothing, Some(cfg.domain()));
             let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
             pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
             let t = f.t / YEAR;
@@ -115,7 +116,7 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
             .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
             .collect();
         if !formed.is_empty() {
-            let sp = surface_density(&formed, 2, MIN_HALF_WIDTH);
+            let sp = surface_density(&formed, smoothing);
             let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
             pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
             fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));

@@ -20,7 +20,7 @@ use std::sync::Arc;
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The disk, its monomer and the batch model (default: Fig. 5.9's
-    /// 0.2 M☉, Z₀ = 0.05, R_c = 30 AU disk with 250 batches out to 300 AU).
+    /// 0.2 M☉, Z₀ = 0.05, R_c = 30 AU disk with 500 batches out to 300 AU).
     pub run: BatchParams,
     /// Radius of the local column, AU (default 5).
     pub radius_au: f64,

@@ -112,8 +112,11 @@ macro_rules! scenes {
                 }
             }
 
-            /// The scene's own quick path to scalar `key`, if it has one.
-            fn quick_scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
+            /// The scene's own quick path to scalar `key`, if it has one
+            /// (None: only the whole computation gives it). Its value equals
+            /// the whole computation's; [`scalar`] uses it, and
+            /// `tests/quick_paths.rs` holds it to that.
+            pub fn quick_scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
                 match self {
                     $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::scalar(p, key, progress), )*)*
                 }

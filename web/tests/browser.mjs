@@ -381,11 +381,11 @@ try {
     // The pointer rests on the button for a frame before the click, as a
     // user's would; a click that a busy frame missed is tried again.
     let chooser = null;
-    for (let attempt = 0; attempt < 3 && chooser === null; attempt++) {
+    for (let attempt = 0; attempt < 5 && chooser === null; attempt++) {
       await page.mouse.move(OPEN_BUTTON.x, OPEN_BUTTON.y);
-      await page.waitForTimeout(300);
+      await page.waitForTimeout(300 + 200 * attempt);
       [chooser] = await Promise.all([
-        page.waitForEvent("filechooser", { timeout: 10_000 }).catch(() => null),
+        page.waitForEvent("filechooser", { timeout: 15_000 }).catch(() => null),
         page.mouse.click(OPEN_BUTTON.x, OPEN_BUTTON.y),
       ]);
     }

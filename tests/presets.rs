@@ -117,19 +117,21 @@ fn old_presets_with_missing_fields_load_with_defaults() {
     }
 }
 
+/// A short disk map written as a preset whose batch run starts with `keys`
+/// (each followed by ", "): its parameters and its figures as text.
+fn disk_map_run(keys: &str) -> (SceneParams, String) {
+    let text = format!("(scene: DiskMap((run: ({keys}disk: (metallicity: 0.05, alpha: 1e-5), duration_yr: 3e4))))");
+    let p = Preset::from_ron(&text, "<text>").expect("loads");
+    let out = scene::compute(&p.scene, &Progress::default()).expect("runs");
+    (p.scene, format!("{:?}", out.figures))
+}
+
 /// A batch preset written before the `settling` key existed ran with
 /// differential settling among the relative velocities: it keeps it, while a
 /// new scene uses App. 5.B's midplane velocities.
 #[test]
 fn batch_presets_without_the_settling_key_keep_the_velocities_they_were_written_with() {
-    let run = |settling: &str| {
-        let text = format!(
-            "(scene: DiskMap((run: ({settling}disk: (metallicity: 0.05, alpha: 1e-5), batches: 30, duration_yr: 3e4))))"
-        );
-        let p = Preset::from_ron(&text, "<text>").expect("loads");
-        let out = scene::compute(&p.scene, &Progress::default()).expect("runs");
-        (p.scene, format!("{:?}", out.figures))
-    };
+    let run = |settling: &str| disk_map_run(&format!("{settling}batches: 30, "));
     let (old, old_out) = run("");
     let (with, with_out) = run("settling: true, ");
     let (without, without_out) = run("settling: false, ");
@@ -147,14 +149,7 @@ fn batch_presets_without_the_settling_key_keep_the_velocities_they_were_written_
 /// new scene uses the kernel estimate and 500 batches.
 #[test]
 fn batch_presets_without_the_surface_density_key_keep_the_annuli_and_their_batch_count() {
-    let run = |keys: &str| {
-        let text = format!(
-            "(scene: DiskMap((run: (settling: false, {keys}disk: (metallicity: 0.05, alpha: 1e-5), duration_yr: 3e4))))"
-        );
-        let p = Preset::from_ron(&text, "<text>").expect("loads");
-        let out = scene::compute(&p.scene, &Progress::default()).expect("runs");
-        (p.scene, format!("{:?}", out.figures))
-    };
+    let run = |keys: &str| disk_map_run(&format!("settling: false, {keys}"));
     let (old, old_out) = run("");
     let (annuli, annuli_out) = run("surface_density: \"annuli\", batches: 250, ");
     let (_, kernel_out) = run("surface_density: \"kernel\", batches: 250, ");

@@ -177,7 +177,7 @@ pub enum Command {
         /// Output folder.
         #[arg(long, value_name = "DIR", default_value = "reproduce")]
         out: PathBuf,
-        /// Monte Carlo figures with fewer groups per decade, one run each and
+        /// Monte Carlo figures with fewer groups per decade, two runs each and
         /// capped events: minutes instead of an hour, looser agreement.
         #[arg(long)]
         quick: bool,

@@ -88,7 +88,7 @@ fn linear_kernel_matches_and_resolves_the_monomers_eight_decades_below_the_peak(
 
 #[test]
 fn product_kernel_matches_the_exact_solution_before_gelation() {
-    let rows = binned(Analytic::Product, 0.7, 16, 2);
+    let rows = binned(Analytic::Product, 0.7, 32, 2);
     let worst = check_core(&rows, 0.9, 0.03);
     assert!(worst < 0.15, "{worst}");
     assert!(rows.iter().all(|r| r.0 < 1e4), "no runaway body before gelation");

@@ -414,6 +414,10 @@ pub fn outcome(m1: f64, m2: f64, v: f64, th: &Thresholds) -> Outcome {
 /// 2012): V₁ + V₂ + min{0.99 − 1.03 ln[2/(V₁/V₂ + 1)], 6.94}·V₂.
 pub fn hit_and_stick_volume(v1: f64, v2: f64) -> f64 {
     let (a, b) = if v1 >= v2 { (v1, v2) } else { (v2, v1) };
+    // Above V₁/V₂ = 2e^{5.95/1.03} − 1 ≈ 644 the void term is capped: no logarithm needed.
+    if a > 650.0 * b {
+        return a + b + 6.94 * b;
+    }
     let void = (0.99 - 1.03 * (2.0 / (a / b + 1.0)).ln()).min(6.94) * b;
     a + b + void
 }

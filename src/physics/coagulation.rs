@@ -80,6 +80,24 @@ pub struct Props {
     drift: DriftTerms,
 }
 
+/// The column's constants that every pair needs, computed once per row of pairs.
+#[derive(Debug, Clone, Copy)]
+struct Constants {
+    /// Monomer internal density ρ₀, kg m⁻³.
+    rho0: f64,
+    /// Monomer mass m₀, kg.
+    m0: f64,
+    /// Rolling energy E_roll, J.
+    e_roll: f64,
+}
+
+impl Constants {
+    fn of(column: &Column) -> Constants {
+        let mono = &column.monomer;
+        Constants { rho0: mono.density, m0: mono.mass(), e_roll: mono.rolling_energy() }
+    }
+}
+
 /// Collisional-compaction parameter b (Okuzumi et al. 2012).
 use super::monomer::COMPACTION_B as B_COMPACT;
 
@@ -104,10 +122,10 @@ impl Column {
         let brownian2 = brownian_squared(env.temperature, a.mass, b.mass);
         let d1 = &p1.props.drift;
         let turbulence = thesis_turbulence(env, d1, s2_eff, diff);
-        let d2 = DriftTerms::of(env, s2_eff);
-        let settling = d1.settling - d2.settling;
-        let radial = d1.radial - d2.radial;
-        let azimuthal = d1.azimuthal - d2.azimuthal;
+        let (settling2, radial2, azimuthal2) = drift_terms(env, s2_eff);
+        let settling = d1.settling - settling2;
+        let radial = d1.radial - radial2;
+        let azimuthal = d1.azimuthal - azimuthal2;
         (brownian2 + turbulence * turbulence + settling * settling + radial * radial + azimuthal * azimuthal).sqrt()
     }
 
@@ -115,22 +133,9 @@ impl Column {
     /// hit-and-stick and collisional compaction (gas and self-gravity act
     /// afterwards, once, in [`Model::compact`]).
     pub fn filling_after(&self, t: Body, p: Body, v: f64) -> f64 {
-        let mono = &self.monomer;
-        let rho0 = mono.density;
-        let m0 = mono.mass();
-        let m = t.mass + p.mass;
-        let volume = hit_and_stick_volume(t.mass / (rho0 * t.filling), p.mass / (rho0 * p.filling));
-        let phi_hs = (m / rho0 / volume).min(1.0);
-        let mu = t.mass * p.mass / m;
-        let e = 0.5 * mu * v * v;
-        let e_roll = mono.rolling_energy();
-        let n = m / m0;
-        let phi_c = if e > 3.0 * B_COMPACT * e_roll {
-            (0.3 * (e / (3.0 * B_COMPACT * n * e_roll)).ln() - 0.2 * n.ln()).exp()
-        } else {
-            0.0
-        };
-        phi_hs.max(phi_c).min(1.0)
+        let k = Constants::of(self);
+        let volume = |b: Body| b.mass / (k.rho0 * b.filling);
+        filling_with(&k, (t.mass, volume(t)), (p.mass, volume(p)), v)
     }
 
     /// The filling factor after compression by gas ram pressure and
@@ -165,6 +170,63 @@ impl Column {
     }
 }
 
+/// The settling, radial and azimuthal terms of [`DriftTerms::of`] with
+/// three divisions instead of five (the same formulas; a test holds the
+/// velocity built from them to [`relative_velocity`]).
+fn drift_terms(env: &Local, st: f64) -> (f64, f64, f64) {
+    let inv1 = 1.0 / (1.0 + st);
+    let inv2 = 1.0 / (1.0 + st * st);
+    let h_d = 1.0 / (1.0 + st / env.alpha * (1.0 + 2.0 * st) * inv1).sqrt();
+    (env.omega * st * inv1 * h_d * env.scale_height, 2.0 * st * env.eta_vk * inv2, env.eta_vk * inv2)
+}
+
+/// [`Column::filling_after`] for a target and a projectile given as (mass,
+/// volume m/(ρ₀φ)). The compaction law's two logarithms and exponential are
+/// taken only where it can exceed the hit-and-stick filling factor: it does
+/// where φ_c¹⁰ = x³/N² (x = E/(3bN E_roll)) exceeds φ_hs¹⁰, compared in
+/// products (the same result; a near tie takes the logarithms).
+fn filling_with(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v: f64) -> f64 {
+    let m = mt + mp;
+    let phi_hs = (m / (k.rho0 * hit_and_stick_volume(vt, vp))).min(1.0);
+    let inv_m = 1.0 / m;
+    let e = 0.5 * mt * mp * inv_m * v * v;
+    let onset = 3.0 * B_COMPACT * k.e_roll;
+    if e <= onset {
+        return phi_hs;
+    }
+    let n = m / k.m0;
+    let x = e * k.m0 * inv_m / onset;
+    let hs2 = phi_hs * phi_hs;
+    let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
+    let below = x * x * x < hs10 * n * n * (1.0 - 1e-9);
+    if below && hs10 > 1e-250 && n < 1e100 {
+        return phi_hs;
+    }
+    let phi_c = (0.3 * x.ln() - 0.2 * n.ln()).exp();
+    phi_hs.max(phi_c).min(1.0)
+}
+
+impl Column {
+    /// [`Model::pair`] with the constants computed once.
+    fn pair_with(&self, k: &Constants, a: &Family<Props>, b: &Family<Props>) -> (f64, Effect) {
+        let v = self.velocity(a, b);
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        let effect = match outcome(t.mass, p.mass, v, &self.thresholds) {
+            Outcome::Stick => {
+                let volume = |f: &Family<Props>| f.mass / (k.rho0 * f.filling);
+                Effect::Stick { filling: filling_with(k, (t.mass, volume(t)), (p.mass, volume(p)), v) }
+            }
+            Outcome::Erode { efficiency } => {
+                let lost = self.c1 * efficiency * p.mass;
+                if lost >= t.mass { Effect::Shatter } else { Effect::Erode { loss: lost } }
+            }
+            Outcome::Fragment => Effect::Shatter,
+            Outcome::Bounce => Effect::Bounce,
+        };
+        (self.rate_at(a, b, v), effect)
+    }
+}
+
 impl Model for Column {
     type Props = Props;
 
@@ -186,18 +248,14 @@ impl Model for Column {
     /// One relative velocity for both the rate and the outcome, and no
     /// fragments made where only the target's mass change is needed.
     fn pair(&self, a: &Family<Props>, b: &Family<Props>) -> (f64, Effect) {
-        let v = self.velocity(a, b);
-        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-        let effect = match outcome(t.mass, p.mass, v, &self.thresholds) {
-            Outcome::Stick => Effect::Stick { filling: self.filling_after(t.body(), p.body(), v) },
-            Outcome::Erode { efficiency } => {
-                let lost = self.c1 * efficiency * p.mass;
-                if lost >= t.mass { Effect::Shatter } else { Effect::Erode { loss: lost } }
-            }
-            Outcome::Fragment => Effect::Shatter,
-            Outcome::Bounce => Effect::Bounce,
-        };
-        (self.rate_at(a, b, v), effect)
+        self.pair_with(&Constants::of(self), a, b)
+    }
+
+    /// [`Model::pair`] over a row, with the monomer's constants computed once.
+    fn pair_row(&self, a: &Family<Props>, others: &[Family<Props>], out: &mut Vec<(f64, Effect)>) {
+        let k = Constants::of(self);
+        out.clear();
+        out.extend(others.iter().map(|b| self.pair_with(&k, a, b)));
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional

@@ -13,10 +13,14 @@
 //!
 //! Cost per event: O(F) for F families. For every pair of families the rate
 //! coefficient and the single-collision changes δm, δφ (which set N_ε) are
-//! cached and recomputed only for families that changed; group rates follow
-//! from the cache and the zoom factors, so re-zooming costs O(F²) cheap
-//! multiplications. Event selection uses the row sums of the group-rate
-//! matrix.
+//! cached in one symmetric matrix and recomputed only for families whose
+//! particles changed; the model evaluates a family's whole row at once. A
+//! pair's group rate (4.25) is w_i w_j times a unit rate 2^{z_lo + N_ε} K/V
+//! that depends on the zoom factors but not on the group counts, so an event
+//! that only changes group counts moves each partner's sum Σ_j w_j u_ij by
+//! one multiply-add, and re-zooming recomputes unit rates by cheap
+//! arithmetic. Event selection draws a family from w_i Σ_j w_j u_ij plus its
+//! in-group rate, then its partner from that family's row.
 
 use rand::{Rng, SeedableRng};
 
@@ -141,6 +145,14 @@ pub trait Model: Sync {
     fn pair(&self, a: &Family<Self::Props>, b: &Family<Self::Props>) -> (f64, Effect) {
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
         (self.rate(a, b), Effect::of(self.collide(t, p)))
+    }
+
+    /// The pair data of family `a` with each of `others` (as
+    /// [`Model::pair`]), in order, into `out`. Models override it to share
+    /// work across a row.
+    fn pair_row(&self, a: &Family<Self::Props>, others: &[Family<Self::Props>], out: &mut Vec<(f64, Effect)>) {
+        out.clear();
+        out.extend(others.iter().map(|b| self.pair(a, b)));
     }
 
     /// The filling factor of a newly made particle after any compaction that
@@ -287,17 +299,80 @@ pub enum EngineError {
     Invalid(&'static str),
 }
 
-/// Cached data of a pair of families (the same for (i, j) and (j, i)): rate
-/// coefficient per volume and how far the target (the more massive) may change
-/// in one event.
+/// A symmetric matrix over the families, stored in full and row by row with
+/// a stride that doubles as families are added: a family's row is contiguous
+/// for the sweeps over its partners, and the column is kept equal to it.
+#[derive(Debug, Clone)]
+struct Symmetric<T> {
+    stride: usize,
+    data: Vec<T>,
+}
+
+impl<T: Copy + Default> Symmetric<T> {
+    fn new() -> Self {
+        Symmetric { stride: 0, data: Vec::new() }
+    }
+
+    /// Room for `n` families, keeping the first `used` rows and columns.
+    fn reserve(&mut self, n: usize, used: usize) {
+        if n <= self.stride {
+            return;
+        }
+        let stride = n.next_power_of_two().max(16);
+        let mut data = vec![T::default(); stride * stride];
+        let used = used.min(self.stride);
+        for i in 0..used {
+            data[i * stride..i * stride + used].copy_from_slice(&self.data[i * self.stride..i * self.stride + used]);
+        }
+        *self = Symmetric { stride, data };
+    }
+
+    fn get(&self, i: usize, j: usize) -> T {
+        self.data[i * self.stride + j]
+    }
+
+    /// Entries (i, j) and (j, i).
+    fn set(&mut self, i: usize, j: usize, value: T) {
+        self.data[i * self.stride + j] = value;
+        self.data[j * self.stride + i] = value;
+    }
+
+    /// Entry (i, j) alone (its mirror (j, i) is left as it is).
+    fn at(&mut self, i: usize, j: usize) -> &mut T {
+        &mut self.data[i * self.stride + j]
+    }
+
+    /// The first `n` entries of row i.
+    fn row(&self, i: usize, n: usize) -> &[T] {
+        &self.data[i * self.stride..i * self.stride + n]
+    }
+
+    /// Family `last` = n − 1 takes index k (k < n).
+    fn swap_remove(&mut self, k: usize, n: usize) {
+        let last = n - 1;
+        if k == last {
+            return;
+        }
+        for j in 0..last {
+            let value = if j == k { self.get(last, last) } else { self.get(last, j) };
+            self.set(k, j, value);
+        }
+    }
+}
+
+/// Cached data of a pair of families (the same for (i, j) and (j, i)).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
 struct Pair {
-    /// K/V, s⁻¹ (pair collision rate).
+    /// K/V, s⁻¹ (pair collision rate; 0 for pairs that bounce).
     c: f64,
-    /// The smaller of ⌊log₂(f_m m_t/|δm|)⌋ and ⌊log₂(f_φ φ_t/|δφ|)⌋ of the target
-    /// (+∞ without change): N_ε = ⌈max(z_hi − z_lo − these)⌉ (4.22)–(4.24), and
-    /// ⌈z − h⌉ = z − ⌊h⌋ for integer z.
-    headroom: f64,
+    /// Group event rate (4.25) per group of each family, 2^{z_lo + N_ε} K/V
+    /// (0 on the diagonal): the rate of the pair (i ≠ j) is w_i w_j times this.
+    unit: f64,
+    /// The smaller of ⌊log₂(f_m m_t/|δm|)⌋ and ⌊log₂(f_φ φ_t/|δφ|)⌋ of the
+    /// target (+∞ without change), so that N_ε = ⌈max(z_hi − z_lo − these)⌉
+    /// (4.22)–(4.24), and ⌈z − h⌉ = z − ⌊h⌋ for integer z. Integers and ±∞,
+    /// exact in f32.
+    headroom: f32,
 }
 
 /// Counts of what the events did.
@@ -330,20 +405,34 @@ pub struct Engine<M: Model> {
     /// Group events so far.
     events: u64,
     initial_mass: f64,
-    pairs: Vec<Vec<Pair>>,
-    /// Group event rates; the diagonal holds twice the in-group rate so that
-    /// the row sums add up to twice the total rate.
-    rates: Vec<Vec<f64>>,
-    row: Vec<f64>,
+    /// The data of every pair, in one matrix so that keeping its columns
+    /// equal to its rows costs one pass.
+    pairs: Symmetric<Pair>,
+    /// Twice each family's in-group event rate.
+    in_group: Vec<f64>,
+    /// Σ_{j ≠ i} w_j × unit(i, j) with the group counts in `counted`: family
+    /// i's events with others happen at w_i times this.
+    partner_sum: Vec<f64>,
+    /// The group count of each family that `partner_sum` holds (equal to the
+    /// family's own whenever an event is drawn).
+    counted: Vec<f64>,
+    /// Event weight of each family, w_i × partner_sum_i + in_group_i (twice
+    /// the total rate summed), made afresh for each draw.
+    weight: Vec<f64>,
     /// (m_a, m_p, m_max) at the last re-zoom.
     zoomed_at: (f64, f64, f64),
     since_zoom: usize,
-    /// Largest row-sum total since the row sums were last summed afresh.
-    row_scale: f64,
+    /// Largest total weight since the partner sums were last summed afresh.
+    weight_scale: f64,
     /// Families whose zoom factor changed in the re-zoom under way.
     dirty: Vec<bool>,
+    /// Families whose particles changed in the merges under way (their pair
+    /// data are recomputed when the merges are done).
+    stale: Vec<bool>,
     tally: Tally,
     rng: rand::rngs::StdRng,
+    /// A row of model pair data, kept to reuse its allocation.
+    scratch: Vec<(f64, Effect)>,
 }
 
 impl<M: Model> Engine<M> {
@@ -386,16 +475,21 @@ impl<M: Model> Engine<M> {
             time: 0.0,
             events: 0,
             initial_mass: first.mass * particles,
-            pairs: vec![vec![Pair::default()]],
-            rates: vec![vec![0.0]],
-            row: vec![0.0],
+            pairs: Symmetric::new(),
+            in_group: vec![0.0],
+            partner_sum: vec![0.0],
+            counted: vec![0.0],
+            weight: Vec::new(),
             zoomed_at: (first.mass, first.mass, first.mass),
             since_zoom: 0,
             dirty: vec![false],
-            row_scale: 0.0,
+            stale: vec![false],
+            weight_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
+            scratch: Vec::new(),
         };
+        e.reserve(1);
         e.refresh_pairs(0);
         Ok(e)
     }
@@ -442,7 +536,7 @@ impl<M: Model> Engine<M> {
 
     /// Total group event rate.
     pub fn total_rate(&self) -> f64 {
-        0.5 * self.row.iter().sum::<f64>()
+        0.5 * (0..self.families.len()).map(|i| self.event_weight(i)).sum::<f64>()
     }
 
     /// Average mass m_a, peak mass m_p (4.28)–(4.29) and largest mass.
@@ -488,7 +582,7 @@ impl<M: Model> Engine<M> {
                 continue;
             }
             let partners = if j == t { (f.particles() - 1.0).max(0.0) } else { f.particles() };
-            let c = self.pairs[t][j].c;
+            let c = self.c(t, j);
             let dm = match self.model.collide(target, f) {
                 Collision::Stick { .. } => f.mass,
                 Collision::Erode { loss, .. } => -loss,
@@ -519,49 +613,77 @@ impl<M: Model> Engine<M> {
         }
         // Pair data are symmetric: read the row of the first family (the one
         // whose rates are being refreshed), which is contiguous in memory.
-        let n = f64::from(span) - self.pairs[i][j].headroom;
-        let n_eps = if n.is_finite() { (n.ceil().max(0.0) as i32).min(span) } else { 0 };
+        // The headroom is an integer (or ±∞), so n needs no rounding up.
+        let n = f64::from(span) - f64::from(self.pairs.get(i, j).headroom);
+        let n_eps = if n.is_finite() { (n.max(0.0) as i32).min(span) } else { 0 };
         (lo, hi, n_eps)
     }
 
-    /// Group event rate (4.25) of the pair (i, j); in-group (i = j): two groups
-    /// meet particle by particle, 2^z pair collisions per event, so the rate is
-    /// the family's pair rate g(g − 1)/2 · K/V divided by 2^z.
-    fn group_rate(&self, i: usize, j: usize) -> f64 {
-        let c = self.pairs[i][j].c;
+    /// In-group event rate (4.20): two groups meet particle by particle,
+    /// 2^z pair collisions per event, so the rate is the family's pair rate
+    /// g(g − 1)/2 · K/V divided by 2^z.
+    fn in_group_rate(&self, i: usize) -> f64 {
+        let c = self.c(i, i);
+        let f = &self.families[i];
+        if c <= 0.0 {
+            0.0
+        } else if f.groups >= 2.0 {
+            0.5 * f.groups * (f.particles() - 1.0) * c
+        } else if f.zoom >= 1 {
+            // One group pairs up internally: 2^{z−1} pair collisions per event.
+            f.groups * (f.particles() - 1.0) * c
+        } else {
+            0.0
+        }
+    }
+
+    /// Group event rate (4.25) of the pair (i ≠ j) per group of each:
+    /// 2^{z_lo + N_ε} K/V.
+    fn unit_rate(&self, i: usize, j: usize) -> f64 {
+        let c = self.c(i, j);
         if c <= 0.0 {
             return 0.0;
         }
-        if i == j {
-            let f = &self.families[i];
-            return if f.groups >= 2.0 {
-                0.5 * f.groups * (f.particles() - 1.0) * c
-            } else if f.zoom >= 1 {
-                // One group pairs up internally: 2^{z−1} pair collisions per event.
-                f.groups * (f.particles() - 1.0) * c
-            } else {
-                0.0
-            };
-        }
-        let (lo, hi, n_eps) = self.order(i, j);
-        let (l, h) = (&self.families[lo], &self.families[hi]);
-        l.groups * h.groups * exp2i(l.zoom + n_eps) * c
+        let (lo, _, n_eps) = self.order(i, j);
+        exp2i(self.families[lo].zoom + n_eps) * c
+    }
+
+    /// K/V of pair (i, j).
+    fn c(&self, i: usize, j: usize) -> f64 {
+        self.pairs.get(i, j).c
+    }
+
+    /// Family i's share of twice the total event rate.
+    fn event_weight(&self, i: usize) -> f64 {
+        self.families[i].groups * self.partner_sum[i] + self.in_group[i]
+    }
+
+    /// Room in the pair matrices for `n` families.
+    fn reserve(&mut self, n: usize) {
+        let used = self.families.len();
+        self.pairs.reserve(n, used);
     }
 
     /// Recomputes the cached pair data of family k (its body changed), then its rates.
     fn refresh_pairs(&mut self, k: usize) {
-        for j in 0..self.families.len() {
-            let p = self.pair(k, j);
-            self.pairs[k][j] = p;
-            self.pairs[j][k] = p;
+        let mut row = std::mem::take(&mut self.scratch);
+        self.model.pair_row(&self.families[k], &self.families, &mut row);
+        for (j, &(rate, effect)) in row.iter().enumerate() {
+            let (c, headroom) = self.pair_data(k, j, rate, effect);
+            // The column follows in refresh_rates.
+            let entry = self.pairs.at(k, j);
+            entry.c = c;
+            entry.headroom = headroom;
         }
+        self.scratch = row;
         self.refresh_rates(k);
     }
 
-    fn pair(&self, i: usize, j: usize) -> Pair {
+    /// The cached data of pair (i, j), (K/V, headroom), from the model's rate
+    /// coefficient and effect.
+    fn pair_data(&self, i: usize, j: usize, rate: f64, effect: Effect) -> (f64, f32) {
         let (a, b) = (&self.families[i], &self.families[j]);
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-        let (rate, effect) = self.model.pair(a, b);
         let c = rate / self.volume;
         let (dm, dphi, c) = match effect {
             Effect::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
@@ -572,121 +694,136 @@ impl<M: Model> Engine<M> {
         };
         let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY };
         let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
-        Pair { c, headroom }
+        // An integer (|h| < 2¹¹) or ±∞: exact in f32.
+        (c, headroom as f32)
     }
 
-    /// Recomputes the group rates of family k (its groups or zoom changed).
+    /// Recomputes the group rates of family k (its zoom, groups or pair data changed).
     fn refresh_rates(&mut self, k: usize) {
-        for j in 0..self.families.len() {
-            let r = self.group_rate(k, j);
-            let w = if j == k { 2.0 * r } else { r };
-            let old = self.rates[k][j];
-            self.rates[k][j] = w;
-            self.rates[j][k] = w;
-            if j != k {
-                self.row[j] += w - old;
+        let n = self.families.len();
+        let (now, before) = (self.families[k].groups, self.counted[k]);
+        let mut sum = 0.0;
+        for j in 0..n {
+            if j == k {
+                continue;
             }
+            let mut pair = self.pairs.get(k, j);
+            let old = pair.unit;
+            let new = self.unit_rate(k, j);
+            pair.unit = new;
+            self.pairs.set(k, j, pair);
+            self.partner_sum[j] += now * new - before * old;
+            sum += self.counted[j] * new;
         }
-        self.row[k] = self.rates[k].iter().sum();
+        self.partner_sum[k] = sum;
+        self.counted[k] = now;
+        self.in_group[k] = 2.0 * self.in_group_rate(k);
     }
 
-    /// Updates the group rates of family k after its group count changed from
-    /// `before` (nothing else about it): a pair's group rate (4.25) is
-    /// proportional to the group counts of both families, so its row scales;
-    /// the in-group rate is recomputed. Falls back to [`Engine::refresh_rates`]
-    /// where the family is about to be merged (fewer than one group left).
-    fn scale_rates(&mut self, k: usize, before: f64) {
-        let now = self.families[k].groups;
-        if !(before >= 1.0 && now >= 1.0) {
-            self.refresh_rates(k);
-            return;
-        }
-        let ratio = now / before;
-        for j in 0..self.families.len() {
-            if j != k {
-                let old = self.rates[k][j];
-                let w = old * ratio;
-                self.rates[k][j] = w;
-                self.rates[j][k] = w;
-                self.row[j] += w - old;
+    /// Updates the rates after family k's group count changed (nothing else
+    /// about it): a pair's group rate (4.25) is proportional to the group
+    /// counts of both families, so every partner's sum moves by the change
+    /// times the pair's unit rate; the in-group rate is recomputed.
+    fn scale_rates(&mut self, k: usize) {
+        let n = self.families.len();
+        let change = self.families[k].groups - self.counted[k];
+        if change != 0.0 {
+            for (sum, pair) in self.partner_sum.iter_mut().zip(self.pairs.row(k, n)) {
+                // unit(k, k) = 0: family k's own sum is untouched.
+                *sum += change * pair.unit;
             }
         }
-        self.rates[k][k] = 2.0 * self.group_rate(k, k);
-        self.row[k] = self.rates[k].iter().sum();
+        self.counted[k] = self.families[k].groups;
+        self.in_group[k] = 2.0 * self.in_group_rate(k);
     }
 
+    /// Recomputes every unit rate and partner sum afresh.
     fn rebuild_rates(&mut self) {
         let n = self.families.len();
         for i in 0..n {
-            for j in i..n {
-                let r = self.group_rate(i, j);
-                let w = if i == j { 2.0 * r } else { r };
-                self.rates[i][j] = w;
-                self.rates[j][i] = w;
+            for j in i + 1..n {
+                let mut pair = self.pairs.get(i, j);
+                pair.unit = self.unit_rate(i, j);
+                self.pairs.set(i, j, pair);
             }
         }
-        self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
-        self.row_scale = self.row.iter().sum();
+        self.sum_afresh();
     }
 
-    /// Adds a family of `particles` particles `body` at zoom `zoom`; returns its index.
-    fn add_family(&mut self, body: Body, particles: f64, zoom: i32) -> usize {
+    /// Sums every partner sum afresh from the unit rates (no accumulated rounding).
+    fn sum_afresh(&mut self) {
+        let n = self.families.len();
+        for i in 0..n {
+            self.counted[i] = self.families[i].groups;
+            self.in_group[i] = 2.0 * self.in_group_rate(i);
+        }
+        for i in 0..n {
+            self.partner_sum[i] = self.pairs.row(i, n).iter().zip(&self.counted).map(|(p, g)| p.unit * g).sum();
+        }
+        self.weight_scale = (0..n).map(|i| self.event_weight(i)).sum();
+    }
+
+    /// Adds a family of `particles` particles `body` at zoom `zoom`, its pair
+    /// data to be computed when the event's merges are done (`tidy`).
+    fn add_family(&mut self, body: Body, particles: f64, zoom: i32) {
         let props = self.model.props(body);
         let family = Family { mass: body.mass, filling: body.filling, groups: particles / exp2i(zoom), zoom, props };
-        self.families.push(family);
-        for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
-            p.push(Pair::default());
-            r.push(0.0);
+        let k = self.families.len();
+        self.reserve(k + 1);
+        // Its row starts empty; the column is written whole when the pair
+        // data are computed, and nothing reads it before.
+        for j in 0..=k {
+            *self.pairs.at(k, j) = Pair::default();
         }
-        let n = self.families.len();
-        self.pairs.push(vec![Pair::default(); n]);
-        self.rates.push(vec![0.0; n]);
-        self.row.push(0.0);
+        self.families.push(family);
+        self.in_group.push(0.0);
+        self.partner_sum.push(0.0);
+        self.counted.push(0.0);
         self.dirty.push(false);
-        self.refresh_pairs(n - 1);
-        n - 1
+        self.stale.push(true);
     }
 
     fn remove_family(&mut self, k: usize) {
-        for j in 0..self.families.len() {
-            if j != k {
-                self.row[j] -= self.rates[j][k];
+        let n = self.families.len();
+        let counted = self.counted[k];
+        if counted != 0.0 {
+            for (sum, pair) in self.partner_sum.iter_mut().zip(self.pairs.row(k, n)) {
+                *sum -= counted * pair.unit;
             }
         }
-        for (p, r) in self.pairs.iter_mut().zip(self.rates.iter_mut()) {
-            p.swap_remove(k);
-            r.swap_remove(k);
-        }
-        self.pairs.swap_remove(k);
-        self.rates.swap_remove(k);
-        self.row.swap_remove(k);
+        self.pairs.swap_remove(k, n);
+        self.in_group.swap_remove(k);
+        self.partner_sum.swap_remove(k);
+        self.counted.swap_remove(k);
         self.dirty.swap_remove(k);
+        self.stale.swap_remove(k);
         self.families.swap_remove(k);
     }
 
     /// Performs one group event; returns false if no event is possible.
     pub fn step(&mut self) -> bool {
-        let mut total2: f64 = self.row.iter().sum();
-        // Row sums are updated incrementally; when the total falls far below
-        // the largest it had, their rounding could matter: recompute them.
-        if total2.is_nan() || total2 <= 1e-9 * self.row_scale {
-            self.row = self.rates.iter().map(|r| r.iter().sum()).collect();
-            total2 = self.row.iter().sum();
-            self.row_scale = total2;
+        let mut total2 = self.weigh();
+        // Partner sums are updated incrementally; when the total falls far
+        // below the largest it had, their rounding could matter: sum afresh.
+        if total2.is_nan() || total2 <= 1e-9 * self.weight_scale {
+            self.sum_afresh();
+            total2 = self.weigh();
+            self.weight_scale = total2;
         }
-        self.row_scale = self.row_scale.max(total2);
+        self.weight_scale = self.weight_scale.max(total2);
         if total2.is_nan() || total2 <= 0.0 {
             // Families may hold too few groups for their zoom factors.
             self.rezoom();
-            total2 = self.row.iter().sum();
+            total2 = self.weigh();
         }
         if !(total2 > 0.0 && total2.is_finite()) {
             return false;
         }
         let u: f64 = self.rng.random::<f64>();
         self.time += -(1.0 - u).ln() / (0.5 * total2);
-        let i = pick(&self.row, self.rng.random::<f64>() * total2);
-        let j = pick(&self.rates[i], self.rng.random::<f64>() * self.row[i]);
+        let i = pick(&self.weight, self.rng.random::<f64>() * total2);
+        let target = self.rng.random::<f64>() * self.weight[i];
+        let j = self.partner(i, target);
         self.event(i, j);
         self.events += 1;
         self.since_zoom += 1;
@@ -702,6 +839,46 @@ impl<M: Model> Engine<M> {
         true
     }
 
+    /// Makes every family's event weight; returns their sum (twice the total rate).
+    fn weigh(&mut self) -> f64 {
+        debug_assert!(self.families.iter().zip(&self.counted).all(|(f, g)| f.groups == *g));
+        debug_assert!(!self.stale.contains(&true));
+        let n = self.families.len();
+        self.weight.clear();
+        let mut total = 0.0;
+        for i in 0..n {
+            let w = self.event_weight(i);
+            self.weight.push(w);
+            total += w;
+        }
+        total
+    }
+
+    /// The partner of family i in an event: itself with weight in_group_i,
+    /// family j with weight w_i w_j unit(i, j); `target` is uniform in
+    /// [0, weight_i).
+    fn partner(&self, i: usize, target: f64) -> usize {
+        let in_group = self.in_group[i];
+        if target < in_group {
+            return i;
+        }
+        let n = self.families.len();
+        let scaled = (target - in_group) / self.families[i].groups;
+        let mut acc = 0.0;
+        let mut last = if in_group > 0.0 { i } else { 0 };
+        for (j, (pair, groups)) in self.pairs.row(i, n).iter().zip(&self.counted).enumerate() {
+            let w = pair.unit * groups;
+            if w > 0.0 {
+                acc += w;
+                last = j;
+                if acc > scaled {
+                    return j;
+                }
+            }
+        }
+        last
+    }
+
     /// Runs until time `t_end` or until `max_events` more events; returns
     /// false if no event was possible.
     pub fn run_until(&mut self, t_end: f64, max_events: u64) -> bool {
@@ -715,7 +892,6 @@ impl<M: Model> Engine<M> {
     }
 
     fn event(&mut self, i: usize, j: usize) {
-        let (before_i, before_j) = (self.families[i].groups, self.families[j].groups);
         let mut made: Vec<Product> = Vec::with_capacity(2);
         if i == j {
             let f = self.families[i];
@@ -734,9 +910,9 @@ impl<M: Model> Engine<M> {
             self.families[hi].groups -= exp2i(-n_eps);
             self.outcome(&l, &h, per, exp2i(l.zoom), l.zoom, &mut made);
         }
-        self.scale_rates(i, before_i);
+        self.scale_rates(i);
         if j != i {
-            self.scale_rates(j, before_j);
+            self.scale_rates(j);
         }
         for (body, count, zoom, kind) in made {
             if count > 0.0 && body.mass > 0.0 {
@@ -764,10 +940,9 @@ impl<M: Model> Engine<M> {
                 && (body.filling / f.filling - 1.0).abs() <= MERGE_REFRESH;
             if same || (1e-6..1.0 - 1e-9).contains(&groups) {
                 if self.merge_particles_into(body, count, t) {
-                    self.refresh_pairs(t);
-                } else {
-                    self.refresh_rates(t);
+                    self.stale[t] = true;
                 }
+                self.scale_rates(t);
                 return;
             }
         }
@@ -848,11 +1023,12 @@ impl<M: Model> Engine<M> {
             }
             match self.merge_partner(k) {
                 Some(t) => {
+                    // A family that several merge into has its pair data
+                    // recomputed once, after the last.
                     if self.merge_into(k, t) {
-                        self.refresh_pairs(t);
-                    } else {
-                        self.refresh_rates(t);
+                        self.stale[t] = true;
                     }
+                    self.scale_rates(t);
                     self.remove_family(k);
                 }
                 None => {
@@ -864,6 +1040,12 @@ impl<M: Model> Engine<M> {
                         self.refresh_rates(k);
                     }
                 }
+            }
+        }
+        for k in 0..self.families.len() {
+            if self.stale[k] {
+                self.stale[k] = false;
+                self.refresh_pairs(k);
             }
         }
     }
@@ -882,7 +1064,7 @@ impl<M: Model> Engine<M> {
         if let Some(t) = t {
             let g = &mut self.families[t];
             g.groups += residue / g.mass / exp2i(g.zoom);
-            self.refresh_rates(t);
+            self.scale_rates(t);
         }
     }
 
@@ -920,20 +1102,25 @@ impl<M: Model> Engine<M> {
         let ratios = |g: &Family<M::Props>| {
             ((body.mass / g.mass).min(g.mass / body.mass), (body.filling / g.filling).min(g.filling / body.filling))
         };
+        // R^(m)(R^(φ))³ as one quotient: (smaller mass)(smaller φ)³ over
+        // (larger mass)(larger φ)³, with one division (both factors lie far
+        // from underflow and overflow for masses and φ in the engine's range).
+        let product = |g: &Family<M::Props>| {
+            let (m_lo, m_hi) = if body.mass < g.mass { (body.mass, g.mass) } else { (g.mass, body.mass) };
+            let (p_lo, p_hi) =
+                if body.filling < g.filling { (body.filling, g.filling) } else { (g.filling, body.filling) };
+            (m_lo * p_lo * p_lo * p_lo) / (m_hi * p_hi * p_hi * p_hi)
+        };
         let healthy = |i: usize, g: &Family<M::Props>| Some(i) != except && g.groups > 0.0;
-        // The product R^(m)(R^(φ))³ finds the few candidates cheaply (both
-        // ratios lie in (0, 1], far above underflow); among those within 10⁻⁹
-        // of the best, the logarithmic score decides as it always has, so that
-        // near-ties fall the same way.
+        // The product finds the few candidates cheaply; among those within
+        // 10⁻⁹ of the best, the logarithmic score decides, so that near-ties
+        // fall by the score of Sect. 4.3.4 itself.
         let best = self
             .families
             .iter()
             .enumerate()
             .filter(|(i, g)| healthy(*i, g))
-            .map(|(_, g)| {
-                let (rm, rp) = ratios(g);
-                rm * rp * rp * rp
-            })
+            .map(|(_, g)| product(g))
             .fold(f64::NEG_INFINITY, f64::max);
         let score = |g: &Family<M::Props>| {
             let (rm, rp) = ratios(g);
@@ -942,10 +1129,7 @@ impl<M: Model> Engine<M> {
         self.families
             .iter()
             .enumerate()
-            .filter(|(i, g)| {
-                let (rm, rp) = ratios(g);
-                healthy(*i, g) && rm * rp * rp * rp >= best * (1.0 - 1e-9)
-            })
+            .filter(|(i, g)| healthy(*i, g) && product(g) >= best * (1.0 - 1e-9))
             .map(|(i, g)| (i, score(g)))
             .max_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(i, _)| i)

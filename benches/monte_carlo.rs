@@ -7,13 +7,15 @@
 use grainscope::physics::coagulation::{Run, RunConfig};
 use grainscope::physics::constants::YEAR;
 use grainscope::scene::Progress;
-use grainscope::scene::monte_carlo::analytic_kernels::{self, Params};
+use grainscope::scene::monte_carlo::analytic_kernels::{self, Params, TestKernel};
+use grainscope::scene::monte_carlo::common::ColumnCompaction;
 use grainscope::scene::monte_carlo::common::ColumnParams;
+use grainscope::scene::schema::Choice;
 use std::time::Instant;
 
 fn column(w: f64, v_eros: f64, compaction: &str, stop_g: f64, t_end_yr: f64) -> RunConfig {
     let p = ColumnParams {
-        compaction: compaction.into(),
+        compaction: ColumnCompaction::from_key(compaction).unwrap_or_default(),
         newton: compaction == "full",
         v_eros,
         groups_per_decade: w,
@@ -41,7 +43,13 @@ fn main() {
     println!("  kernel     t      w*   events/run   time/run [ms]   worst error");
     for (kernel, t) in [("constant", 1000.0), ("linear", 10.0), ("product", 0.9)] {
         for w in [20.0, 60.0, 200.0] {
-            let p = Params { kernel: kernel.into(), time: t, groups_per_decade: w, runs: 16, ..Params::default() };
+            let p = Params {
+                kernel: TestKernel::from_key(kernel).unwrap_or_default(),
+                time: t,
+                groups_per_decade: w,
+                runs: 16,
+                ..Params::default()
+            };
             let start = Instant::now();
             let (bins, events) = analytic_kernels::run(&p, &Progress::default()).expect("runs");
             let per_run = start.elapsed().as_secs_f64() * 1e3 / 16.0 * rayon::current_num_threads() as f64;
@@ -53,7 +61,7 @@ fn main() {
     for (kernel, t) in [("constant", 1000.0), ("linear", 10.0), ("product", 0.9)] {
         for w in [20.0, 60.0] {
             let p = Params {
-                kernel: kernel.into(),
+                kernel: TestKernel::from_key(kernel).unwrap_or_default(),
                 time: t,
                 groups_per_decade: w,
                 runs: 16,

@@ -137,10 +137,15 @@ pub enum Command {
     },
     /// List the shipped presets.
     Presets,
-    /// List a scene's parameters with units, ranges and meaning.
+    /// List a scene's parameters with units, ranges and meaning (every
+    /// scene's, as Markdown, with --markdown).
     Params {
-        /// Scene id (hysteresis, restitution, adhesion).
-        scene: String,
+        /// Scene id (hysteresis, restitution, adhesion); omit it with --markdown.
+        #[arg(required_unless_present = "markdown")]
+        scene: Option<String>,
+        /// Print every scene's parameter reference as Markdown (docs/parameters.md).
+        #[arg(long)]
+        markdown: bool,
     },
     /// Fit γ, T_vis and Y of the restitution model to measurements (CSV with
     /// 'velocity [m/s]', 'restitution' and optional 'uncertainty' columns).
@@ -351,14 +356,19 @@ pub fn run(command: Command) -> Result<()> {
             }
             Ok(())
         }
-        Command::Params { scene } => {
-            let mut params = scene::SceneParams::default_for(&scene).with_context(|| {
+        Command::Params { markdown: true, .. } => {
+            say(scene::parameter_reference().trim_end())?;
+            Ok(())
+        }
+        Command::Params { scene, .. } => {
+            let scene = scene.unwrap_or_default();
+            let params = scene::SceneParams::default_for(&scene).with_context(|| {
                 let ids: Vec<&str> = scene::SCENES.iter().map(|s| s.id).collect();
                 let close = crate::scene::controls::did_you_mean(&scene, &ids);
                 format!("unknown scene '{scene}'{close} (scenes: {})", ids.join(", "))
             })?;
-            for c in params.controls() {
-                say(c.doc_line())?;
+            for s in params.specs() {
+                say(s.doc_line())?;
             }
             Ok(())
         }

@@ -150,8 +150,7 @@ impl Slide {
             params.set(k.trim(), v.trim()).map_err(|e: ParamError| format!("set {s}: {e}"))?;
         }
         params.validate().map_err(|e| e.to_string())?;
-        let mut probe = params.clone();
-        let keys: Vec<&str> = probe.controls().iter().map(|c| c.key).collect();
+        let keys = params.keys();
         if let Some(k) = self.highlight.iter().find(|k| !keys.contains(&k.as_str())) {
             return Err(format!("highlight: '{k}' is not a parameter of scene '{}'", params.info().id));
         }

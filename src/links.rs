@@ -108,16 +108,14 @@ fn text(value: &DefaultValue) -> String {
 /// the whole state. None when even that would be longer than [`LONGEST`].
 pub fn link_to(params: &SceneParams) -> Option<String> {
     let id = params.info().id;
-    let mut defaults = SceneParams::default_for(id)?;
-    let mut current = params.clone();
-    let before: Vec<(&str, DefaultValue)> = defaults.controls().iter().map(|c| (c.key, c.value())).collect();
+    let defaults = SceneParams::default_for(id)?;
     let mut query = format!("?scene={}", utf8_percent_encode(id, KEPT));
-    for c in current.controls() {
-        let value = c.value();
-        if before.iter().any(|(k, v)| *k == c.key && *v == value) {
+    for key in params.keys() {
+        let Some(value) = params.get(key) else { continue };
+        if defaults.get(key).as_ref() == Some(&value) {
             continue;
         }
-        query.push_str(&format!("&{}={}", c.key, utf8_percent_encode(&text(&value), KEPT)));
+        query.push_str(&format!("&{key}={}", utf8_percent_encode(&text(&value), KEPT)));
     }
     // The parameters say it all when they rebuild this very state.
     let rebuilt = match open(&query) {

@@ -152,11 +152,10 @@ impl Preset {
     pub fn to_ron(&self) -> Result<String, PresetError> {
         let body = ron::ser::to_string_pretty(self, ron::ser::PrettyConfig::default().struct_names(false))
             .map_err(|e| PresetError::Serialise(e.to_string()))?;
-        let mut scene = self.scene.clone();
-        let mut out = format!("// grainscope preset, scene '{}'. All values in SI units.\n", scene.info().id);
-        for c in scene.controls() {
+        let mut out = format!("// grainscope preset, scene '{}'. All values in SI units.\n", self.scene.info().id);
+        for s in self.scene.specs() {
             out.push_str("//   ");
-            out.push_str(&c.doc_line());
+            out.push_str(&s.doc_line());
             out.push('\n');
         }
         out.push_str(&body);

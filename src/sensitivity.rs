@@ -17,7 +17,8 @@
 
 use crate::figure::{self, Axis, Figure, Heatmap, Scale, Series, Style};
 use crate::physics::PhysicsError;
-use crate::scene::{self, ControlKind, Progress, SceneError, SceneParams};
+use crate::scene::schema::SpecKind;
+use crate::scene::{self, DefaultValue, Progress, SceneError, SceneParams};
 use crate::sweep::{Plan, Spacing, Vary};
 use rayon::prelude::*;
 use std::collections::HashMap;
@@ -106,14 +107,7 @@ fn raw(params: &SceneParams, output: &str, progress: &Progress) -> Result<Option
 /// parameters; None for a scene without both.
 fn seeds(params: &SceneParams) -> Option<(usize, usize)> {
     let mut p = params.clone();
-    let controls = p.controls();
-    let count = |key: &str| {
-        controls.iter().find_map(|c| match &c.kind {
-            ControlKind::Count { value, .. } if c.key == key => Some(**value),
-            _ => None,
-        })
-    };
-    Some((count("seed")?, count("runs")?))
+    p.seeds().map(|s| (*s.first, *s.runs))
 }
 
 /// Scalar `output` at `params`: cached, through the scene's quick path, and
@@ -124,8 +118,10 @@ pub fn value(params: &SceneParams, output: &str, progress: &Progress) -> Result<
             let one: Vec<SceneParams> = (0..runs)
                 .map(|k| {
                     let mut p = params.clone();
-                    p.set("runs", "1")?;
-                    p.set("seed", &(seed + k).to_string())?;
+                    if let Some(s) = p.seeds() {
+                        (*s.first, *s.runs) = (seed + k, 1);
+                    }
+                    p.validate()?;
                     Ok(p)
                 })
                 .collect::<Result<_, crate::scene::ParamError>>()?;
@@ -257,19 +253,17 @@ pub struct Knob {
 /// The numeric parameters of `base` that change the physics (style-only
 /// ones aside).
 pub fn knobs(base: &SceneParams) -> Vec<Knob> {
-    let mut probe = base.clone();
-    probe
-        .controls()
+    base.specs()
         .iter()
-        .filter(|c| !c.style_only)
-        .filter_map(|c| match &c.kind {
-            ControlKind::Number { value, min, max, log, display_scale } => Some(Knob {
-                key: c.key,
-                label: c.label,
-                unit: c.si_unit,
-                shown_unit: c.unit,
+        .filter(|s| !s.style_only)
+        .filter_map(|s| match (&s.kind, base.get(s.key)?) {
+            (SpecKind::Number { min, max, log, display_scale }, DefaultValue::Number(value)) => Some(Knob {
+                key: s.key,
+                label: s.label,
+                unit: s.si_unit,
+                shown_unit: s.unit,
                 display_scale: *display_scale,
-                value: **value,
+                value,
                 min: *min,
                 max: *max,
                 log: *log,
@@ -282,7 +276,7 @@ pub fn knobs(base: &SceneParams) -> Vec<Knob> {
 /// `base` with parameter `key` set to `v`, or None where it is refused.
 fn with(base: &SceneParams, key: &str, v: f64) -> Option<SceneParams> {
     let mut p = base.clone();
-    p.set(key, &v.to_string()).ok().map(|_| p)
+    p.set_number(key, v).ok().map(|_| p)
 }
 
 /// For every positive numeric parameter of `base` (style-only ones aside),

@@ -10,7 +10,7 @@
 //! row and the sweep goes on. Nothing here touches files: the command line
 //! reads and writes the table.
 
-use crate::scene::{self, ControlKind, Progress, SceneError, SceneOutput, SceneParams, Status};
+use crate::scene::{self, Progress, SceneError, SceneOutput, SceneParams, Status};
 use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -218,15 +218,9 @@ impl Plan {
             return Err(SweepError::Parameter("nothing to vary: give --vary NAME=lin|log:FROM:TO:N".into()));
         }
         let mut units = Vec::new();
-        let mut probe = base.clone();
-        let controls = probe.controls();
         for v in &vary {
-            let c = controls.iter().find(|c| c.key == v.key).ok_or_else(|| {
-                let numbers: Vec<&str> = controls
-                    .iter()
-                    .filter(|c| matches!(c.kind, ControlKind::Number { .. } | ControlKind::Count { .. }))
-                    .map(|c| c.key)
-                    .collect();
+            let c = base.spec(&v.key).ok_or_else(|| {
+                let numbers: Vec<&str> = base.specs().iter().filter(|s| s.is_numeric()).map(|s| s.key).collect();
                 SweepError::Parameter(format!(
                     "{} has no parameter '{}' (numbers: {})",
                     base.info().id,
@@ -234,12 +228,11 @@ impl Plan {
                     numbers.join(", ")
                 ))
             })?;
-            if !matches!(c.kind, ControlKind::Number { .. } | ControlKind::Count { .. }) {
+            if !c.is_numeric() {
                 return Err(SweepError::Parameter(format!("'{}' is not a number and cannot be varied", v.key)));
             }
             units.push(c.si_unit.to_string());
         }
-        drop(controls);
         if vary.iter().enumerate().any(|(i, v)| vary[..i].iter().any(|w| w.key == v.key)) {
             return Err(SweepError::Parameter("a parameter is varied twice".into()));
         }
@@ -252,9 +245,7 @@ impl Plan {
         for (v, vals) in vary.iter().zip(&values) {
             for x in vals {
                 let mut trial = base.clone();
-                trial
-                    .set(&v.key, &x.to_string())
-                    .map_err(|e| SweepError::Parameter(format!("--vary {}: {e}", v.text())))?;
+                trial.set_number(&v.key, *x).map_err(|e| SweepError::Parameter(format!("--vary {}: {e}", v.text())))?;
             }
         }
         Ok(Plan { base, vary, units, values })
@@ -285,7 +276,7 @@ impl Plan {
     pub fn params_at(&self, index: usize) -> Result<SceneParams, SceneError> {
         let mut p = self.base.clone();
         for (v, x) in self.vary.iter().zip(self.point(index)) {
-            p.set(&v.key, &x.to_string())?;
+            p.set_number(&v.key, x)?;
         }
         Ok(p)
     }

@@ -3,7 +3,7 @@
 
 use grainscope::physics::batches::{BatchConfig, BatchRun, Fate, alpha_midplane, run, surface_density};
 use grainscope::physics::constants::AU;
-use grainscope::scene::batches::common::BatchParams;
+use grainscope::scene::batches::common::{BatchParams, Growth};
 use grainscope::scene::{self, Progress, SceneParams};
 
 fn go(cfg: &BatchConfig) -> BatchRun {
@@ -52,7 +52,7 @@ fn initial_batches_reproduce_the_dust_surface_density() {
 #[test]
 fn mass_is_conserved_to_1e_12_in_every_frame() {
     assert_conserved(&go(&BatchConfig::figure_5_6(300)));
-    let mut compact = BatchParams { growth: "compact".into(), v_frag: 5.0, ..BatchParams::default() };
+    let mut compact = BatchParams { growth: Growth::Compact, v_frag: 5.0, ..BatchParams::default() };
     compact.disk.icy = false;
     assert_conserved(&params_run(&compact));
     assert_conserved(&params_run(&BatchParams { coagulation: false, duration_yr: 1e7, ..BatchParams::default() }));
@@ -60,7 +60,7 @@ fn mass_is_conserved_to_1e_12_in_every_frame() {
 
 #[test]
 fn figure_5_3_compact_silicates_empty_the_disk_within_a_million_years() {
-    let mut p = BatchParams { growth: "compact".into(), v_frag: 5.0, ..BatchParams::default() };
+    let mut p = BatchParams { growth: Growth::Compact, v_frag: 5.0, ..BatchParams::default() };
     p.disk.icy = false;
     p.disk.metallicity = 0.01;
     let r = params_run(&p);
@@ -201,8 +201,7 @@ fn erosion_at_20_m_s_prevents_direct_planetesimal_formation() {
 #[test]
 fn without_coagulation_micron_grains_barely_drift() {
     // Fig. 5.1: compact 1 µm silicates have Ωt_s ~ 1e-6 and drift little in 1e7 yr.
-    let mut p =
-        BatchParams { coagulation: false, growth: "compact".into(), duration_yr: 1e7, ..BatchParams::default() };
+    let mut p = BatchParams { coagulation: false, growth: Growth::Compact, duration_yr: 1e7, ..BatchParams::default() };
     p.disk.monomer_radius = 1e-6;
     p.disk.icy = false;
     let r = params_run(&p);

@@ -226,15 +226,15 @@ fn a_paused_run_waits_and_resumes() {
 #[test]
 fn a_group_mass_cap_brings_the_exact_kernels_within_5_percent() {
     use grainscope::scene::Progress;
-    use grainscope::scene::monte_carlo::analytic_kernels::{self, Params};
+    use grainscope::scene::monte_carlo::analytic_kernels::{self, Params, TestKernel};
     // At w* = 60, (4.26) alone leaves ~10 % in the mass-holding bins (the
     // heaviest groups each carry a large share of the mass); with no group
     // above 10⁻³ of the total the worst core bin is within 5 %.
-    for (kernel, t) in [("product", 0.9), ("constant", 1000.0)] {
-        let p = Params { kernel: kernel.into(), time: t, runs: 16, group_mass_cap: 1e-3, ..Params::default() };
+    for (kernel, t) in [(TestKernel::Product, 0.9), (TestKernel::Constant, 1000.0)] {
+        let p = Params { kernel, time: t, runs: 16, group_mass_cap: 1e-3, ..Params::default() };
         let (bins, _) = analytic_kernels::run(&p, &Progress::default()).expect("runs");
         let worst = analytic_kernels::core_error(&bins, 0.9);
-        assert!(worst <= 0.05, "{kernel}: worst core bin {worst}");
+        assert!(worst <= 0.05, "{kernel:?}: worst core bin {worst}");
     }
 }
 

@@ -35,7 +35,7 @@ fn draw(p: &mut SceneParams, rng: &mut StdRng) {
             }
             ControlKind::Toggle(value) => *value = rng.random(),
             ControlKind::Choice { value, options } => {
-                *value = options[rng.random_range(0..options.len())].0.to_string();
+                value.set_key(options[rng.random_range(0..options.len())].0);
             }
             ControlKind::Material(_) => {}
         }

@@ -75,25 +75,67 @@ fn the_registry_lists_each_scene_once_under_its_own_id() {
     assert_eq!(ids.len(), SCENES.len(), "duplicate scene ids");
 }
 
+/// Every object key of a JSON value, at any depth.
+fn json_keys(v: &serde_json::Value, out: &mut Vec<String>) {
+    match v {
+        serde_json::Value::Object(m) => {
+            for (k, x) in m {
+                out.push(k.clone());
+                json_keys(x, out);
+            }
+        }
+        serde_json::Value::Array(a) => a.iter().for_each(|x| json_keys(x, out)),
+        _ => {}
+    }
+}
+
 #[test]
-fn every_control_declares_the_default_of_its_scene() {
+fn the_schema_reads_and_writes_every_parameter_in_place() {
+    use grainscope::scene::DefaultValue;
+    use grainscope::scene::schema::SpecKind;
     for info in SCENES {
         let mut p = SceneParams::default_for(info.id).expect("scene");
-        for c in p.controls() {
-            assert!(c.default.is_some(), "{}: {} declares no default", info.id, c.key);
-            assert!(
-                c.is_default(),
-                "{}: {} declares {:?} but the scene's Default holds {}",
-                info.id,
-                c.key,
-                c.default,
-                c.display_value()
-            );
-            if let grainscope::scene::ControlKind::Number { min, max, .. } = c.kind {
-                assert!(min.is_finite() && max.is_finite() && min < max, "{}: {} has no finite range", info.id, c.key);
+        let specs = p.specs();
+        let mut keys = p.keys();
+        // The window's controls are the schema's parameters, in its order.
+        let controls: Vec<(&str, DefaultValue)> = p.controls().iter().map(|c| (c.key, c.value())).collect();
+        assert_eq!(controls.iter().map(|c| c.0).collect::<Vec<_>>(), keys, "{}", info.id);
+        keys.sort_unstable();
+        keys.dedup();
+        assert_eq!(keys.len(), specs.len(), "{}: a key is declared twice", info.id);
+        // Every key is a field that presets and links carry.
+        let mut stored = Vec::new();
+        json_keys(&serde_json::to_value(&p).expect("json"), &mut stored);
+        for s in specs {
+            assert!(stored.iter().any(|k| k == s.key), "{}: {} is no stored field", info.id, s.key);
+            assert!(!s.doc.is_empty() && !s.label.is_empty(), "{}: {}", info.id, s.key);
+            assert!(s.doc_line().contains("default"), "{}: {}", info.id, s.key);
+            // get reads the field the control edits.
+            let value = p.get(s.key).expect("a value");
+            assert_eq!(controls.iter().find(|c| c.0 == s.key).map(|c| &c.1), Some(&value), "{}: {}", info.id, s.key);
+            assert_eq!(s.default.as_ref(), Some(&value), "{}: {} at the default", info.id, s.key);
+            // Typed set: the ends of the range are taken, a value beyond them
+            // is refused and changes nothing.
+            if let SpecKind::Number { min, max, .. } = s.kind {
+                assert!(min.is_finite() && max.is_finite() && min < max, "{}: {} has no finite range", info.id, s.key);
+                let mut q = p.clone();
+                for x in [min, max] {
+                    q.set_number(s.key, x).expect("in range");
+                    assert_eq!(q.get(s.key), Some(DefaultValue::Number(x)), "{}: {}", info.id, s.key);
+                }
+                let before = q.clone();
+                assert!(q.set_number(s.key, max * 2.0 + 1.0).is_err(), "{}: {}", info.id, s.key);
+                assert!(q.set_number(s.key, f64::NAN).is_err(), "{}: {}", info.id, s.key);
+                assert_eq!(q, before, "{}: {} changed on a refused value", info.id, s.key);
             }
-            assert!(c.doc_line().contains("default"), "{}: {}", info.id, c.key);
+            if let SpecKind::Count { min, max } = s.kind {
+                let mut q = p.clone();
+                q.set_number(s.key, max as f64).expect("in range");
+                assert_eq!(q.get(s.key), Some(DefaultValue::Count(max)), "{}: {}", info.id, s.key);
+                assert!(q.set_number(s.key, min as f64 + 0.5).is_err(), "{}: {} takes a fraction", info.id, s.key);
+            }
         }
+        assert_eq!(p.get("no_such_parameter"), None);
     }
 }
 
@@ -129,9 +171,7 @@ fn a_quantity_shared_by_scenes_is_declared_alike() {
 
 /// The `batches` parameter of a batch scene.
 fn batch_count(p: &SceneParams) -> usize {
-    let mut p = p.clone();
-    let controls = p.controls();
-    match controls.iter().find(|c| c.key == "batches").map(|c| c.value()) {
+    match p.get("batches") {
         Some(grainscope::scene::controls::DefaultValue::Count(n)) => n,
         other => panic!("batches: {other:?}"),
     }

@@ -51,9 +51,13 @@ fn harness(w: f32, h: f32) -> Option<Harness<'static, GrainscopeApp>> {
     match std::panic::catch_unwind(build) {
         Ok(h) => Some(h),
         Err(_) if std::env::var_os("CI").is_none() => {
-            eprintln!(
-                "snapshots skipped: no wgpu adapter here (on Debian/Ubuntu, `apt install mesa-vulkan-drivers` \
-                 gives Mesa's software renderer, which drew the kept images)"
+            // Written to the terminal itself, past the test harness's
+            // capture of `eprintln!`, so that a skip is seen where it happens.
+            use std::io::Write;
+            let _ = writeln!(
+                std::io::stderr(),
+                "WARNING: snapshots skipped: no wgpu adapter here (on Debian/Ubuntu, `apt install \
+                 mesa-vulkan-drivers` gives Mesa's software renderer, which drew the kept images)"
             );
             None
         }

@@ -922,3 +922,31 @@ fn the_link_button_shows_the_address_and_its_code_until_closed() {
     assert!(h.state().state.link.is_none());
     assert!(h.query_by_label("Link to this state").is_none());
 }
+
+#[test]
+fn the_command_palette_finds_and_runs_an_action_by_name() {
+    let mut h = harness_sized(1024.0, 768.0);
+    h.run_steps(2);
+    // F2 opens it (a key no browser keeps), listing actions with their keys.
+    h.key_press(egui::Key::F2);
+    h.run_steps(2);
+    assert_eq!(h.state().state.palette.as_deref(), Some(""));
+    // "Undo" in the top bar and in the palette, beside its keys.
+    assert_eq!(h.query_all_by_label("Undo").count(), 2);
+    h.get_by_label("Ctrl+Z");
+    // Typing narrows the list; Enter runs the first match and closes it.
+    h.get_by_role_and_label(Role::TextInput, "Find").type_text("lecture");
+    h.run_steps(2);
+    assert_eq!(h.query_all_by_label("Undo").count(), 1, "the filter leaves Undo out of the palette");
+    h.key_press(egui::Key::Enter);
+    h.run_steps(3);
+    assert!(h.state().state.session.lecture, "lecture mode is on");
+    assert!(h.state().state.palette.is_none());
+    // Esc closes it without running anything.
+    h.key_press(egui::Key::F2);
+    h.run_steps(2);
+    assert!(h.state().state.palette.is_some());
+    h.key_press(egui::Key::Escape);
+    h.run_steps(2);
+    assert!(h.state().state.palette.is_none() && h.state().state.session.lecture);
+}

@@ -7,7 +7,8 @@
 //! notebook pictures of what this returns.
 
 use grainscope::preset::{self, Preset, PresetError};
-use grainscope::scene::controls::{ControlKind, DefaultValue, ParamError, did_you_mean};
+use grainscope::scene::controls::{DefaultValue, ParamError, did_you_mean};
+use grainscope::scene::schema::SpecKind;
 use grainscope::scene::{self, Progress, SCENES, SceneError, SceneOutput, SceneParams};
 use grainscope::sweep::{self, Columns, Plan, Shard, SweepError, Vary};
 use pyo3::exceptions::{PyKeyError, PyRuntimeError, PyValueError};
@@ -190,29 +191,24 @@ struct SceneEntry {
 fn scenes(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
     let mut list = Vec::new();
     for info in SCENES {
-        let Some(mut params) = SceneParams::default_for(info.id) else { continue };
+        let Some(params) = SceneParams::default_for(info.id) else { continue };
         let parameters = params
-            .controls()
-            .into_iter()
+            .specs()
+            .iter()
             .map(|c| {
-                let default = match &c.default {
+                let default = match c.default.as_ref().or(params.get(c.key).as_ref()) {
                     Some(DefaultValue::Number(v)) => serde_json::json!(v),
-                    _ => match &c.kind {
-                        ControlKind::Number { value, .. } => serde_json::json!(**value),
-                        ControlKind::Count { value, .. } => serde_json::json!(**value),
-                        ControlKind::Toggle(on) => serde_json::json!(**on),
-                        ControlKind::Material(m) => serde_json::json!(m.name),
-                        ControlKind::Choice { value, .. } => serde_json::json!(value.as_str()),
-                    },
+                    Some(DefaultValue::Count(v)) => serde_json::json!(v),
+                    Some(DefaultValue::Toggle(on)) => serde_json::json!(on),
+                    Some(DefaultValue::Text(t)) => serde_json::json!(t),
+                    None => serde_json::Value::Null,
                 };
                 let (kind, min, max, log, choices) = match &c.kind {
-                    ControlKind::Number { min, max, log, .. } => ("number", Some(*min), Some(*max), *log, vec![]),
-                    ControlKind::Count { min, max, .. } => {
-                        ("count", Some(*min as f64), Some(*max as f64), false, vec![])
-                    }
-                    ControlKind::Toggle(_) => ("toggle", None, None, false, vec![]),
-                    ControlKind::Material(_) => ("material", None, None, false, vec![]),
-                    ControlKind::Choice { options, .. } => {
+                    SpecKind::Number { min, max, log, .. } => ("number", Some(*min), Some(*max), *log, vec![]),
+                    SpecKind::Count { min, max } => ("count", Some(*min as f64), Some(*max as f64), false, vec![]),
+                    SpecKind::Toggle => ("toggle", None, None, false, vec![]),
+                    SpecKind::Material => ("material", None, None, false, vec![]),
+                    SpecKind::Choice { options } => {
                         ("choice", None, None, false, options.iter().map(|(k, _)| *k).collect())
                     }
                 };
@@ -361,8 +357,7 @@ fn plan_of(py: Python<'_>, preset_ron: &str, vary: &[String], scalars: &[String]
 fn checked_plan(preset_ron: &str, vary: &[String]) -> PyResult<Plan> {
     let preset = from_ron(preset_ron)?;
     let parsed = vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>().map_err(|e| sweep_error(&e))?;
-    let mut probe = preset.scene.clone();
-    let known: Vec<&'static str> = probe.controls().iter().map(|c| c.key).collect();
+    let known = preset.scene.keys();
     if let Some(v) = parsed.iter().find(|v| !known.contains(&v.key.as_str())) {
         return Err(param_error(&ParamError::unknown(&v.key, &known)));
     }

@@ -120,6 +120,7 @@ impl AppState {
             Command::ExportSensitivity => self.export_sensitivity(&mut fx),
             Command::ResetAll => self.reset_all(),
             Command::SetLight(on) => self.session.light = on,
+            Command::SetPalette(filter) => self.palette = filter,
             Command::SetLecture(on) => self.session.lecture = on,
             Command::SetLectureParams(on) => self.lecture_params = on,
             Command::SetHelp(on) => self.help = on,
@@ -179,7 +180,9 @@ impl AppState {
             Action::PreviousScene => self.step_scene(-1),
             Action::ToggleLecture => self.session.lecture = !self.session.lecture,
             Action::Leave => {
-                if self.help {
+                if self.palette.is_some() {
+                    self.palette = None;
+                } else if self.help {
                     self.help = false;
                 } else if self.link.is_some() {
                     self.link = None;
@@ -221,6 +224,18 @@ impl AppState {
                     self.go_to_slide(i);
                     self.status = "slide reset as the deck defines it".into();
                 }
+            }
+            Action::Palette => self.palette = if self.palette.is_some() { None } else { Some(String::new()) },
+            Action::Pin => fx.extend(self.apply(Command::Pin)),
+            Action::ClearPins => fx.extend(self.apply(Command::ClearPins)),
+            Action::Movie => fx.extend(self.apply(Command::Movie)),
+            Action::ResetAll => fx.extend(self.apply(Command::ResetAll)),
+            Action::OpenFile => fx.extend(self.apply(Command::Pick(FileKind::Preset))),
+            Action::SavePreset => fx.extend(self.apply(Command::SavePresetAs)),
+            Action::ToggleTheme => self.session.light = !self.session.light,
+            Action::DeckEditor => {
+                let open = !self.deck_editor.open;
+                fx.extend(self.apply(Command::Deck(super::command::DeckEdit::Show(open))));
             }
         }
     }
@@ -485,14 +500,10 @@ mod tests {
     use super::*;
 
     fn number(p: &SceneParams, key: &str) -> f64 {
-        let mut p = p.clone();
-        p.controls()
-            .into_iter()
-            .find_map(|c| match c.kind {
-                scene::ControlKind::Number { value, .. } if c.key == key => Some(*value),
-                _ => None,
-            })
-            .unwrap_or(f64::NAN)
+        match p.get(key) {
+            Some(scene::DefaultValue::Number(v)) => v,
+            _ => f64::NAN,
+        }
     }
 
     fn with(state: &AppState, key: &str, value: &str) -> Box<SceneParams> {

@@ -5,7 +5,7 @@
 use super::jobs::Job;
 use super::state::{AppState, Effect};
 use crate::preset::Preset;
-use crate::scene::{ControlKind, SCENES};
+use crate::scene::SCENES;
 use crate::sweep::{Plan, Spacing, Vary};
 
 impl AppState {
@@ -14,11 +14,9 @@ impl AppState {
         let base = self.params().clone();
         let (from, to, n) = (self.sweep.from, self.sweep.to, self.sweep.steps.clamp(2, 12));
         // Log-spaced where the control is logarithmic (and the range positive).
-        let log = {
-            let mut p = base.clone();
-            let controls = p.controls();
-            controls.iter().any(|c| c.key == self.sweep.key && matches!(c.kind, ControlKind::Number { log: true, .. }))
-        };
+        let log = base
+            .spec(&self.sweep.key)
+            .is_some_and(|s| matches!(s.kind, crate::scene::schema::SpecKind::Number { log: true, .. }));
         let spacing = if log && from > 0.0 && to > 0.0 { Spacing::Log } else { Spacing::Lin };
         let vary = Vary::range(&self.sweep.key, spacing, from, to, n);
         // Every value is checked before starting, so a bad range is reported at once.

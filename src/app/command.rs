@@ -60,6 +60,138 @@ pub enum Action {
     ResetSlide,
     /// Open the sensitivity view: what matters for the chosen result.
     Sensitivity,
+    /// Open or close the command palette.
+    Palette,
+    /// Keep the open scene's model curves for comparison.
+    Pin,
+    /// Remove the open scene's pins.
+    ClearPins,
+    /// Write the played history as a movie into the export folder.
+    Movie,
+    /// Reset every scene's parameters.
+    ResetAll,
+    /// Open a preset, deck, figure or measurements file.
+    OpenFile,
+    /// Save the open scene as a preset.
+    SavePreset,
+    /// Light theme on or off.
+    ToggleTheme,
+    /// The deck editor on or off.
+    DeckEditor,
+}
+
+/// An action's name and what it does: the one text every button, tooltip,
+/// the help overlay and the command palette show for it.
+#[derive(Debug, Clone, Copy)]
+pub struct ActionText {
+    /// Name, as a button or the palette shows it.
+    pub name: &'static str,
+    /// What it does, as a tooltip or the help shows it (its keys are added from the shortcut table).
+    pub does: &'static str,
+}
+
+impl Action {
+    /// Every action the palette offers, in its order (the slides by number aside).
+    pub const ALL: &'static [Action] = &[
+        Action::Palette,
+        Action::Help,
+        Action::Undo,
+        Action::Redo,
+        Action::ResetScene,
+        Action::ResetAll,
+        Action::OpenFile,
+        Action::SavePreset,
+        Action::Export,
+        Action::CopyLink,
+        Action::Pin,
+        Action::ClearPins,
+        Action::Sensitivity,
+        Action::PlayPause,
+        Action::StepForward,
+        Action::StepBack,
+        Action::Rewind,
+        Action::Movie,
+        Action::NextScene,
+        Action::PreviousScene,
+        Action::ToggleLecture,
+        Action::ToggleTheme,
+        Action::DeckEditor,
+        Action::Leave,
+        Action::NextSlide,
+        Action::PreviousSlide,
+        Action::FirstSlide,
+        Action::LastSlide,
+        Action::ToggleNotes,
+        Action::NotesWindow,
+        Action::ResetSlide,
+    ];
+
+    /// The action's name and what it does.
+    pub fn text(self) -> ActionText {
+        let (name, does) = match self {
+            Action::Help => ("Keys", "show or hide the list of keyboard shortcuts"),
+            Action::CopyLink => ("Link", "a link and QR code that open this state in the browser version"),
+            Action::Undo => ("Undo", "undo the last parameter change"),
+            Action::Redo => ("Redo", "redo what was undone"),
+            Action::PlayPause => ("Play or pause", "play or pause the history (collision, rocking, runs)"),
+            Action::StepForward => ("Step forward", "step the time cursor forward"),
+            Action::StepBack => ("Step back", "step the time cursor back"),
+            Action::Rewind => ("To the start", "time cursor to the start"),
+            Action::NextScene => ("Next scene", "the next scene of the list"),
+            Action::PreviousScene => ("Previous scene", "the previous scene of the list"),
+            Action::ToggleLecture => ("Lecture mode", "plots fill the screen in a light high-contrast theme"),
+            Action::Leave => ("Leave", "close this list or the link, leave presenter or lecture mode"),
+            Action::ResetScene => ("Reset to defaults", "this scene's parameters to their defaults"),
+            Action::Export => ("Export", "export the scene's figures (PNG, SVG, CSV) to the export folder"),
+            Action::NextSlide => ("Next slide", "the next slide"),
+            Action::PreviousSlide => ("Previous slide", "the previous slide"),
+            Action::FirstSlide => ("First slide", "the first slide"),
+            Action::LastSlide => ("Last slide", "the last slide"),
+            Action::Slide(_) => ("Slide n", "slide 1–9"),
+            Action::ToggleNotes => ("Notes", "speaker notes under the plots on or off"),
+            Action::NotesWindow => ("Notes window", "speaker notes in a window of their own, for a second screen"),
+            Action::ResetSlide => ("Reset slide", "the slide as the deck defines it"),
+            Action::Sensitivity => ("Sensitivity", "what matters for the chosen result, its curve or map"),
+            Action::Palette => ("Commands", "find and run any command by name"),
+            Action::Pin => ("Pin", "keep the scene's curves to compare with the next change"),
+            Action::ClearPins => ("Clear pins", "remove the scene's pinned curves"),
+            Action::Movie => {
+                ("Movie", "write 48 frames of the history (PNG) and an animated PNG into the export folder")
+            }
+            Action::ResetAll => ("Reset all", "every scene's parameters to their defaults (Undo brings them back)"),
+            Action::OpenFile => ("Open…", "open a preset, deck, exported figure or measurements file"),
+            Action::SavePreset => ("Save preset…", "save this scene's state as a preset file"),
+            Action::ToggleTheme => ("Light theme", "light or dark theme"),
+            Action::DeckEditor => ("Deck", "build a lecture from the window's states"),
+        };
+        ActionText { name, does }
+    }
+
+    /// Whether the action applies while presenting a deck (true), while
+    /// exploring (false), or in both (None).
+    pub fn presenting(self) -> Option<bool> {
+        match self {
+            Action::NextSlide
+            | Action::PreviousSlide
+            | Action::FirstSlide
+            | Action::LastSlide
+            | Action::Slide(_)
+            | Action::ToggleNotes
+            | Action::NotesWindow
+            | Action::ResetSlide => Some(true),
+            Action::NextScene
+            | Action::PreviousScene
+            | Action::ResetScene
+            | Action::ResetAll
+            | Action::Pin
+            | Action::ClearPins
+            | Action::Sensitivity
+            | Action::DeckEditor
+            | Action::OpenFile
+            | Action::SavePreset => Some(false),
+            _ => None,
+        }
+    }
 }
 
 /// A text field of the window whose content is kept in the session.
@@ -181,6 +313,8 @@ pub enum Command {
     SetLectureParams(bool),
     /// The shortcut list on or off.
     SetHelp(bool),
+    /// The command palette open with this filter text, or closed (None).
+    SetPalette(Option<String>),
     /// Closes the Link card.
     HideLink,
     /// A text field's new content.

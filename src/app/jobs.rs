@@ -1,11 +1,12 @@
 //! Background work: every job the window starts (a scene's computation with
 //! its coarse preview, a family sweep, rendering an export or a movie) is a
-//! value of [`Job`], and [`run`] does it, knowing nothing of threads. A
-//! [`Runner`] decides where jobs run: [`ThreadRunner`] on native threads;
-//! the browser build (`web/`) runs the same values in Web Workers of the
-//! same code. Each job belongs to a [`Lane`]; a new job on a lane cancels
-//! the one running there, and the generation number of every result drops
-//! one that is stale.
+//! value of [`Job`], and [`run`] does it: the preview, the scene caches and
+//! the cache of whole results live here, once. A [`Runner`] only decides
+//! where jobs run and carries them and their results: [`ThreadRunner`] on
+//! native threads; the browser build (`web/`) sends the same values to Web
+//! Workers of the same code. Each job belongs to a [`Lane`]; a new job on a
+//! lane cancels the one running there, and [`Lanes`] (which every runner
+//! keeps) drops a result whose job is stale.
 
 use crate::figure::{self, Figure, Series, Style};
 use crate::preset::Preset;
@@ -160,9 +161,21 @@ pub struct Finished {
 /// `caches`. The same function runs wherever a runner runs it.
 pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done, JobError> {
     match job {
-        Job::Scene { scene, params, .. } => {
+        Job::Scene { scene, params, coarse } => {
+            let key = params.compute_key();
+            if let Some(out) = caches.lock().ok().and_then(|mut c| c.get::<Results>().find(&key)) {
+                return Ok(Done::Scene(scene, out));
+            }
+            let finished = Flag::default();
+            if let Some(c) = coarse {
+                start_preview(*c, progress.clone(), Arc::clone(&finished));
+            }
             let mut c = caches.lock().map_err(|_| JobError::Cancelled)?;
-            Ok(Done::Scene(scene, scene::compute_cached(&params, progress, &mut c)?))
+            let out = scene::compute_cached(&params, progress, &mut c);
+            finished.store(true, std::sync::atomic::Ordering::Relaxed);
+            let out = out?;
+            c.get::<Results>().keep(key, &out);
+            Ok(Done::Scene(scene, out))
         }
         Job::Sweep { plan, first_color } => {
             let key = &plan.vary[0].key;
@@ -262,10 +275,43 @@ pub trait Runner {
     }
 }
 
-/// The job running on a lane.
-struct Running {
+/// The lanes' bookkeeping that every runner keeps: each job's generation
+/// and the newest job of each lane, so that the result of a job cancelled
+/// or superseded since is dropped, whichever runner ran it.
+#[derive(Debug, Default)]
+pub struct Lanes {
     generation: u64,
-    progress: Progress,
+    newest: Vec<(Lane, u64)>,
+}
+
+impl Lanes {
+    /// A new job on `lane`: its generation, now the lane's newest.
+    pub fn start(&mut self, lane: Lane) -> u64 {
+        self.generation += 1;
+        self.cancel(lane);
+        self.newest.push((lane, self.generation));
+        self.generation
+    }
+
+    /// Forgets the job on `lane`: its result will be dropped.
+    pub fn cancel(&mut self, lane: Lane) {
+        self.newest.retain(|(l, _)| *l != lane);
+    }
+
+    /// The generation of the job running on `lane`, if any.
+    pub fn running(&self, lane: Lane) -> Option<u64> {
+        self.newest.iter().find(|(l, _)| *l == lane).map(|(_, g)| *g)
+    }
+
+    /// A job's report: the result to show, and the lane free again; None
+    /// for the report of a stale job, and for a cancelled one.
+    pub fn accept(&mut self, lane: Lane, generation: u64, result: Result<Done, JobError>) -> Option<Finished> {
+        if self.running(lane) != Some(generation) {
+            return None;
+        }
+        self.cancel(lane);
+        (!matches!(result, Err(JobError::Cancelled))).then_some(Finished { lane, result })
+    }
 }
 
 /// A job's result as a runner thread sends it: lane, generation, result.
@@ -274,14 +320,14 @@ type Report = (Lane, u64, Result<Done, JobError>);
 /// Set once a job's full result is in, so that its preview is not shown.
 type Flag = Arc<std::sync::atomic::AtomicBool>;
 
-/// A runner on native threads: a thread per job, a one-thread pool of its
-/// own for previews (so that they do not queue behind the full run's
-/// parallel work), and one set of caches shared by all.
+/// A runner on native threads: a thread per job and one set of caches
+/// shared by all.
 pub struct ThreadRunner {
     caches: Arc<Mutex<Caches>>,
     done: (Sender<Report>, Receiver<Report>),
-    generation: u64,
-    running: Vec<(Lane, Running)>,
+    lanes: Lanes,
+    /// The progress of the job running on each lane.
+    running: Vec<(Lane, Progress)>,
     repaint: Arc<dyn Fn() + Send + Sync>,
 }
 
@@ -291,14 +337,14 @@ impl ThreadRunner {
         ThreadRunner {
             caches: Arc::new(Mutex::new(Caches::default())),
             done: channel(),
-            generation: 0,
+            lanes: Lanes::default(),
             running: Vec::new(),
             repaint: Arc::new(repaint),
         }
     }
 
-    fn running(&self, lane: Lane) -> Option<&Running> {
-        self.running.iter().find(|(l, _)| *l == lane).map(|(_, r)| r)
+    fn running(&self, lane: Lane) -> Option<&Progress> {
+        self.running.iter().find(|(l, _)| *l == lane).map(|(_, p)| p)
     }
 }
 
@@ -306,23 +352,12 @@ impl Runner for ThreadRunner {
     fn submit(&mut self, job: Job) {
         let lane = job.lane();
         self.cancel(lane);
-        self.generation += 1;
-        let generation = self.generation;
+        let generation = self.lanes.start(lane);
         let progress = Progress::default();
-        self.running.push((lane, Running { generation, progress: progress.clone() }));
-        let finished = Flag::default();
-        if let Job::Scene { coarse: Some(c), .. } = &job {
-            // A coarse preview beside the full run, shown until the full
-            // result arrives (and never, if the full one is cached).
-            let (c, progress, finished) = ((**c).clone(), progress.clone(), Arc::clone(&finished));
-            let _ = std::thread::Builder::new()
-                .name("grainscope-preview".into())
-                .spawn(move || preview(&c, &progress, &finished));
-        }
+        self.running.push((lane, progress.clone()));
         let (tx, caches, repaint) = (self.done.0.clone(), Arc::clone(&self.caches), Arc::clone(&self.repaint));
         let started = std::thread::Builder::new().name("grainscope-job".into()).spawn(move || {
             let result = run(job, &progress, &caches);
-            finished.store(true, std::sync::atomic::Ordering::Relaxed);
             let _ = tx.send((lane, generation, result));
             repaint();
         });
@@ -333,9 +368,10 @@ impl Runner for ThreadRunner {
     }
 
     fn cancel(&mut self, lane: Lane) {
-        self.running.retain(|(l, r)| {
+        self.lanes.cancel(lane);
+        self.running.retain(|(l, p)| {
             if *l == lane {
-                r.progress.cancel();
+                p.cancel();
             }
             *l != lane
         });
@@ -346,34 +382,31 @@ impl Runner for ThreadRunner {
     }
 
     fn progress(&self, lane: Lane) -> f64 {
-        self.running(lane).map_or(0.0, |r| r.progress.fraction())
+        self.running(lane).map_or(0.0, Progress::fraction)
     }
 
     fn set_paused(&self, lane: Lane, paused: bool) {
-        if let Some(r) = self.running(lane) {
-            r.progress.set_paused(paused);
+        if let Some(p) = self.running(lane) {
+            p.set_paused(paused);
         }
     }
 
     fn paused(&self, lane: Lane) -> bool {
-        self.running(lane).is_some_and(|r| r.progress.paused())
+        self.running(lane).is_some_and(Progress::paused)
     }
 
     fn partial(&self, lane: Lane) -> Option<Arc<SceneOutput>> {
-        self.running(lane).and_then(|r| r.progress.partial())
+        self.running(lane).and_then(Progress::partial)
     }
 
     fn poll(&mut self) -> Vec<Finished> {
         let mut out = Vec::new();
         while let Ok((lane, generation, result)) = self.done.1.try_recv() {
-            let current = self.running(lane).is_some_and(|r| r.generation == generation);
-            if !current {
-                continue;
+            let current = self.lanes.running(lane) == Some(generation);
+            if current {
+                self.running.retain(|(l, _)| *l != lane);
             }
-            self.running.retain(|(l, _)| *l != lane);
-            if !matches!(result, Err(JobError::Cancelled)) {
-                out.push(Finished { lane, result });
-            }
+            out.extend(self.lanes.accept(lane, generation, result));
         }
         out
     }
@@ -392,6 +425,46 @@ pub fn compute_now(params: &SceneParams, caches: &Mutex<Caches>) -> Result<Scene
     }
 }
 
+/// The note a coarse preview carries.
+pub const PREVIEW_NOTE: &str = "preview at low resolution; the full result follows";
+
+/// How many whole results of scene jobs are kept.
+const KEPT_RESULTS: usize = 4;
+
+/// The newest whole results of scene jobs, by their parameters' compute key:
+/// a job asked again (back to a heavy scene, an undo) answers at once, with
+/// no preview.
+#[derive(Default)]
+struct Results(Vec<(SceneParams, SceneOutput)>);
+
+impl Results {
+    fn find(&self, key: &SceneParams) -> Option<SceneOutput> {
+        self.0.iter().find(|(k, _)| k == key).map(|(_, out)| out.clone())
+    }
+
+    fn keep(&mut self, key: SceneParams, out: &SceneOutput) {
+        self.0.retain(|(k, _)| *k != key);
+        if self.0.len() >= KEPT_RESULTS {
+            self.0.remove(0);
+        }
+        self.0.push((key, out.clone()));
+    }
+}
+
+/// Starts the preview of a heavy scene's job: on a thread of its own with a
+/// one-thread pool, beside the full run (so that it does not queue behind
+/// the full run's parallel work); where no thread can be started (a
+/// browser's Web Worker), first, on this one.
+fn start_preview(c: SceneParams, progress: Progress, finished: Flag) {
+    let on_thread = {
+        let (c, progress, finished) = (c.clone(), progress.clone(), Arc::clone(&finished));
+        std::thread::Builder::new().name("grainscope-preview".into()).spawn(move || preview(&c, &progress, &finished))
+    };
+    if on_thread.is_err() {
+        preview(&c, &progress, &finished);
+    }
+}
+
 /// Computes the coarse parameters `c` of a heavy scene and offers the result
 /// for display, unless the full result came first or the job was cancelled.
 fn preview(c: &SceneParams, progress: &Progress, finished: &std::sync::atomic::AtomicBool) {
@@ -404,7 +477,7 @@ fn preview(c: &SceneParams, progress: &Progress, finished: &std::sync::atomic::A
         if finished.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
             return;
         }
-        out.notes.insert(0, "preview at low resolution; the full result follows".into());
+        out.notes.insert(0, PREVIEW_NOTE.into());
         // Only while nothing newer was offered (a live view of the full run).
         if progress.partial().is_none() {
             progress.publish(out);

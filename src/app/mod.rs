@@ -314,6 +314,7 @@ impl GrainscopeApp {
             ui::inspector::window(&ctx, cx);
             ui::matters::window(&ctx, cx);
             ui::help::overlay(&ctx, cx);
+            ui::palette::window(&ctx, cx);
             ui::link::card(&ctx, cx);
         });
         // A whole slider drag is one step of the history.

@@ -1,5 +1,7 @@
 //! Keyboard shortcuts: one table that the window dispatches from, the help
-//! overlay lists, and a test checks for clashes.
+//! overlay lists, tooltips and the command palette quote ([`hint`]), and a
+//! test checks for clashes. What each action does is written once, with the
+//! action ([`Action::text`]).
 
 use egui::{Key, Modifiers};
 
@@ -93,112 +95,39 @@ pub struct Shortcut {
     pub action: Action,
     /// Where it applies.
     pub mode: Mode,
-    /// Description in the help overlay.
-    pub text: &'static str,
 }
 
 /// Every shortcut of the window.
 pub const SHORTCUTS: &[Shortcut] = &[
-    Shortcut {
-        keys: &[key(Key::Questionmark), key(Key::H)],
-        action: Action::Help,
-        mode: Mode::Anywhere,
-        text: "show or hide this list",
-    },
-    Shortcut {
-        keys: &[command(Key::Z)],
-        action: Action::Undo,
-        mode: Mode::Anywhere,
-        text: "undo the last parameter change",
-    },
-    Shortcut {
-        keys: &[command_shift(Key::Z), command(Key::Y)],
-        action: Action::Redo,
-        mode: Mode::Anywhere,
-        text: "redo",
-    },
-    Shortcut {
-        keys: &[key(Key::P)],
-        action: Action::PlayPause,
-        mode: Mode::Anywhere,
-        text: "play or pause the history (collision, rocking, runs)",
-    },
-    Shortcut {
-        keys: &[key(Key::Period)],
-        action: Action::StepForward,
-        mode: Mode::Anywhere,
-        text: "step the time cursor forward",
-    },
-    Shortcut {
-        keys: &[key(Key::Comma)],
-        action: Action::StepBack,
-        mode: Mode::Anywhere,
-        text: "step the time cursor back",
-    },
-    Shortcut {
-        keys: &[key(Key::Home)],
-        action: Action::Rewind,
-        mode: Mode::Explorer,
-        text: "time cursor to the start",
-    },
-    Shortcut {
-        keys: &[key(Key::Space)],
-        action: Action::PlayPause,
-        mode: Mode::Explorer,
-        text: "play or pause the history",
-    },
-    Shortcut { keys: &[key(Key::PageDown)], action: Action::NextScene, mode: Mode::Explorer, text: "next scene" },
-    Shortcut { keys: &[key(Key::PageUp)], action: Action::PreviousScene, mode: Mode::Explorer, text: "previous scene" },
-    Shortcut {
-        keys: &[key(Key::L)],
-        action: Action::ToggleLecture,
-        mode: Mode::Explorer,
-        text: "lecture mode on or off",
-    },
-    Shortcut {
-        keys: &[key(Key::Escape)],
-        action: Action::Leave,
-        mode: Mode::Anywhere,
-        text: "close this list or the link, leave presenter or lecture mode",
-    },
-    Shortcut {
-        keys: &[key(Key::Q)],
-        action: Action::CopyLink,
-        mode: Mode::Anywhere,
-        text: "a link and QR code that open this state (browser version)",
-    },
-    Shortcut {
-        keys: &[key(Key::R)],
-        action: Action::ResetScene,
-        mode: Mode::Explorer,
-        text: "reset the scene's parameters",
-    },
-    Shortcut {
-        keys: &[key(Key::M)],
-        action: Action::Sensitivity,
-        mode: Mode::Explorer,
-        text: "sensitivity: what matters for the chosen result, its curve or map",
-    },
-    Shortcut {
-        keys: &[key(Key::E)],
-        action: Action::Export,
-        mode: Mode::Anywhere,
-        text: "export the scene's figures (PNG, SVG, CSV) to the export folder",
-    },
+    Shortcut { keys: &[key(Key::F2)], action: Action::Palette, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::Questionmark), key(Key::H)], action: Action::Help, mode: Mode::Anywhere },
+    Shortcut { keys: &[command(Key::Z)], action: Action::Undo, mode: Mode::Anywhere },
+    Shortcut { keys: &[command_shift(Key::Z), command(Key::Y)], action: Action::Redo, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::P)], action: Action::PlayPause, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::Period)], action: Action::StepForward, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::Comma)], action: Action::StepBack, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::Home)], action: Action::Rewind, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::Space)], action: Action::PlayPause, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::PageDown)], action: Action::NextScene, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::PageUp)], action: Action::PreviousScene, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::L)], action: Action::ToggleLecture, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::Escape)], action: Action::Leave, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::Q)], action: Action::CopyLink, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::R)], action: Action::ResetScene, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::M)], action: Action::Sensitivity, mode: Mode::Explorer },
+    Shortcut { keys: &[key(Key::E)], action: Action::Export, mode: Mode::Anywhere },
     Shortcut {
         keys: &[key(Key::ArrowRight), key(Key::PageDown), key(Key::Space), key(Key::ArrowDown)],
         action: Action::NextSlide,
         mode: Mode::Presenter,
-        text: "next slide",
     },
     Shortcut {
         keys: &[key(Key::ArrowLeft), key(Key::PageUp), key(Key::Backspace), key(Key::ArrowUp)],
         action: Action::PreviousSlide,
         mode: Mode::Presenter,
-        text: "previous slide",
     },
-    Shortcut { keys: &[key(Key::Home)], action: Action::FirstSlide, mode: Mode::Presenter, text: "first slide" },
-    Shortcut { keys: &[key(Key::End)], action: Action::LastSlide, mode: Mode::Presenter, text: "last slide" },
+    Shortcut { keys: &[key(Key::Home)], action: Action::FirstSlide, mode: Mode::Presenter },
+    Shortcut { keys: &[key(Key::End)], action: Action::LastSlide, mode: Mode::Presenter },
     Shortcut {
         keys: &[
             key(Key::Num1),
@@ -213,27 +142,35 @@ pub const SHORTCUTS: &[Shortcut] = &[
         ],
         action: Action::Slide(0),
         mode: Mode::Presenter,
-        text: "slide 1–9",
     },
-    Shortcut {
-        keys: &[key(Key::N)],
-        action: Action::ToggleNotes,
-        mode: Mode::Presenter,
-        text: "speaker notes on or off",
-    },
-    Shortcut {
-        keys: &[key(Key::W)],
-        action: Action::NotesWindow,
-        mode: Mode::Presenter,
-        text: "speaker notes in a window of their own (for a second screen)",
-    },
-    Shortcut {
-        keys: &[key(Key::R)],
-        action: Action::ResetSlide,
-        mode: Mode::Presenter,
-        text: "reset the slide as the deck defines it",
-    },
+    Shortcut { keys: &[key(Key::N)], action: Action::ToggleNotes, mode: Mode::Presenter },
+    Shortcut { keys: &[key(Key::W)], action: Action::NotesWindow, mode: Mode::Presenter },
+    Shortcut { keys: &[key(Key::R)], action: Action::ResetSlide, mode: Mode::Presenter },
 ];
+
+/// The keys of `action` where `mode` applies, as the help writes them
+/// ("Ctrl+Z", "→, Page Down"); empty if it has none.
+pub fn keys(action: Action, mode: Mode) -> String {
+    SHORTCUTS
+        .iter()
+        .filter(|s| s.action == action && s.mode.overlaps(mode))
+        .map(|s| match s.action {
+            Action::Slide(_) => "1 … 9".to_string(),
+            _ => s.keys.iter().map(|k| k.text()).collect::<Vec<_>>().join(", "),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// A tooltip: what `action` does, with its keys where `mode` applies
+/// ("undo the last parameter change (Ctrl+Z)").
+pub fn hint(action: Action, mode: Mode) -> String {
+    let does = action.text().does;
+    match keys(action, mode) {
+        k if k.is_empty() => does.to_string(),
+        k => format!("{does} ({k})"),
+    }
+}
 
 /// The actions whose keys were pressed this frame in `mode` (each key
 /// press consumed, so no widget sees it too).
@@ -284,9 +221,9 @@ mod tests {
                             ka != kb || !a.mode.overlaps(b.mode) || same_action,
                             "{} does '{}' ({:?}) and '{}' ({:?})",
                             ka.text(),
-                            a.text,
+                            a.action.text().name,
                             a.mode,
-                            b.text,
+                            b.action.text().name,
                             b.mode
                         );
                     }
@@ -335,7 +272,7 @@ mod tests {
         for s in SHORTCUTS {
             for k in s.keys {
                 let kept = function.contains(&k.key) || (k.command && with_ctrl.contains(&k.key));
-                assert!(!kept, "{} ('{}') is a key a browser keeps", k.text(), s.text);
+                assert!(!kept, "{} ('{}') is a key a browser keeps", k.text(), s.action.text().name);
             }
         }
     }
@@ -349,5 +286,52 @@ mod tests {
             }
         }
         assert_eq!(command_shift(Key::Z).text(), "Ctrl+Shift+Z");
+    }
+
+    /// Every action has a name and a meaning, the palette offers each once,
+    /// and a tooltip quotes the keys of the table.
+    #[test]
+    fn every_action_describes_itself() {
+        for (i, a) in Action::ALL.iter().enumerate() {
+            let t = a.text();
+            assert!(!t.name.is_empty() && !t.does.is_empty(), "{a:?}");
+            assert!(!Action::ALL[..i].contains(a), "{a:?} listed twice");
+        }
+        for s in SHORTCUTS {
+            if !matches!(s.action, Action::Slide(_)) {
+                assert!(Action::ALL.contains(&s.action), "{:?} has keys but is not in the palette", s.action);
+            }
+        }
+        assert_eq!(hint(Action::Undo, Mode::Explorer), "undo the last parameter change (Ctrl+Z)");
+        assert_eq!(hint(Action::PlayPause, Mode::Presenter), format!("{} (P)", Action::PlayPause.text().does));
+        assert_eq!(keys(Action::PlayPause, Mode::Explorer), "P, Space");
+        assert_eq!(keys(Action::Pin, Mode::Explorer), "");
+    }
+
+    /// No panel types a key into its text: every key a tooltip names comes
+    /// from the table ([`hint`], [`keys`]), so that none can drift.
+    #[test]
+    fn no_panel_writes_a_key_by_hand() {
+        let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src/app/ui");
+        // A key as a hint writes it: "(P)", "(Space, P)".
+        let mut names: Vec<String> = SHORTCUTS
+            .iter()
+            .flat_map(|s| s.keys.iter().map(|k| k.text()))
+            .flat_map(|k| [format!("({k})"), format!("({k},"), format!(", {k})")])
+            .collect();
+        names.extend(["(Esc".into(), "(Ctrl+".into(), "toggles".into()]);
+        let files = std::fs::read_dir(&dir).expect("src/app/ui");
+        for f in files.flatten().filter(|f| f.path().extension().is_some_and(|e| e == "rs")) {
+            let text = std::fs::read_to_string(f.path()).expect("a panel");
+            // The string literal each tooltip starts with (on its line or the next).
+            for (at, _) in text.match_indices("on_hover_text(") {
+                let rest = text[at + "on_hover_text(".len()..].trim_start();
+                let rest = rest.strip_prefix("format!(").unwrap_or(rest).trim_start();
+                let Some(literal) = rest.strip_prefix('"').and_then(|r| r.split('"').next()) else { continue };
+                for n in &names {
+                    assert!(!literal.contains(n.as_str()), "{}: a key typed by hand: {literal}", f.path().display());
+                }
+            }
+        }
     }
 }

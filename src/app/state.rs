@@ -237,6 +237,8 @@ pub struct AppState {
     pub history: History,
     /// Whether the list of keyboard shortcuts is shown.
     pub help: bool,
+    /// The command palette, while open: the text that filters its actions.
+    pub palette: Option<String>,
     /// The link last given to the present state, shown with its QR code.
     pub link: Option<LinkCard>,
     /// The deck being presented.
@@ -280,6 +282,7 @@ impl AppState {
             timeline_shown: HashSet::new(),
             history: History::default(),
             help: false,
+            palette: None,
             link: None,
             presenter: None,
             deck_editor: DeckEditor::default(),

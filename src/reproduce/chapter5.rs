@@ -1,6 +1,7 @@
 //! Chapter 5: the global dust-batch model and planetesimal maps.
 
 use super::Check;
+use crate::scene::batches::common::Growth;
 
 /// The checks of chapter 5 (global dust batches; 1000 batches per disk at
 /// Δln m = 0.05 with the kernel estimate of Σ_d, where the zone edge of
@@ -25,7 +26,7 @@ pub fn chapter5() -> Result<Vec<Check>, crate::scene::SceneError> {
         b
     };
     let mut compact = with(0.01, 0.01, 30.0, false);
-    compact.growth = "compact".into();
+    compact.growth = Growth::Compact;
     compact.disk.icy = false;
     compact.v_frag = 5.0;
     let mut eroding = with(0.01, 0.02, 30.0, false);
@@ -42,7 +43,7 @@ pub fn chapter5() -> Result<Vec<Check>, crate::scene::SceneError> {
     // Fig. 5.12: compact silicates at v_frag = 1 m/s (done[15]); Fig. 5.14:
     // α = 10⁻⁵, Z0 = 0.05, erosion at 20 m/s (done[16]).
     let mut compact_slow = with(0.01, 0.01, 30.0, false);
-    compact_slow.growth = "compact".into();
+    compact_slow.growth = Growth::Compact;
     compact_slow.disk.icy = false;
     compact_slow.v_frag = 1.0;
     let mut weak = with(0.01, 0.05, 30.0, false);

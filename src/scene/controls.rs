@@ -3,49 +3,9 @@
 //! builds its sliders from them, `--set` parses through them, and validation
 //! checks them.
 
+use super::spec::{ChoiceField, Spec, SpecKind, check_material};
+pub use super::spec::{DefaultValue, ParamError, close_matches, did_you_mean, short};
 use crate::physics::material::Material;
-
-/// Why a parameter value was refused.
-#[derive(Debug, Clone, PartialEq, thiserror::Error)]
-pub enum ParamError {
-    /// The key is not a parameter of the scene.
-    #[error("unknown parameter '{key}'{suggestion} (known: {known})")]
-    UnknownKey {
-        /// The offending key.
-        key: String,
-        /// The close matches, as ", did you mean 'a' or 'b'?" (empty if none).
-        suggestion: String,
-        /// The scene's keys.
-        known: String,
-    },
-    /// The value is non-finite or outside the documented range.
-    #[error("{key} = {value} is outside its valid range {min} … {max} {unit}")]
-    OutOfRange {
-        /// Parameter key.
-        key: String,
-        /// Offending value as text.
-        value: String,
-        /// Lower bound.
-        min: String,
-        /// Upper bound.
-        max: String,
-        /// SI unit.
-        unit: &'static str,
-    },
-    /// The text could not be parsed for this parameter.
-    #[error("{key}: cannot read '{value}' as {expected}")]
-    Parse {
-        /// Parameter key.
-        key: String,
-        /// The text given.
-        value: String,
-        /// What was expected.
-        expected: &'static str,
-    },
-    /// Two parameters contradict each other.
-    #[error("{0}")]
-    Inconsistent(String),
-}
 
 /// The kind of value a control edits.
 #[derive(Debug)]
@@ -78,84 +38,11 @@ pub enum ControlKind<'a> {
     Material(&'a mut Material),
     /// One of a fixed list of options, stored by key.
     Choice {
-        /// The chosen key.
-        value: &'a mut String,
+        /// The chosen option.
+        value: &'a mut dyn ChoiceField,
         /// (key, label) of each option.
         options: Vec<(&'static str, &'static str)>,
     },
-}
-
-impl ParamError {
-    /// The error for `key`, which is none of `known`: it names the close
-    /// matches, if any.
-    pub fn unknown(key: &str, known: &[&str]) -> ParamError {
-        ParamError::UnknownKey { key: key.into(), suggestion: did_you_mean(key, known), known: known.join(", ") }
-    }
-}
-
-/// The names of `known` close to `word`, best first (at most three): names
-/// at most a third of their letters away (Damerau–Levenshtein), and names
-/// that contain it.
-pub fn close_matches<'a>(word: &str, known: &[&'a str]) -> Vec<&'a str> {
-    let mut scored: Vec<(f64, &'a str)> = known
-        .iter()
-        .map(|k| (strsim::normalized_damerau_levenshtein(word, k), *k))
-        .filter(|(score, k)| *score >= 0.66 || (word.len() >= 3 && k.contains(word)))
-        .collect();
-    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
-    scored.into_iter().take(3).map(|(_, k)| k).collect()
-}
-
-/// ", did you mean 'a' or 'b'?" for the close matches of `word` (empty if none).
-pub fn did_you_mean(word: &str, known: &[&str]) -> String {
-    let close: Vec<String> = close_matches(word, known).iter().map(|k| format!("'{k}'")).collect();
-    match close.len() {
-        0 => String::new(),
-        _ => format!(", did you mean {}?", close.join(" or ")),
-    }
-}
-
-/// The default value of a control, as written once in its declaration.
-#[derive(Debug, Clone, PartialEq)]
-pub enum DefaultValue {
-    /// A real number, SI.
-    Number(f64),
-    /// A whole number.
-    Count(usize),
-    /// A switch.
-    Toggle(bool),
-    /// A material name or an option key.
-    Text(String),
-}
-
-impl From<f64> for DefaultValue {
-    fn from(v: f64) -> Self {
-        DefaultValue::Number(v)
-    }
-}
-
-impl From<usize> for DefaultValue {
-    fn from(v: usize) -> Self {
-        DefaultValue::Count(v)
-    }
-}
-
-impl From<bool> for DefaultValue {
-    fn from(v: bool) -> Self {
-        DefaultValue::Toggle(v)
-    }
-}
-
-impl From<&str> for DefaultValue {
-    fn from(v: &str) -> Self {
-        DefaultValue::Text(v.to_string())
-    }
-}
-
-impl From<String> for DefaultValue {
-    fn from(v: String) -> Self {
-        DefaultValue::Text(v)
-    }
 }
 
 /// One documented parameter, declared with a builder:
@@ -225,7 +112,7 @@ impl<'a> Control<'a> {
     pub fn choice(
         key: &'static str,
         label: &'static str,
-        value: &'a mut String,
+        value: &'a mut dyn ChoiceField,
         options: Vec<(&'static str, &'static str)>,
     ) -> Self {
         Control::new(key, label, ControlKind::Choice { value, options })
@@ -289,6 +176,30 @@ impl<'a> Control<'a> {
         self
     }
 
+    /// The spec of the control (its value aside).
+    pub fn spec(&self) -> Spec {
+        let c = self;
+        let kind = match &c.kind {
+            ControlKind::Number { min, max, log, display_scale, .. } => {
+                SpecKind::Number { min: *min, max: *max, log: *log, display_scale: *display_scale }
+            }
+            ControlKind::Count { min, max, .. } => SpecKind::Count { min: *min, max: *max },
+            ControlKind::Toggle(_) => SpecKind::Toggle,
+            ControlKind::Material(_) => SpecKind::Material,
+            ControlKind::Choice { options, .. } => SpecKind::Choice { options: options.clone() },
+        };
+        Spec {
+            key: c.key,
+            label: c.label,
+            unit: c.unit,
+            si_unit: c.si_unit,
+            doc: c.doc,
+            default: c.default.clone(),
+            style_only: c.style_only,
+            kind,
+        }
+    }
+
     /// Whether the current value equals the declared default (false when none is declared).
     pub fn is_default(&self) -> bool {
         match (&self.kind, &self.default) {
@@ -296,77 +207,22 @@ impl<'a> Control<'a> {
             (ControlKind::Count { value, .. }, Some(DefaultValue::Count(d))) => **value == *d,
             (ControlKind::Toggle(v), Some(DefaultValue::Toggle(d))) => **v == *d,
             (ControlKind::Material(m), Some(DefaultValue::Text(d))) => m.name == *d,
-            (ControlKind::Choice { value, .. }, Some(DefaultValue::Text(d))) => **value == *d,
+            (ControlKind::Choice { value, .. }, Some(DefaultValue::Text(d))) => value.key() == d,
             _ => false,
         }
     }
 
     /// The declared default as short text in display units.
     pub fn default_text(&self) -> Option<String> {
-        let d = self.default.as_ref()?;
-        Some(match (d, &self.kind) {
-            (DefaultValue::Number(v), ControlKind::Number { display_scale, .. }) => {
-                let s = crate::figure::tick_label(v * display_scale);
-                if self.unit.is_empty() { s } else { format!("{s} {}", self.unit) }
-            }
-            (DefaultValue::Number(v), _) => v.to_string(),
-            (DefaultValue::Count(v), _) => v.to_string(),
-            (DefaultValue::Toggle(v), _) => v.to_string(),
-            (DefaultValue::Text(v), _) => v.to_string(),
-        })
+        self.spec().default_text()
     }
 
     /// Checks the value against the documented range.
     pub fn check(&self) -> Result<(), ParamError> {
-        let out = |value: String, min: String, max: String| ParamError::OutOfRange {
-            key: self.key.into(),
-            value,
-            min,
-            max,
-            unit: self.si_unit,
-        };
         match &self.kind {
-            ControlKind::Number { value, min, max, .. } => {
-                if !(value.is_finite() && **value >= *min && **value <= *max) {
-                    let text = short(**value);
-                    return Err(out(text, format!("{min:e}"), format!("{max:e}")));
-                }
-            }
-            ControlKind::Count { value, min, max } => {
-                if !(**value >= *min && **value <= *max) {
-                    return Err(out(value.to_string(), min.to_string(), max.to_string()));
-                }
-            }
-            ControlKind::Toggle(_) => {}
-            ControlKind::Choice { value, options } => {
-                if !options.iter().any(|(k, _)| k == value) {
-                    let keys: Vec<&str> = options.iter().map(|(k, _)| *k).collect();
-                    return Err(ParamError::Parse {
-                        key: self.key.into(),
-                        value: value.to_string(),
-                        expected: if keys.is_empty() { "a known option" } else { "one of the listed options" },
-                    });
-                }
-            }
-            ControlKind::Material(m) => {
-                let bad = |what: &str, v: f64| {
-                    ParamError::Inconsistent(format!("{}: material '{}' has invalid {what} {v:e}", self.key, m.name))
-                };
-                for (what, v) in [
-                    ("Young's modulus", m.youngs_modulus),
-                    ("density", m.density),
-                    ("surface energy", m.surface_energy),
-                ] {
-                    if !(v.is_finite() && v > 0.0) {
-                        return Err(bad(what, v));
-                    }
-                }
-                if !(m.poisson_ratio > 0.0 && m.poisson_ratio < 0.5) {
-                    return Err(bad("Poisson ratio", m.poisson_ratio));
-                }
-            }
+            ControlKind::Material(m) => check_material(self.key, m),
+            _ => self.spec().check(&self.value()),
         }
-        Ok(())
     }
 
     /// Sets the value from text (SI units for numbers, `true`/`false`,
@@ -423,7 +279,9 @@ impl<'a> Control<'a> {
                     .find(|(k, _)| *k == text.trim())
                     .map(|(k, _)| *k)
                     .ok_or_else(|| parse_err("one of the option keys (see `grainscope params`)"))?;
-                **value = key.to_string();
+                if !value.set_key(key) {
+                    return Err(parse_err("one of the option keys (see `grainscope params`)"));
+                }
             }
         }
         Ok(())
@@ -436,7 +294,7 @@ impl<'a> Control<'a> {
             ControlKind::Count { value, .. } => DefaultValue::Count(**value),
             ControlKind::Toggle(v) => DefaultValue::Toggle(**v),
             ControlKind::Material(m) => DefaultValue::Text(m.name.clone()),
-            ControlKind::Choice { value, .. } => DefaultValue::Text(value.to_string()),
+            ControlKind::Choice { value, .. } => DefaultValue::Text(value.key().to_string()),
         }
     }
 
@@ -448,7 +306,11 @@ impl<'a> Control<'a> {
             (ControlKind::Number { value, .. }, DefaultValue::Number(x)) => **value = *x,
             (ControlKind::Count { value, .. }, DefaultValue::Count(x)) => **value = *x,
             (ControlKind::Toggle(b), DefaultValue::Toggle(x)) => **b = *x,
-            (ControlKind::Choice { value, .. }, DefaultValue::Text(x)) => **value = x.clone(),
+            (ControlKind::Choice { value, .. }, DefaultValue::Text(x)) => {
+                if !value.set_key(x) {
+                    return false;
+                }
+            }
             (ControlKind::Material(m), DefaultValue::Text(x)) => match Material::named(x) {
                 Some(found) => **m = found.clone(),
                 None => return false,
@@ -460,43 +322,13 @@ impl<'a> Control<'a> {
 
     /// The value as short text in display units, for labels.
     pub fn display_value(&self) -> String {
-        match &self.kind {
-            ControlKind::Number { value, display_scale, .. } => {
-                let v = **value * display_scale;
-                let s = crate::figure::tick_label(v);
-                if self.unit.is_empty() { s } else { format!("{s} {}", self.unit) }
-            }
-            ControlKind::Count { value, .. } => value.to_string(),
-            ControlKind::Toggle(v) => if **v { "on" } else { "off" }.to_string(),
-            ControlKind::Material(m) => m.name.clone(),
-            ControlKind::Choice { value, options } => {
-                options.iter().find(|(k, _)| k == value).map_or_else(|| value.to_string(), |(_, l)| l.to_string())
-            }
-        }
+        self.spec().display(&self.value())
     }
 
     /// One line of documentation: key, SI unit, range and meaning.
     pub fn doc_line(&self) -> String {
-        let range = match &self.kind {
-            ControlKind::Number { min, max, .. } => format!("{min:e} … {max:e} {}", self.si_unit),
-            ControlKind::Count { min, max, .. } => format!("{min} … {max}"),
-            ControlKind::Toggle(_) => "true | false".into(),
-            ControlKind::Material(_) => "material of Table 2.2".into(),
-            ControlKind::Choice { options, .. } => options.iter().map(|(k, _)| *k).collect::<Vec<_>>().join(" | "),
-        };
-        let default = self.default_text().map(|d| format!("; default {d}")).unwrap_or_default();
-        format!("{}: {} [{}{default}] — {}", self.key, self.label, range.trim(), self.doc)
+        self.spec().doc_line()
     }
-}
-
-/// A value as short, parseable text for messages: six significant digits
-/// ("0.0001", "1.5e-7", "-1", "inf"), not the float's every digit.
-pub fn short(v: f64) -> String {
-    if !v.is_finite() || v == 0.0 {
-        return format!("{v}");
-    }
-    let rounded: f64 = format!("{v:.5e}").parse().unwrap_or(v);
-    if (1e-3..1e5).contains(&rounded.abs()) { format!("{rounded}") } else { format!("{rounded:e}") }
 }
 
 /// A parameter range sampled on a grid, such as `r_min … r_max` with `n`

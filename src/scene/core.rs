@@ -2,7 +2,6 @@
 //! and caches. This module imports no scene, so each scene file can import it
 //! without a cycle; the registry in [`crate::scene`] sits on top of both.
 
-use super::controls::Control;
 pub use super::grid::logspace;
 pub use super::timeline::Cursor;
 use crate::figure::Figure;
@@ -36,7 +35,16 @@ pub struct SceneInfo {
 /// The parameters are stored in presets (every field defaults, so old presets
 /// keep loading).
 pub trait Scene:
-    Clone + Default + PartialEq + std::fmt::Debug + Serialize + DeserializeOwned + Send + Sync + 'static
+    Clone
+    + Default
+    + PartialEq
+    + std::fmt::Debug
+    + Serialize
+    + DeserializeOwned
+    + Send
+    + Sync
+    + 'static
+    + super::schema::ParamSet
 {
     /// Identifier, title, thesis reference and explanation.
     const INFO: SceneInfo;
@@ -50,9 +58,6 @@ pub trait Scene:
     /// reads a non-finite scalar through [`status`]. Empty by default.
     const CENSORED: &'static [Censored] = &[];
 
-    /// The documented parameters, with mutable access for the window and `--set`.
-    fn controls(&mut self) -> Vec<Control<'_>>;
-
     /// Computes the scene. Pure: the same parameters give the same output;
     /// the caches only save work.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError>;
@@ -64,6 +69,19 @@ pub trait Scene:
     /// A time cursor over the computed history: where it stands and the
     /// points it marks on the figures. None by default.
     fn cursor(&self, _out: &SceneOutput) -> Option<Cursor> {
+        None
+    }
+
+    /// The time cursor over the computed history (a fraction of the run,
+    /// 0–1), which the window plays and movies step; None (the default) for
+    /// a scene whose result is no history.
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        None
+    }
+
+    /// The first seed and the number of runs of a scene that averages
+    /// independent random runs; None (the default) for a deterministic one.
+    fn seeds(&mut self) -> Option<Seeds<'_>> {
         None
     }
 
@@ -93,6 +111,16 @@ pub trait Scene:
     fn scalar(&self, _key: &str, _progress: &Progress) -> Option<Result<f64, SceneError>> {
         None
     }
+}
+
+/// The seeds of a scene's random runs: runs `first`, `first + 1`, … up to
+/// `runs` of them.
+#[derive(Debug)]
+pub struct Seeds<'a> {
+    /// The first seed.
+    pub first: &'a mut usize,
+    /// The number of runs.
+    pub runs: &'a mut usize,
 }
 
 /// What a computation may use besides its parameters.

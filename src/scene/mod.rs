@@ -20,15 +20,18 @@ pub mod inspect;
 pub mod monomer;
 pub mod quantities;
 pub mod registry;
+pub mod schema;
+pub mod spec;
 pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Censored, Context, Extra, Progress, Report, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput,
+    Caches, Censored, Context, Extra, Progress, Report, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds,
     Status, TimedPath, Trajectory, Watcher, logspace, status,
 };
 pub use registry::{
-    Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, scalar, scenes_by_chapter,
+    Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, parameter_reference, scalar,
+    scenes_by_chapter,
 };
 pub use timeline::{Cursor, Mark};
 

@@ -8,14 +8,23 @@
 
 use super::controls::DefaultValue;
 use super::core::Scalar;
+use super::schema::Choice;
 use crate::physics::monomer::{ICE_SURFACE_ENERGY, Monomer, RollingLaw, SILICATE_SURFACE_ENERGY};
 
-/// The rolling-energy laws (key, label).
-pub const ROLLING_LAWS: [(&str, &str); 3] = [
-    ("calibrated", "calibrated (5.26)"),
-    ("contact", "ch. 3 contact (3.16)"),
-    ("dominik-tielens", "Dominik & Tielens"),
-];
+/// The law of the monomers' rolling energy E_roll.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum RollingEnergyLaw {
+    /// The thesis's calibrated law (5.26), ∝ a₀^{5/3}γ^{4/3}.
+    #[default]
+    #[choice(key = "calibrated", label = "calibrated (5.26)")]
+    Calibrated,
+    /// The ch. 3 contact, 6πγRξ_crit with ξ_crit from the adhesion hysteresis (3.16).
+    #[choice(key = "contact", label = "ch. 3 contact (3.16)")]
+    Contact,
+    /// Dominik & Tielens with a fixed ξ_crit.
+    #[choice(key = "dominik-tielens", label = "Dominik & Tielens")]
+    DominikTielens,
+}
 
 /// The keys of the monomer card: the parameters every aggregate scene shares.
 pub const MONOMER_KEYS: [&str; 7] =
@@ -37,8 +46,8 @@ pub struct Spec {
     pub surface_energy_ice: f64,
     /// `surface_energy_silicate`: γ of two silicate monomers, J m⁻².
     pub surface_energy_silicate: f64,
-    /// `rolling_law`: a key of [`ROLLING_LAWS`].
-    pub rolling_law: String,
+    /// `rolling_law`: the law of E_roll.
+    pub rolling_law: RollingEnergyLaw,
     /// `hysteresis`: Δγ/γ of the ch. 3 law.
     pub hysteresis: f64,
     /// `xi_crit`: ξ_crit of the Dominik & Tielens law, m.
@@ -52,7 +61,7 @@ impl Default for Spec {
             icy: true,
             surface_energy_ice: ICE_SURFACE_ENERGY,
             surface_energy_silicate: SILICATE_SURFACE_ENERGY,
-            rolling_law: "calibrated".into(),
+            rolling_law: RollingEnergyLaw::Calibrated,
             hysteresis: 0.5,
             xi_crit: 3e-10,
         }
@@ -70,7 +79,11 @@ impl Spec {
                 ("icy", DefaultValue::Toggle(x)) => s.icy = *x,
                 ("surface_energy_ice", DefaultValue::Number(x)) => s.surface_energy_ice = *x,
                 ("surface_energy_silicate", DefaultValue::Number(x)) => s.surface_energy_silicate = *x,
-                ("rolling_law", DefaultValue::Text(x)) => s.rolling_law = x.clone(),
+                ("rolling_law", DefaultValue::Text(x)) => {
+                    if let Some(law) = RollingEnergyLaw::from_key(x) {
+                        s.rolling_law = law;
+                    }
+                }
                 ("hysteresis", DefaultValue::Number(x)) => s.hysteresis = *x,
                 ("xi_crit", DefaultValue::Number(x)) => s.xi_crit = *x,
                 _ => {}
@@ -82,26 +95,25 @@ impl Spec {
     /// The monomer.
     pub fn monomer(&self) -> Monomer {
         let surface_energy = if self.icy { self.surface_energy_ice } else { self.surface_energy_silicate };
-        monomer(self.radius, self.icy, surface_energy, &self.rolling_law, self.hysteresis, self.xi_crit)
+        monomer(self.radius, self.icy, surface_energy, self.rolling_law, self.hysteresis, self.xi_crit)
     }
 }
 
 /// The monomer of radius `radius` (m), icy or silicate, with the combined
-/// `surface_energy` (J m⁻²) and the rolling law `rolling_law` (a key of
-/// [`ROLLING_LAWS`]; the calibrated law for any other) with its `hysteresis`
-/// or `xi_crit`.
+/// `surface_energy` (J m⁻²) and the rolling law `rolling_law` with its
+/// `hysteresis` or `xi_crit`.
 pub fn monomer(
     radius: f64,
     icy: bool,
     surface_energy: f64,
-    rolling_law: &str,
+    rolling_law: RollingEnergyLaw,
     hysteresis: f64,
     xi_crit: f64,
 ) -> Monomer {
     let rolling = match rolling_law {
-        "contact" => RollingLaw::Contact { hysteresis },
-        "dominik-tielens" => RollingLaw::DominikTielens { xi: xi_crit },
-        _ => RollingLaw::Calibrated,
+        RollingEnergyLaw::Contact => RollingLaw::Contact { hysteresis },
+        RollingEnergyLaw::DominikTielens => RollingLaw::DominikTielens { xi: xi_crit },
+        RollingEnergyLaw::Calibrated => RollingLaw::Calibrated,
     };
     Monomer { radius, density: if icy { 1400.0 } else { 2600.0 }, icy, surface_energy, rolling }
 }

@@ -98,3 +98,8 @@ pub fn duration(value: &mut f64) -> Control<'_> {
 pub fn hysteresis(value: &mut f64) -> Control<'_> {
     Control::number("hysteresis", "hysteresis Δγ/γ", value).range(1e-3, 100.0).log().doc("sets ξ_crit (3.16)")
 }
+
+/// Radius in the disk, AU (the field's doc says what sits there).
+pub fn disk_radius(value: &mut f64) -> Control<'_> {
+    Control::number("radius_au", "disk radius", value).unit("AU").range(0.5, 300.0).log()
+}

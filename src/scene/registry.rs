@@ -8,8 +8,10 @@
 //! add the line `my_scene::MyScene,` (the module and the variant of
 //! [`SceneParams`] for its `Params`) to its chapter in the list below.
 
-use super::controls::{Control, ControlKind, DefaultValue, ParamError};
-use super::core::{Caches, Censored, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput};
+use super::controls::short;
+use super::controls::{Control, ControlKind, ParamError};
+use super::core::{Caches, Censored, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
+use super::schema::{ParamSet, Spec, SpecKind, Value};
 use super::timeline::Cursor;
 use super::{batches, collisions, debris, disk, inspect, monomer, monte_carlo, overview, rolling};
 use crate::physics::fit::Measurement;
@@ -73,7 +75,35 @@ macro_rules! scenes {
             /// The documented parameters, with mutable access for the UI and `--set`.
             pub fn controls(&mut self) -> Vec<Control<'_>> {
                 match self {
-                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::controls(p), )*)*
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as ParamSet>::controls(p), )*)*
+                }
+            }
+
+            /// Every parameter's spec, in the order of the controls.
+            pub fn specs(&self) -> &'static [Spec] {
+                match self {
+                    $($( SceneParams::$scene(_) => <$chapter::$module::Params as ParamSet>::specs(), )*)*
+                }
+            }
+
+            /// The value of parameter `key`, read in place; None if the scene has no such parameter.
+            pub fn get(&self, key: &str) -> Option<Value> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as ParamSet>::get(p, key), )*)*
+                }
+            }
+
+            /// Sets parameter `key` to `value` (of its kind), checking its range; on error nothing changes.
+            pub fn set_value(&mut self, key: &str, value: &Value) -> Result<(), ParamError> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as ParamSet>::set(p, key, value), )*)*
+                }
+            }
+
+            /// Checks every parameter against its spec, in place.
+            fn check_all(&self) -> Result<(), ParamError> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as ParamSet>::check_all(p), )*)*
                 }
             }
 
@@ -81,6 +111,21 @@ macro_rules! scenes {
             pub fn material_changed(&mut self) {
                 match self {
                     $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::material_changed(p), )*)*
+                }
+            }
+
+            /// The time cursor's value (fraction of the run, 0–1) of a scene
+            /// whose result is a history, for playing it.
+            pub fn cursor_mut(&mut self) -> Option<&mut f64> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::time_cursor(p), )*)*
+                }
+            }
+
+            /// The seeds of a scene that averages random runs.
+            pub fn seeds(&mut self) -> Option<Seeds<'_>> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::seeds(p), )*)*
                 }
             }
 
@@ -189,11 +234,39 @@ scenes! {
 impl SceneParams {
     /// Checks every parameter against its documented range.
     pub fn validate(&self) -> Result<(), ParamError> {
-        let mut copy = self.clone();
-        for c in copy.controls() {
-            c.check()?;
-        }
-        Ok(())
+        self.check_all()
+    }
+
+    /// Sets the numeric parameter `key` to `x` (a whole number for a count),
+    /// checking its range: no text between the number and the field. On
+    /// error nothing changes.
+    pub fn set_number(&mut self, key: &str, x: f64) -> Result<(), ParamError> {
+        let spec = self.spec(key).ok_or_else(|| ParamError::unknown(key, &self.keys()))?;
+        let value = match spec.kind {
+            SpecKind::Number { .. } => Value::Number(x),
+            SpecKind::Count { .. } if x.is_finite() && x >= 0.0 && x.fract() == 0.0 => Value::Count(x as usize),
+            SpecKind::Count { .. } => {
+                return Err(ParamError::Parse { key: key.into(), value: short(x), expected: "a whole number" });
+            }
+            _ => {
+                return Err(ParamError::Parse {
+                    key: key.into(),
+                    value: short(x),
+                    expected: "a parameter that is a number",
+                });
+            }
+        };
+        self.set_value(key, &value)
+    }
+
+    /// The spec of parameter `key`.
+    pub fn spec(&self, key: &str) -> Option<&'static Spec> {
+        self.specs().iter().find(|s| s.key == key)
+    }
+
+    /// The keys of the scene's parameters.
+    pub fn keys(&self) -> Vec<&'static str> {
+        self.specs().iter().map(|s| s.key).collect()
     }
 
     /// Sets the parameter `key` from its textual value (as on the command
@@ -211,15 +284,6 @@ impl SceneParams {
         Ok(())
     }
 
-    /// The time cursor's value (fraction of the run, 0–1) of a scene whose
-    /// result is a history, for playing it.
-    pub fn cursor_mut(&mut self) -> Option<&mut f64> {
-        self.controls().into_iter().find_map(|c| match (c.key, c.kind) {
-            ("cursor", ControlKind::Number { value, .. }) => Some(value),
-            _ => None,
-        })
-    }
-
     /// The figures of `out` as they are exported: with the time cursor's
     /// marks where the scene always shows them.
     pub fn exported_figures(&self, out: &SceneOutput) -> Vec<crate::figure::Figure> {
@@ -232,9 +296,7 @@ impl SceneParams {
 
     /// The scene's monomer card (see [`monomer`]), if it builds aggregates.
     pub fn monomer_card(&self) -> Option<monomer::Card> {
-        let mut copy = self.clone();
-        let controls = copy.controls();
-        monomer::MONOMER_KEYS.iter().map(|k| controls.iter().find(|c| c.key == *k).map(|c| c.value())).collect()
+        monomer::MONOMER_KEYS.iter().map(|k| self.get(k)).collect()
     }
 
     /// Gives the scene the monomer `card`. False, and nothing changes, if the
@@ -259,8 +321,7 @@ impl SceneParams {
 
     /// Whether the scene keeps its own monomer instead of the shared one.
     pub fn own_monomer(&self) -> bool {
-        let mut copy = self.clone();
-        copy.controls().iter().any(|c| c.key == "own_monomer" && c.value() == DefaultValue::Toggle(true))
+        self.get("own_monomer") == Some(Value::Toggle(true))
     }
 
     /// The monomer of the scene's card, if it has one.
@@ -288,17 +349,16 @@ impl SceneParams {
     /// Keys whose values differ between `self` and `other` (same scene), with
     /// the values of `self` as text: used to label pinned curves.
     pub fn differences(&self, other: &SceneParams) -> Vec<String> {
-        let mut a = self.clone();
-        let mut b = other.clone();
-        let ca = a.controls();
-        let cb = b.controls();
-        if ca.len() != cb.len() {
+        if self.info().id != other.info().id {
             return Vec::new();
         }
-        ca.iter()
-            .zip(cb.iter())
-            .filter(|(x, y)| x.key == y.key && x.display_value() != y.display_value() && !x.style_only)
-            .map(|(x, _)| format!("{} = {}", x.label, x.display_value()))
+        self.specs()
+            .iter()
+            .filter(|s| !s.style_only)
+            .filter_map(|s| {
+                let (a, b) = (s.display(&self.get(s.key)?), s.display(&other.get(s.key)?));
+                (a != b).then(|| format!("{} = {a}", s.label))
+            })
             .collect()
     }
 }
@@ -332,6 +392,51 @@ pub fn scalar(params: &SceneParams, key: &str, progress: &Progress) -> Result<Op
         Some(value) => value.map(Some),
         None => Ok(compute(params, progress)?.scalar(key)),
     }
+}
+
+/// The parameter reference of every scene as Markdown, generated from the
+/// schema (`docs/parameters.md`; `grainscope params --markdown`): per scene
+/// a table of key, label, SI unit, valid values, default and meaning.
+pub fn parameter_reference() -> String {
+    let cell = |s: &str| s.replace('|', "\\|");
+    let mut out = String::from(
+        "# Parameters\n\nEvery scene's parameters as the schema declares them (generated by \
+`grainscope params --markdown`; a test keeps this file current). Values are stored in the units \
+of the \"SI unit\" column; the window shows them in the unit of the default.\n",
+    );
+    for (chapter, scenes) in scenes_by_chapter() {
+        out.push_str(&format!("\n## {}\n", chapter.heading));
+        for i in scenes {
+            let info = &SCENES[i];
+            let Some(p) = SceneParams::default_for(info.id) else { continue };
+            out.push_str(&format!("\n### `{}` — {}\n\n", info.id, info.title));
+            out.push_str("| key | label | SI unit | valid values | default | meaning |\n|---|---|---|---|---|---|\n");
+            for s in p.specs() {
+                let values = match &s.kind {
+                    SpecKind::Number { min, max, log, .. } => {
+                        format!("{min:e} … {max:e}{}", if *log { " (log)" } else { "" })
+                    }
+                    SpecKind::Count { min, max } => format!("{min} … {max}"),
+                    SpecKind::Toggle => "true, false".into(),
+                    SpecKind::Material => "a material of Table 2.2".into(),
+                    SpecKind::Choice { options } => {
+                        options.iter().map(|(k, _)| format!("`{k}`")).collect::<Vec<_>>().join(", ")
+                    }
+                };
+                let style = if s.style_only { " (display only)" } else { "" };
+                out.push_str(&format!(
+                    "| `{}` | {} | {} | {} | {} | {}{style} |\n",
+                    s.key,
+                    cell(s.label),
+                    cell(s.si_unit),
+                    cell(&values),
+                    cell(&s.default_text().unwrap_or_default()),
+                    cell(s.doc)
+                ));
+            }
+        }
+    }
+    out
 }
 
 /// The first of two names (lets the registry repeat a chapter per scene).

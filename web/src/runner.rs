@@ -6,7 +6,7 @@
 //! job starts a fresh one. Cheap scenes compute on the page at once.
 
 use crate::wire;
-use grainscope::app::jobs::{self, Done, Finished, Job, JobError, Lane, Runner};
+use grainscope::app::jobs::{self, Done, Finished, Job, JobError, Lane, Lanes, Runner};
 use grainscope::scene::{Caches, Progress, SceneError, SceneOutput, SceneParams};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
@@ -45,9 +45,7 @@ impl Drop for Slot {
 pub struct WorkerRunner {
     slots: Vec<(Lane, Slot)>,
     inbox: Rc<RefCell<Vec<Report>>>,
-    generation: u64,
-    /// The newest job of each lane.
-    newest: Vec<(Lane, u64)>,
+    lanes: Lanes,
     caches: Mutex<Caches>,
     repaint: Rc<dyn Fn()>,
 }
@@ -58,8 +56,7 @@ impl WorkerRunner {
         WorkerRunner {
             slots: Vec::new(),
             inbox: Rc::default(),
-            generation: 0,
-            newest: Vec::new(),
+            lanes: Lanes::default(),
             caches: Mutex::default(),
             repaint: Rc::new(repaint),
         }
@@ -129,10 +126,7 @@ impl Runner for WorkerRunner {
     fn submit(&mut self, job: Job) {
         let lane = job.lane();
         self.cancel(lane);
-        self.generation += 1;
-        let generation = self.generation;
-        self.newest.retain(|(l, _)| *l != lane);
-        self.newest.push((lane, generation));
+        let generation = self.lanes.start(lane);
         let bytes = match wire::encode(&job) {
             Ok(b) => b,
             Err(e) => {
@@ -170,6 +164,7 @@ impl Runner for WorkerRunner {
     }
 
     fn cancel(&mut self, lane: Lane) {
+        self.lanes.cancel(lane);
         // A worker that computes cannot be told to stop: it is ended.
         self.slots.retain(|(l, s)| *l != lane || !s.busy);
     }
@@ -203,7 +198,7 @@ impl Runner for WorkerRunner {
         let mut out = Vec::new();
         for (lane, generation, result) in reports {
             // Reports of a job cancelled since are dropped.
-            if !self.newest.contains(&(lane, generation)) {
+            if self.lanes.running(lane) != Some(generation) {
                 continue;
             }
             let failed = matches!(result, Err(JobError::Failed(_)));
@@ -213,9 +208,7 @@ impl Runner for WorkerRunner {
                 Some((_, slot)) => slot.busy = false,
                 None => {}
             }
-            if !matches!(result, Err(JobError::Cancelled)) {
-                out.push(Finished { lane, result });
-            }
+            out.extend(self.lanes.accept(lane, generation, result));
         }
         out
     }

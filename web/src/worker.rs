@@ -7,7 +7,7 @@
 
 use crate::wire;
 use grainscope::app::jobs::{self, Done, Job, JobError};
-use grainscope::scene::{self, Caches, Extra, Progress, Report, SceneOutput, Watcher};
+use grainscope::scene::{Caches, Extra, Progress, Report, SceneOutput, Watcher};
 use std::cell::Cell;
 use std::sync::{Arc, Mutex};
 use wasm_bindgen::JsCast;
@@ -62,15 +62,11 @@ fn report(r: Report<'_>) {
     }
 }
 
-/// Runs a job: a heavy scene's coarse preview first, then the job itself.
+/// Runs a job as the desktop does ([`jobs::run`]: a heavy scene's coarse
+/// preview, unless its result is cached, comes first here, where no thread
+/// can compute it beside), posting what it reports.
 fn run(job: Job) -> Result<Done, JobError> {
     let progress = Progress::watched(Watcher(Arc::new(report)));
-    if let Job::Scene { coarse: Some(c), .. } = &job
-        && let Ok(mut out) = scene::compute(c, &Progress::default())
-    {
-        out.notes.insert(0, "preview at low resolution; the full result follows".into());
-        post_partial(&out);
-    }
     CACHES.with(|caches| jobs::run(job, &progress, caches))
 }
 

@@ -3,7 +3,7 @@
 //! one command; a typed value outside its range is refused with a notice.
 
 use super::Cx;
-use crate::app::command::{Command, Field};
+use crate::app::command::{Action, Command, Field};
 use crate::app::platform::FileKind;
 use crate::figure;
 use crate::scene::monomer::MONOMER_KEYS;
@@ -173,11 +173,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
                         });
                     }
                     ControlKind::Choice { value, options } => {
-                        let shown = options.iter().find(|(k, _)| *k == value.as_str()).map_or("?", |(_, l)| *l);
+                        let shown = options.iter().find(|(k, _)| *k == value.key()).map_or("?", |(_, l)| *l);
                         egui::ComboBox::from_label(label).selected_text(shown).show_ui(ui, |ui| {
                             for (k, l) in options.iter() {
-                                if ui.selectable_label(value.as_str() == *k, *l).clicked() {
-                                    **value = k.to_string();
+                                if ui.selectable_label(value.key() == *k, *l).clicked() {
+                                    value.set_key(k);
                                 }
                             }
                         });
@@ -214,7 +214,10 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, select: Select<'_>) {
         cx.send(Command::Accept(key));
     }
     if matches!(select, Select::Parameters)
-        && ui.button("Reset to defaults").on_hover_text("this scene's parameters (R)").clicked()
+        && ui
+            .button("Reset to defaults")
+            .on_hover_text(crate::app::shortcuts::hint(Action::ResetScene, crate::app::shortcuts::Mode::Explorer))
+            .clicked()
     {
         cx.send(Command::Act(crate::app::command::Action::ResetScene));
     }

@@ -363,9 +363,7 @@ fn overlay_for(state: &AppState, fig: &Figure, cursor: Vec<scene::Mark>) -> plot
         })
         .collect();
     let family = key.and_then(|key| {
-        let mut params = current.clone();
-        let controls = params.controls();
-        let c = controls.iter().find(|c| c.key == key)?;
+        let c = current.spec(&key)?;
         let values: Vec<f64> = pinned.iter().filter_map(|s| s.family).collect();
         if values.is_empty() {
             return None;

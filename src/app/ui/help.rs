@@ -1,5 +1,6 @@
 //! The list of keyboard shortcuts, over everything: read from the same
-//! table the keys are dispatched from, so it lists exactly what exists.
+//! table the keys are dispatched from, with each action's own text, so it
+//! lists exactly what exists.
 
 use super::Cx;
 use crate::app::command::{Action, Command};
@@ -31,7 +32,7 @@ pub fn overlay(ctx: &egui::Context, cx: &mut Cx<'_>) {
                                 s.keys.iter().map(|k| k.text()).collect::<Vec<_>>().join(", ")
                             };
                             ui.label(egui::RichText::new(keys).monospace());
-                            ui.label(s.text);
+                            ui.label(s.action.text().does);
                             ui.end_row();
                         }
                     }

@@ -25,12 +25,9 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let scalars: Vec<(&'static str, &'static str, &'static str)> =
         cx.state.output().map(|o| o.scalars.iter().map(|s| (s.key, s.label, s.unit)).collect()).unwrap_or_default();
     let mut params: Vec<(&'static str, &'static str)> = Vec::new();
-    {
-        let mut p = cx.state.params().clone();
-        for c in p.controls() {
-            if matches!(c.kind, crate::scene::ControlKind::Number { .. }) && !c.style_only {
-                params.push((c.key, c.label));
-            }
+    for s in cx.state.params().specs() {
+        if matches!(s.kind, crate::scene::schema::SpecKind::Number { .. }) && !s.style_only {
+            params.push((s.key, s.label));
         }
     }
     let (mut output, mut x, mut y) = (m.output.clone(), m.x.clone(), m.y.clone());
@@ -61,7 +58,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                     })
                     .response
                     .labelled_by(label.id);
-                recompute |= ui.button("Recompute").on_hover_text("the chart for this result at the current parameters (M)").clicked();
+                recompute |= ui.button("Recompute").on_hover_text(format!("the chart for this result at the current parameters ({})", crate::app::shortcuts::keys(crate::app::command::Action::Sensitivity, crate::app::shortcuts::Mode::Explorer))).clicked();
                 export |= ui
                     .button("Export")
                     .on_hover_text("the chart's table (CSV) and the curve or map (PNG, SVG, CSV) to the export folder; opening any of them reopens this view")

@@ -11,6 +11,7 @@ pub mod link;
 pub mod look;
 pub mod matters;
 pub mod monomer_card;
+pub mod palette;
 pub mod plot;
 pub mod presenter;
 pub mod scene_panel;

@@ -5,6 +5,7 @@
 use super::Cx;
 use super::controls::{self, Select};
 use crate::app::command::{Action, Command};
+use crate::app::shortcuts::{self, Mode};
 
 /// The bar above the slide: position, title and the presenter's buttons.
 pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
@@ -16,24 +17,20 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     // The title in full (it wraps); the buttons follow it, on the next line
     // where the title leaves no room.
     ui.horizontal_wrapped(|ui| {
-        if ui.button("◀").on_hover_text("previous slide (←, Page Up)").clicked() {
+        if ui.button("◀").on_hover_text(hint(Action::PreviousSlide)).clicked() {
             cx.send(Command::Act(Action::PreviousSlide));
         }
         ui.label(egui::RichText::new(format!("{} / {n}", i + 1)).strong());
-        if ui.button("▶").on_hover_text("next slide (→, Page Down, Space)").clicked() {
+        if ui.button("▶").on_hover_text(hint(Action::NextSlide)).clicked() {
             cx.send(Command::Act(Action::NextSlide));
         }
         ui.separator();
         ui.add(egui::Label::new(egui::RichText::new(title).heading().strong()).wrap());
         ui.separator();
-        if ui.selectable_label(notes, "Notes").on_hover_text("speaker notes under the plots (N)").clicked() {
+        if ui.selectable_label(notes, "Notes").on_hover_text(hint(Action::ToggleNotes)).clicked() {
             cx.send(Command::Act(Action::ToggleNotes));
         }
-        if ui
-            .selectable_label(notes_window, "Notes window")
-            .on_hover_text("speaker notes in a window of their own, for a second screen (W)")
-            .clicked()
-        {
+        if ui.selectable_label(notes_window, "Notes window").on_hover_text(hint(Action::NotesWindow)).clicked() {
             cx.send(Command::Act(Action::NotesWindow));
         }
         let mut params = cx.state.lecture_params;
@@ -44,10 +41,10 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         {
             cx.send(Command::SetLectureParams(params));
         }
-        if ui.button("Reset slide").on_hover_text("as the deck defines it (R)").clicked() {
+        if ui.button("Reset slide").on_hover_text(hint(Action::ResetSlide)).clicked() {
             cx.send(Command::Act(Action::ResetSlide));
         }
-        if ui.button("Leave").on_hover_text("leave presenter mode (Esc)").clicked() {
+        if ui.button("Leave").on_hover_text(hint(Action::Leave)).clicked() {
             cx.send(Command::StopPresenting);
         }
     });
@@ -130,4 +127,9 @@ pub fn notes_window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     if close {
         cx.send(Command::CloseNotesWindow);
     }
+}
+
+/// A tooltip for `action` while presenting: what it does and its keys, from the action table.
+fn hint(action: Action) -> String {
+    shortcuts::hint(action, Mode::Presenter)
 }

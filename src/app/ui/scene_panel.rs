@@ -4,7 +4,8 @@
 
 use super::Cx;
 use super::controls::{self, Select};
-use crate::app::command::{Command, Sweep};
+use crate::app::command::{Action, Command, Sweep};
+use crate::app::shortcuts::Mode;
 use crate::figure;
 use crate::scene::{self, SCENES};
 use crate::sensitivity::Knob;
@@ -44,7 +45,8 @@ pub fn parameters(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 pub fn navigator(ui: &mut egui::Ui, cx: &mut Cx<'_>, width: f32) {
     use crate::app::command::Action;
     ui.horizontal(|ui| {
-        if ui.button("◀").on_hover_text("previous scene (Page Up)").clicked() {
+        if ui.button("◀").on_hover_text(crate::app::shortcuts::hint(Action::PreviousScene, Mode::Explorer)).clicked()
+        {
             cx.send(Command::Act(Action::PreviousScene));
         }
         let here = cx.state.index();
@@ -75,7 +77,7 @@ pub fn navigator(ui: &mut egui::Ui, cx: &mut Cx<'_>, width: f32) {
         if let Some(i) = chosen {
             cx.send(Command::OpenScene(i));
         }
-        if ui.button("▶").on_hover_text("next scene (Page Down)").clicked() {
+        if ui.button("▶").on_hover_text(crate::app::shortcuts::hint(Action::NextScene, Mode::Explorer)).clicked() {
             cx.send(Command::Act(Action::NextScene));
         }
     });
@@ -136,11 +138,14 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
 fn compare(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     ui.label(egui::RichText::new("Compare").strong());
     ui.horizontal(|ui| {
-        if ui.button("Pin curves").on_hover_text("keep the current model curves while you change parameters").clicked()
-        {
+        if ui.button("Pin curves").on_hover_text(crate::app::shortcuts::hint(Action::Pin, Mode::Explorer)).clicked() {
             cx.send(Command::Pin);
         }
-        if ui.button("Clear pins").clicked() {
+        if ui
+            .button("Clear pins")
+            .on_hover_text(crate::app::shortcuts::hint(Action::ClearPins, Mode::Explorer))
+            .clicked()
+        {
             cx.send(Command::ClearPins);
         }
     });

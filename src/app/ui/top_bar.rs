@@ -6,6 +6,7 @@ use super::Cx;
 use super::scene_panel::{headline, navigator};
 use crate::app::command::{Action, Command, DeckEdit, Field};
 use crate::app::platform::FileKind;
+use crate::app::shortcuts::{self, Mode};
 use crate::preset::Preset;
 use crate::scene::{self, SCENES};
 
@@ -25,12 +26,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             ui.menu_button("Present", |ui| decks_menu(ui, cx));
             ui.separator();
             let mut lecture = true;
-            if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text("L toggles, Esc leaves").changed() {
+            if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text(hint(Action::ToggleLecture)).changed() {
                 cx.send(Command::SetLecture(lecture));
             }
-            if ui.button("?").on_hover_text("keyboard shortcuts (? or H)").clicked() {
-                cx.send(Command::Act(Action::Help));
-            }
+            // The palette is on F2 here: the bar has no room left at 1024 px.
+            action_button(ui, cx, Action::Help, "?");
         });
         // The scene's headline result (e.g. e = 0.657, bounces) stays on
         // screen while the parameters are hidden, with the transport of
@@ -71,50 +71,44 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         ui.menu_button("Shipped presets", |ui| presets_menu(ui, cx));
         ui.separator();
         let mut light = cx.state.session.light;
-        if ui.checkbox(&mut light, "Light theme").changed() {
+        if ui.checkbox(&mut light, "Light theme").on_hover_text(hint(Action::ToggleTheme)).changed() {
             cx.send(Command::SetLight(light));
         }
         let mut lecture = false;
-        if ui
-            .checkbox(&mut lecture, "Lecture mode")
-            .on_hover_text("plots fill the screen in a light high-contrast theme (L toggles, Esc leaves)")
-            .changed()
-        {
+        if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text(hint(Action::ToggleLecture)).changed() {
             cx.send(Command::SetLecture(lecture));
         }
         ui.separator();
         let (undo, redo) = cx.state.history.depth();
-        if ui
-            .add_enabled(undo > 0, egui::Button::new("Undo"))
-            .on_hover_text("undo the last parameter change (Ctrl+Z)")
-            .clicked()
-        {
+        if ui.add_enabled(undo > 0, egui::Button::new("Undo")).on_hover_text(hint(Action::Undo)).clicked() {
             cx.send(Command::Act(Action::Undo));
         }
-        if ui.add_enabled(redo > 0, egui::Button::new("Redo")).on_hover_text("redo (Ctrl+Shift+Z)").clicked() {
+        if ui.add_enabled(redo > 0, egui::Button::new("Redo")).on_hover_text(hint(Action::Redo)).clicked() {
             cx.send(Command::Act(Action::Redo));
         }
-        if ui.button("Reset all").on_hover_text("every scene's parameters to their defaults (Ctrl+Z undoes)").clicked()
-        {
-            cx.send(Command::ResetAll);
-        }
+        action_button(ui, cx, Action::ResetAll, Action::ResetAll.text().name);
         ui.separator();
         let mut open = cx.state.deck_editor.open;
-        if ui.toggle_value(&mut open, "Deck").on_hover_text("build a lecture from the window's states").changed() {
+        if ui.toggle_value(&mut open, "Deck").on_hover_text(hint(Action::DeckEditor)).changed() {
             cx.send(Command::Deck(DeckEdit::Show(open)));
         }
         ui.menu_button("Present", |ui| decks_menu(ui, cx));
-        if ui.button("Keys").on_hover_text("keyboard shortcuts (? or H)").clicked() {
-            cx.send(Command::Act(Action::Help));
-        }
-        if ui
-            .button("Link")
-            .on_hover_text("a link and QR code that open this state in the browser version (Q)")
-            .clicked()
-        {
-            cx.send(Command::Act(Action::CopyLink));
+        for action in [Action::Palette, Action::Help, Action::CopyLink] {
+            action_button(ui, cx, action, action.text().name);
         }
     });
+}
+
+/// A tooltip for `action` in the explorer: what it does and its keys, from the action table.
+fn hint(action: Action) -> String {
+    shortcuts::hint(action, Mode::Explorer)
+}
+
+/// A button labelled `label` that runs `action`, with the action's tooltip.
+fn action_button(ui: &mut egui::Ui, cx: &mut Cx<'_>, action: Action, label: &str) {
+    if ui.button(label).on_hover_text(hint(action)).clicked() {
+        cx.send(Command::Act(action));
+    }
 }
 
 /// The shipped presets menu: grouped by chapter, each by its title.

@@ -5,6 +5,7 @@
 use super::Cx;
 use crate::app::command::{Action, Command};
 use crate::app::playback;
+use crate::app::shortcuts::{self, Mode};
 
 /// The transport, when the open scene's result is a history.
 pub fn row(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
@@ -19,21 +20,21 @@ fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, label: &str) {
     let before = t;
     let state = cx.state;
     let lecture = state.session.lecture;
+    let mode = if state.presenter.is_some() { Mode::Presenter } else { Mode::Explorer };
     ui.horizontal_wrapped(|ui| {
-        if ui.button("|◀").on_hover_text("to the start (Home)").clicked() {
+        if ui.button("|◀").on_hover_text(shortcuts::hint(Action::Rewind, mode)).clicked() {
             cx.send(Command::StopPlaying);
             t = 0.0;
         }
-        if ui.button("◀").on_hover_text("step back (,)").clicked() {
+        if ui.button("◀").on_hover_text(shortcuts::hint(Action::StepBack, mode)).clicked() {
             cx.send(Command::StopPlaying);
             t = playback::step(t, -1.0);
         }
         let play = if state.playback.playing { "❚❚ Pause" } else { "▶ Play" };
-        let keys = if state.presenter.is_some() { "play or pause (P)" } else { "play or pause (Space, P)" };
-        if ui.button(play).on_hover_text(keys).clicked() {
+        if ui.button(play).on_hover_text(shortcuts::hint(Action::PlayPause, mode)).clicked() {
             cx.send(Command::Act(Action::PlayPause));
         }
-        if ui.button("▶|").on_hover_text("step forward (.)").clicked() {
+        if ui.button("▶|").on_hover_text(shortcuts::hint(Action::StepForward, mode)).clicked() {
             cx.send(Command::StopPlaying);
             t = playback::step(t, 1.0);
         }
@@ -67,7 +68,7 @@ fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, label: &str) {
             let busy = state.movie_running;
             if ui
                 .add_enabled(!busy, egui::Button::new(if busy { "Writing movie…" } else { "Movie" }))
-                .on_hover_text("write 48 frames of the history (PNG) and an animated PNG into the export folder")
+                .on_hover_text(shortcuts::hint(Action::Movie, mode))
                 .clicked()
             {
                 cx.send(Command::Movie);

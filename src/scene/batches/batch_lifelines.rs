@@ -4,26 +4,23 @@
 use super::common::{BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::AU;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the lifeline scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The run.
+    #[param(flatten)]
     pub run: BatchParams,
-    /// Colour by filling factor instead of Stokes number.
+    /// else by Stokes number
+    #[param(label = "colour by φ", default = false)]
     pub colour_by_filling: bool,
-    /// Draw every n-th batch's path (default 5).
+    /// thins the paths
+    #[param(label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
     pub every: usize,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { run: BatchParams::default(), colour_by_filling: false, every: 5 }
-    }
 }
 
 impl Scene for Params {
@@ -36,24 +33,6 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
     (Ωt_s < 10⁻⁴, 10⁻⁴–10⁻³, …, > 1) or by the filling factor, along the paths drawn (every n-th batch).",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            Control::toggle("colour_by_filling", "colour by φ", &mut self.colour_by_filling)
-                .default(d.colour_by_filling)
-                .doc("else by Stokes number"),
-        );
-        c.push(
-            Control::count("every", "draw every n-th batch", &mut self.every)
-                .default(d.every)
-                .range(1.0, 100.0)
-                .doc("thins the paths"),
-        );
-        c
-    }
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
         let p = self;

@@ -3,46 +3,86 @@
 use crate::physics::batches::{BatchConfig, BatchRun, KERNEL_HALF_WIDTH, Smoothing, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
-use crate::scene::controls::Control;
 use crate::scene::core::{Progress, SceneError};
-use crate::scene::disk::common::DiskParams;
+use crate::scene::disk::common::{DiskParams, DiskProfile};
 use crate::scene::quantities;
+use crate::scene::schema::{Choice, ParamSet};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
+/// How the batches' aggregates grow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum Growth {
+    /// Porous growth and compaction (App. 5.C).
+    #[default]
+    #[choice(key = "porous", label = "porous (App. 5.C)")]
+    Porous,
+    /// Compact particles, φ = 1.
+    #[choice(key = "compact", label = "compact (φ = 1)")]
+    Compact,
+}
+
+/// How the dust surface density (5.7) is read from the batches.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum SurfaceDensityEstimate {
+    /// A triangular kernel of half-width `smoothing` in ln R.
+    #[default]
+    #[choice(key = "kernel", label = "kernel (±smoothing)")]
+    Kernel,
+    /// Each batch's annulus and two neighbours' (at least ±5 %), as earlier versions.
+    #[choice(key = "annuli", label = "neighbour annuli (older presets)")]
+    Annuli,
+}
+
 /// A batch-model run. SI units except where stated.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct BatchParams {
     /// Disk and monomers (default: the truncated power law, 0.01 M☉, R_c = 30 AU, γ = 1, Z₀ = 0.02).
+    #[param(flatten, except("dlnm"), default = DiskParams { profile: DiskProfile::PowerLaw, metallicity: 0.02, ..DiskParams::default() })]
     pub disk: DiskParams,
-    /// "porous" or "compact" growth.
-    pub growth: String,
-    /// Let particles grow (off: the drift-only test of Fig. 5.1).
+    /// porosity treatment
+    #[param(label = "growth")]
+    pub growth: Growth,
+    /// off: drift only (Fig. 5.1)
+    #[param(label = "coagulation", default = true)]
     pub coagulation: bool,
-    /// Fragmentation/bouncing threshold, m s⁻¹ (default 10⁴: none; 5 for compact silicates).
+    /// fragmentation or bouncing threshold: same-size collisions above it stop growth (1e4: none)
+    #[param(quantity = quantities::v_frag, label = "growth barrier v_frag", default = 1e4)]
     pub v_frag: f64,
-    /// Use the monomer's v_frag (4.12) instead of `v_frag`.
+    /// use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above
+    #[param(label = "v_frag from the monomer", default = false)]
     pub v_frag_from_monomer: bool,
-    /// Erosion threshold, m s⁻¹ (default 10⁴: none).
+    /// collisions with monomers above it stop growth (1e4: none)
+    #[param(quantity = quantities::v_eros, default = 1e4)]
     pub v_eros: f64,
+    /// count differential settling at one dust scale height among the relative velocities (ch. 4); off: the midplane velocities of App. 5.B
+    ///
     /// Count differential settling at one dust scale height among the
     /// relative velocities, as ch. 4 does. Default off: App. 5.B's
     /// velocities at the midplane (Brownian motion, turbulence, radial and
     /// azimuthal drift). A preset without this key was written when the batch
     /// scenes always counted settling, and keeps doing so.
     #[serde(default = "settling_in_presets_without_the_key")]
+    #[param(label = "settling in Δv", default = false)]
     pub settling: bool,
-    /// Innermost initial radius, AU (default 3).
+    /// initial radius of the first batch
+    #[param(label = "innermost batch", unit = "AU", range(1.1, 100.0), log, default = 3.0)]
     pub r_in_au: f64,
-    /// Outermost initial radius, AU (default 200).
+    /// initial radius of the last batch
+    #[param(label = "outermost batch", unit = "AU", range(2.0, 1000.0), log, default = 200.0)]
     pub r_out_au: f64,
+    /// number of batches (10²–10³ in the thesis)
+    ///
     /// Number of batches (default 500: the zone edge of Fig. 5.9's disks
     /// within 5 % of its converged value with the kernel estimate). A preset
     /// without this key was written when the default was 250 and keeps it.
     #[serde(default = "batches_in_presets_without_the_key")]
+    #[param(label = "batches", range(10.0, 2000.0), default = 500)]
     pub batches: usize,
+    /// how the dust surface density (5.7) is read from the batches: a kernel of fixed width (converges with the batch count) or the annuli of earlier versions
+    ///
     /// How the dust surface density (5.7) is read from the batches: "kernel"
     /// (a triangular kernel of half-width `smoothing` in ln R) or "annuli"
     /// (each batch's annulus and two neighbours', at least ±5 %: the estimate
@@ -50,39 +90,26 @@ pub struct BatchParams {
     /// step). A preset without this key was written with the annuli and keeps
     /// them.
     #[serde(default = "annuli_in_presets_without_the_key")]
-    pub surface_density: String,
+    #[param(label = "Σ_d estimate")]
+    pub surface_density: SurfaceDensityEstimate,
+    /// half-width in ln R of the kernel over which Σ_d is averaged (at least two batch spacings); wider kernels let pile-ups reach further out
+    ///
     /// Half-width of the Σ_d kernel in ln R (default 0.1, at least two initial
     /// batch spacings): the radial scale over which the batch model sees the
     /// dust, a model choice that sets how far a pile-up of drifting batches
     /// reaches.
+    #[param(label = "Σ_d smoothing", range(0.02, 0.5), log, default = KERNEL_HALF_WIDTH)]
     pub smoothing: f64,
-    /// Duration, yr (default 10⁶).
+    /// time followed
+    #[param(quantity = quantities::duration, default = 1e6)]
     pub duration_yr: f64,
+    /// mass growth per step of a batch (second-order scheme)
+    ///
     /// Growth per step, Δln m (default 0.2; the disk's own step is not used
     /// here). With the kernel estimate of Σ_d the zone edge of 500 batches
     /// moves by under 5 % from 0.2 to 0.1.
+    #[param(label = "step Δln m", range(0.01, 1.0), log, default = 0.2)]
     pub dlnm: f64,
-}
-
-impl Default for BatchParams {
-    fn default() -> Self {
-        BatchParams {
-            disk: DiskParams { profile: "power-law".into(), metallicity: 0.02, ..DiskParams::default() },
-            growth: "porous".into(),
-            coagulation: true,
-            v_frag: 1e4,
-            v_frag_from_monomer: false,
-            v_eros: 1e4,
-            settling: false,
-            r_in_au: 3.0,
-            r_out_au: 200.0,
-            batches: 500,
-            surface_density: "kernel".into(),
-            smoothing: KERNEL_HALF_WIDTH,
-            duration_yr: 1e6,
-            dlnm: 0.2,
-        }
-    }
 }
 
 /// The relative velocities of a batch preset that does not name `settling`:
@@ -93,8 +120,8 @@ fn settling_in_presets_without_the_key() -> bool {
 
 /// The surface density of a batch preset that does not name
 /// `surface_density`: the annuli of the versions that wrote it.
-fn annuli_in_presets_without_the_key() -> String {
-    "annuli".into()
+fn annuli_in_presets_without_the_key() -> SurfaceDensityEstimate {
+    SurfaceDensityEstimate::Annuli
 }
 
 /// The batch count of a preset that does not name `batches`: the default of
@@ -108,97 +135,6 @@ fn batches_in_presets_without_the_key() -> usize {
 const PREVIEW_BATCHES: usize = 120;
 
 impl BatchParams {
-    /// The documented parameters.
-    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
-        let mut c = self.disk.controls(&d.disk);
-        // The batches' own step replaces the disk scenes' one.
-        c.retain(|x| x.key != "dlnm");
-        c.push(
-            Control::choice(
-                "growth",
-                "growth",
-                &mut self.growth,
-                vec![("porous", "porous (App. 5.C)"), ("compact", "compact (φ = 1)")],
-            )
-            .default(d.growth.clone())
-            .doc("porosity treatment"),
-        );
-        c.push(
-            Control::toggle("coagulation", "coagulation", &mut self.coagulation)
-                .default(d.coagulation)
-                .doc("off: drift only (Fig. 5.1)"),
-        );
-        c.push(
-            quantities::v_frag(&mut self.v_frag)
-                .default(d.v_frag)
-                .labelled("growth barrier v_frag")
-                .doc("fragmentation or bouncing threshold: same-size collisions above it stop growth (1e4: none)"),
-        );
-        c.push(
-            Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)
-                .default(d.v_frag_from_monomer)
-                .doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"),
-        );
-        c.push(
-            quantities::v_eros(&mut self.v_eros)
-                .default(d.v_eros)
-                .doc("collisions with monomers above it stop growth (1e4: none)"),
-        );
-        c.push(
-            Control::toggle("settling", "settling in Δv", &mut self.settling)
-                .default(d.settling)
-                .doc("count differential settling at one dust scale height among the relative velocities (ch. 4); off: the midplane velocities of App. 5.B"),
-        );
-        c.push(
-            Control::number("r_in_au", "innermost batch", &mut self.r_in_au)
-                .default(d.r_in_au)
-                .unit("AU")
-                .range(1.1, 100.0)
-                .log()
-                .doc("initial radius of the first batch"),
-        );
-        c.push(
-            Control::number("r_out_au", "outermost batch", &mut self.r_out_au)
-                .default(d.r_out_au)
-                .unit("AU")
-                .range(2.0, 1000.0)
-                .log()
-                .doc("initial radius of the last batch"),
-        );
-        c.push(
-            Control::count("batches", "batches", &mut self.batches)
-                .default(d.batches)
-                .range(10.0, 2000.0)
-                .doc("number of batches (10²–10³ in the thesis)"),
-        );
-        c.push(
-            Control::choice(
-                "surface_density",
-                "Σ_d estimate",
-                &mut self.surface_density,
-                vec![("kernel", "kernel (±smoothing)"), ("annuli", "neighbour annuli (older presets)")],
-            )
-            .default(d.surface_density.clone())
-            .doc("how the dust surface density (5.7) is read from the batches: a kernel of fixed width (converges with the batch count) or the annuli of earlier versions"),
-        );
-        c.push(
-            Control::number("smoothing", "Σ_d smoothing", &mut self.smoothing)
-                .default(d.smoothing)
-                .range(0.02, 0.5)
-                .log()
-                .doc("half-width in ln R of the kernel over which Σ_d is averaged (at least two batch spacings); wider kernels let pile-ups reach further out"),
-        );
-        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
-        c.push(
-            Control::number("dlnm", "step Δln m", &mut self.dlnm)
-                .default(d.dlnm)
-                .range(0.01, 1.0)
-                .log()
-                .doc("mass growth per step of a batch (second-order scheme)"),
-        );
-        c
-    }
-
     /// The run of a preview: at most 40 batches.
     pub fn coarse(&self) -> BatchParams {
         self.coarse_over(1)
@@ -213,7 +149,10 @@ impl BatchParams {
 
     /// The run configuration.
     pub fn config(&self) -> BatchConfig {
-        let porosity = if self.growth == "compact" { Porosity::Compact } else { Porosity::Full };
+        let porosity = match self.growth {
+            Growth::Compact => Porosity::Compact,
+            Growth::Porous => Porosity::Full,
+        };
         let mut model = GrowthModel::chapter4(porosity);
         model.disk = self.disk.disk();
         model.monomer = self.disk.monomer();
@@ -231,7 +170,7 @@ impl BatchParams {
             batches: self.batches,
             t_end: self.duration_yr * YEAR,
             coagulation: self.coagulation,
-            smoothing: if self.surface_density == "annuli" {
+            smoothing: if self.surface_density == SurfaceDensityEstimate::Annuli {
                 Smoothing::ANNULI
             } else {
                 Smoothing::Kernel { half_width: self.smoothing }
@@ -272,48 +211,6 @@ impl BatchParams {
 /// `n` log-spaced values from `lo` to `hi` (just `lo` when n ≤ 1).
 pub fn log_grid(lo: f64, hi: f64, n: usize) -> Vec<f64> {
     if n <= 1 { vec![lo] } else { crate::scene::core::logspace(lo, hi.max(lo * 1.000001), n) }
-}
-
-/// Controls of a sweep over disk mass (M_sun) and metallicity, each given as
-/// (smallest, largest, count).
-pub fn sweep_controls<'a>(
-    mass: (&'a mut f64, &'a mut f64, &'a mut usize),
-    metallicity: (&'a mut f64, &'a mut f64, &'a mut usize),
-    defaults: [(f64, f64, usize); 2],
-) -> Vec<Control<'a>> {
-    let [dm, dz] = defaults;
-    let msun = ("M_sun", 1.0);
-    let unit = ("", 1.0);
-    vec![
-        Control::number("mass_min", "smallest disk mass", mass.0)
-            .unit("M_sun")
-            .shown(msun.0, msun.1)
-            .range(1e-3, 0.5)
-            .log()
-            .default(dm.0)
-            .doc("first disk mass"),
-        Control::number("mass_max", "largest disk mass", mass.1)
-            .unit("M_sun")
-            .shown(msun.0, msun.1)
-            .range(1e-3, 0.5)
-            .log()
-            .default(dm.1)
-            .doc("last disk mass"),
-        Control::count("n_mass", "disk masses", mass.2).range(1.0, 12.0).default(dm.2).doc("log-spaced"),
-        Control::number("z_min", "smallest Z₀", metallicity.0)
-            .shown(unit.0, unit.1)
-            .range(1e-3, 0.1)
-            .log()
-            .default(dz.0)
-            .doc("first metallicity"),
-        Control::number("z_max", "largest Z₀", metallicity.1)
-            .shown(unit.0, unit.1)
-            .range(1e-3, 0.1)
-            .log()
-            .default(dz.1)
-            .doc("last metallicity"),
-        Control::count("n_z", "metallicities", metallicity.2).range(1.0, 6.0).default(dz.2).doc("log-spaced"),
-    ]
 }
 
 /// The last batch run, shared by the batch scenes: a change of a display

@@ -6,28 +6,25 @@ use super::common::{BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
-use crate::scene::controls::Control;
 use crate::scene::core::{Censored, Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the disk-map scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The run.
+    #[param(flatten)]
     pub run: BatchParams,
-    /// Draw every n-th batch's path (default 5).
+    /// thins the paths
+    #[param(label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
     pub every: usize,
-    /// Time cursor, as a fraction of the run in log time (styling only).
+    /// time marked on the batch paths, as a fraction of the run in log time
+    #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
     pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { run: BatchParams::default(), every: 5, cursor: 0.0 }
-    }
 }
 
 impl Scene for Params {
@@ -47,25 +44,6 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
     const CENSORED: &'static [Censored] =
         &[Censored { key: "outermost_planetesimals", above: None, undefined: Some("no planetesimals form") }];
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            Control::count("every", "draw every n-th batch", &mut self.every)
-                .default(d.every)
-                .range(1.0, 100.0)
-                .doc("thins the paths"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time marked on the batch paths, as a fraction of the run in log time")
-                .style_only(),
-        );
-        c
-    }
-
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
         let p = self;
         let run = out.extra.model::<crate::physics::batches::BatchRun>()?;
@@ -75,6 +53,10 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
 
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse(), ..self.clone() })
+    }
+
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {

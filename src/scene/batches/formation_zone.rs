@@ -1,57 +1,71 @@
 //! Scene "Formation zone" (thesis Figs. 5.9, 5.10): the outer edge of the
 //! region where planetesimals form directly, against disk mass and metallicity.
 
-use super::common::{BatchParams, log_grid, sweep_controls};
+use super::common::{BatchParams, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
-use crate::scene::controls::Control;
 use crate::scene::core::{Censored, Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::disk::common::DiskProfile;
+use crate::scene::schema::{Choice, ParamSet};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
+/// What the dashed lines of the formation zone change.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum Contrast {
+    /// A second characteristic radius, `r_c_2` (Fig. 5.9).
+    #[default]
+    #[choice(key = "r_c", label = "second R_c")]
+    RC,
+    /// The temperature halved (Fig. 5.10).
+    #[choice(key = "cold", label = "cold disk (T/2)")]
+    Cold,
+    /// Surface density slope γ = 3/2 (Fig. 5.10).
+    #[choice(key = "slope", label = "slope 3/2")]
+    Slope,
+    /// α = 10⁻⁵.
+    #[choice(key = "alpha", label = "α = 10⁻⁵")]
+    Alpha,
+}
+
 /// Parameters of the formation-zone scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The base run (disk mass, metallicity and R_c are swept).
+    #[param(flatten, except("profile", "disk_mass", "metallicity", "r_c"))]
     pub run: BatchParams,
-    /// Smallest disk mass, M☉.
+    /// first disk mass
+    #[param(label = "smallest disk mass", unit = "M_sun", range(1e-3, 0.5), log, default = 0.01)]
     pub mass_min: f64,
-    /// Largest disk mass, M☉.
+    /// last disk mass
+    #[param(label = "largest disk mass", unit = "M_sun", range(1e-3, 0.5), log, default = 0.2)]
     pub mass_max: f64,
-    /// Disk masses.
+    /// log-spaced
+    #[param(label = "disk masses", range(1, 12), default = 5)]
     pub n_mass: usize,
-    /// Metallicities to compare: smallest.
+    /// first metallicity
+    #[param(label = "smallest Z₀", range(1e-3, 0.1), log, default = 0.01)]
     pub z_min: f64,
-    /// Largest metallicity.
+    /// last metallicity
+    #[param(label = "largest Z₀", range(1e-3, 0.1), log, default = 0.05)]
     pub z_max: f64,
-    /// Metallicities.
+    /// log-spaced
+    #[param(label = "metallicities", range(1, 6), default = 3)]
     pub n_z: usize,
-    /// First characteristic radius, AU.
+    /// first characteristic radius
+    #[param(label = "R_c (solid)", unit = "AU", range(5.0, 300.0), log, default = 30.0)]
     pub r_c_1: f64,
-    /// Second characteristic radius, AU.
+    /// second characteristic radius
+    #[param(label = "R_c (dashed)", unit = "AU", range(5.0, 300.0), log, default = 100.0)]
     pub r_c_2: f64,
+    /// what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)
+    ///
     /// What the dashed lines change: "r_c" (R_c = r_c_2), "cold" (temperature
     /// halved), "slope" (γ = 3/2) or "alpha" (α = 10⁻⁵); the last three keep
     /// R_c = r_c_1 (Fig. 5.10).
-    pub contrast: String,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            run: BatchParams::default(),
-            mass_min: 0.01,
-            mass_max: 0.2,
-            n_mass: 5,
-            z_min: 0.01,
-            z_max: 0.05,
-            n_z: 3,
-            r_c_1: 30.0,
-            r_c_2: 100.0,
-            contrast: "r_c".into(),
-        }
-    }
+    #[param(label = "dashed lines")]
+    pub contrast: Contrast,
 }
 
 impl Scene for Params {
@@ -71,46 +85,6 @@ disks run in parallel, each also with half the batches: the change estimates the
         Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") },
         Censored { key: "widest_zone_error", above: None, undefined: Some("no disk of the grid forms planetesimals") },
     ];
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        // The sweep sets these for every disk.
-        c.retain(|c| !["profile", "disk_mass", "metallicity", "r_c"].contains(&c.key));
-        c.extend(sweep_controls(
-            (&mut self.mass_min, &mut self.mass_max, &mut self.n_mass),
-            (&mut self.z_min, &mut self.z_max, &mut self.n_z),
-            [(d.mass_min, d.mass_max, d.n_mass), (d.z_min, d.z_max, d.n_z)],
-        ));
-        c.push(
-            Control::number("r_c_1", "R_c (solid)", &mut self.r_c_1)
-                .default(d.r_c_1)
-                .unit("AU")
-                .range(5.0, 300.0)
-                .log()
-                .doc("first characteristic radius"),
-        );
-        c.push(
-            Control::number("r_c_2", "R_c (dashed)", &mut self.r_c_2)
-                .default(d.r_c_2)
-                .unit("AU")
-                .range(5.0, 300.0)
-                .log()
-                .doc("second characteristic radius"),
-        );
-        c.push(
-            Control::choice(
-                "contrast",
-                "dashed lines",
-                &mut self.contrast,
-                vec![("r_c", "second R_c"), ("cold", "cold disk (T/2)"), ("slope", "slope 3/2"), ("alpha", "α = 10⁻⁵")],
-            )
-            .default(d.contrast.clone())
-            .doc("what the dashed lines change (Fig. 5.9: R_c; Fig. 5.10: cold, slope; or alpha)"),
-        );
-        c
-    }
 
     fn coarse(&self) -> Option<Self> {
         let p = self;
@@ -138,16 +112,16 @@ disks run in parallel, each also with half the batches: the change estimates the
             .par_iter()
             .map(|&(c, zi, mi, batches)| {
                 let mut b = BatchParams { batches, ..p.run.clone() };
-                b.disk.profile = "power-law".into();
+                b.disk.profile = DiskProfile::PowerLaw;
                 b.disk.disk_mass = masses[mi];
                 b.disk.metallicity = zs[zi];
                 b.disk.r_c = p.r_c_1;
                 if c == 1 {
-                    match p.contrast.as_str() {
-                        "cold" => b.disk.cold = !b.disk.cold,
-                        "slope" => b.disk.slope = 1.5,
-                        "alpha" => b.disk.alpha = 1e-5,
-                        _ => b.disk.r_c = p.r_c_2,
+                    match p.contrast {
+                        Contrast::Cold => b.disk.cold = !b.disk.cold,
+                        Contrast::Slope => b.disk.slope = 1.5,
+                        Contrast::Alpha => b.disk.alpha = 1e-5,
+                        Contrast::RC => b.disk.r_c = p.r_c_2,
                     }
                 }
                 b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
@@ -170,10 +144,10 @@ disks run in parallel, each also with half the batches: the change estimates the
                     .enumerate()
                     .map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]])
                     .collect();
-                let label = match (c, p.contrast.as_str()) {
-                    (1, "cold") => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
-                    (1, "slope") => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
-                    (1, "alpha") => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
+                let label = match (c, p.contrast) {
+                    (1, Contrast::Cold) => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
+                    (1, Contrast::Slope) => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
+                    (1, Contrast::Alpha) => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
                     (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
                     _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
                 };

@@ -5,29 +5,27 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::batches::{alpha_midplane, max_loading};
 use crate::physics::constants::AU;
 use crate::physics::disk::{GasDisk, Profile};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the midplane-loading scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Smallest Z*, in units of solar (0.01).
+    /// first metallicity of settled particles
+    #[param(label = "smallest Z* / solar", range(0.1, 20.0), log, default = 0.5)]
     pub z_min_solar: f64,
-    /// Largest Z*, in units of solar.
+    /// last metallicity
+    #[param(label = "largest Z* / solar", range(0.1, 20.0), log, default = 5.0)]
     pub z_max_solar: f64,
-    /// Lines per disk.
+    /// log-spaced
+    #[param(label = "metallicities", range(1.0, 8.0), default = 4)]
     pub n_z: usize,
-    /// Disk mass of the three disks, M☉.
+    /// mass of the three disks
+    #[param(quantity = quantities::disk_mass, default = 0.01)]
     pub disk_mass: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { z_min_solar: 0.5, z_max_solar: 5.0, n_z: 4, disk_mass: 0.01 }
-    }
 }
 
 impl Scene for Params {
@@ -43,25 +41,6 @@ law (γ = 3/2, R_c = 30 AU), a shallower extended one (γ = 1, R_c = 100 AU) and
 for Z* = 0.5–5 times solar (0.01); streaming instability needs a loading near 1 (dotted).",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::number("z_min_solar", "smallest Z* / solar", &mut self.z_min_solar)
-                .default(d.z_min_solar)
-                .range(0.1, 20.0)
-                .log()
-                .doc("first metallicity of settled particles"),
-            Control::number("z_max_solar", "largest Z* / solar", &mut self.z_max_solar)
-                .default(d.z_max_solar)
-                .range(0.1, 20.0)
-                .log()
-                .doc("last metallicity"),
-            Control::count("n_z", "metallicities", &mut self.n_z).default(d.n_z).range(1.0, 8.0).doc("log-spaced"),
-            quantities::disk_mass(&mut self.disk_mass).default(d.disk_mass).doc("mass of the three disks"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

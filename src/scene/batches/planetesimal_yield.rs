@@ -1,46 +1,40 @@
 //! Scene "Planetesimal yield" (thesis Figs. 5.7, 5.8): planetesimal mass and
 //! converted fraction against time for a grid of disks.
 
-use super::common::{BatchParams, log_grid, sweep_controls};
+use super::common::{BatchParams, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::YEAR;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::disk::common::DiskProfile;
+use crate::scene::schema::ParamSet;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the yield scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The base run (its disk mass and metallicity are swept).
+    #[param(flatten, except("profile", "disk_mass", "metallicity"), default = BatchParams { batches: 150, ..BatchParams::default() })]
     pub run: BatchParams,
-    /// Smallest disk mass, M☉.
+    /// first disk mass
+    #[param(label = "smallest disk mass", unit = "M_sun", range(1e-3, 0.5), log, default = 0.01)]
     pub mass_min: f64,
-    /// Largest disk mass, M☉.
+    /// last disk mass
+    #[param(label = "largest disk mass", unit = "M_sun", range(1e-3, 0.5), log, default = 0.1)]
     pub mass_max: f64,
-    /// Disk masses (log-spaced).
+    /// log-spaced
+    #[param(label = "disk masses", range(1, 12), default = 3)]
     pub n_mass: usize,
-    /// Smallest metallicity Z₀.
+    /// first metallicity
+    #[param(label = "smallest Z₀", range(1e-3, 0.1), log, default = 0.01)]
     pub z_min: f64,
-    /// Largest metallicity.
+    /// last metallicity
+    #[param(label = "largest Z₀", range(1e-3, 0.1), log, default = 0.02)]
     pub z_max: f64,
-    /// Metallicities (log-spaced).
+    /// log-spaced
+    #[param(label = "metallicities", range(1, 6), default = 2)]
     pub n_z: usize,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            run: BatchParams { batches: 150, ..BatchParams::default() },
-            mass_min: 0.01,
-            mass_max: 0.1,
-            n_mass: 3,
-            z_min: 0.01,
-            z_max: 0.02,
-            n_z: 2,
-        }
-    }
 }
 
 impl Scene for Params {
@@ -53,20 +47,6 @@ disks of several masses and metallicities (porous perfect sticking unless set ot
 are independent and go in parallel.",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        // The sweep sets these for every disk.
-        c.retain(|c| !["profile", "disk_mass", "metallicity"].contains(&c.key));
-        c.extend(sweep_controls(
-            (&mut self.mass_min, &mut self.mass_max, &mut self.n_mass),
-            (&mut self.z_min, &mut self.z_max, &mut self.n_z),
-            [(d.mass_min, d.mass_max, d.n_mass), (d.z_min, d.z_max, d.n_z)],
-        ));
-        c
-    }
 
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse_over(self.n_mass * self.n_z), ..self.clone() })
@@ -88,7 +68,7 @@ are independent and go in parallel.",
             .par_iter()
             .map(|&(m, z)| {
                 let mut b = p.run.clone();
-                b.disk.profile = "power-law".into();
+                b.disk.profile = DiskProfile::PowerLaw;
                 b.disk.disk_mass = m;
                 b.disk.metallicity = z;
                 b.run_in_sweep(progress, &done, total).map(|r| (m, z, r))

@@ -5,20 +5,24 @@ use super::common::{BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, surface_density, surface_density_in};
 use crate::physics::constants::{AU, YEAR};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the surface-density scene.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The run.
+    #[param(flatten)]
     pub run: BatchParams,
+    /// the dust snapshot to highlight, as a fraction of their span in log time
+    ///
     /// Time cursor over the dust snapshots, as a fraction of their span in
     /// log time (styling only).
+    #[param(quantity = quantities::time_cursor, style_only)]
     pub cursor: f64,
 }
 
@@ -38,21 +42,12 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         heavy: true,
     };
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("the dust snapshot to highlight, as a fraction of their span in log time")
-                .style_only(),
-        );
-        c
-    }
-
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse(), ..self.clone() })
+    }
+
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {

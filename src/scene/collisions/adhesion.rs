@@ -6,46 +6,39 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::contact::Pair;
 use crate::physics::material::combined_surface_energy;
 use crate::physics::material::{Material, combined_modulus};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the adhesion scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Monomer material.
+    /// monomer material (Table 2.2)
+    #[param(label = "material", default = Material::water_ice())]
     pub material: Material,
-    /// Monomer radius r₀, m (default 0.1 µm; 10 nm – 1 cm).
+    /// radius of one monomer (default 0.1 µm)
+    #[param(label = "monomer radius r₀", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-7)]
     pub radius: f64,
-    /// Combined surface energy γ, J/m² (default 0.74 for ice).
+    /// combined surface energy (2γ_L; default 0.74)
+    #[param(quantity = quantities::surface_energy, default = 0.74)]
     pub surface_energy: f64,
-    /// Range of surface forces z₀, m (default 0.3 nm), for the Tabor parameter.
+    /// range of surface forces (default 0.3 nm)
+    #[param(quantity = quantities::force_range, default = 3e-10)]
     pub z0: f64,
-    /// Rolling displacement ξ, m (default 0.1 nm, Sect. 1.3.3).
+    /// critical rolling displacement (default 0.1 nm)
+    #[param(label = "rolling displacement ξ", unit = "m", shown("nm", 1e9), range(1e-11, 1e-8), log, default = 1e-10)]
     pub xi: f64,
-    /// Monomers per aggregate N (default 100).
+    /// monomers in each of two equal aggregates
+    #[param(label = "monomers per aggregate N", range(1.0, 1e9), log, default = 100.0)]
     pub monomers: f64,
-    /// Contacts in the aggregate pair n_c (default 100).
+    /// contacts in the colliding pair
+    #[param(label = "contacts n_c", range(1.0, 1e9), log, default = 100.0)]
     pub contacts: f64,
-    /// Aggregate collision velocity, m/s (default 1).
+    /// relative velocity of the aggregates
+    #[param(label = "aggregate velocity v", unit = "m s^-1", shown("m/s", 1.0), range(1e-4, 1e3), log, default = 1.0)]
     pub velocity: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            material: Material::water_ice(),
-            radius: 1e-7,
-            surface_energy: 0.74,
-            z0: 3e-10,
-            xi: 1e-10,
-            monomers: 100.0,
-            contacts: 100.0,
-            velocity: 1.0,
-        }
-    }
 }
 
 impl Params {
@@ -91,51 +84,6 @@ n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energ
     5E_roll, n_cE_roll, n_cE_break and 10n_cE_break.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::material("material", "material", &mut self.material)
-                .default(d.material.name.clone())
-                .doc("monomer material (Table 2.2)"),
-            Control::number("radius", "monomer radius r₀", &mut self.radius)
-                .default(d.radius)
-                .unit("m")
-                .shown("µm", 1e6)
-                .range(1e-8, 1e-2)
-                .log()
-                .doc("radius of one monomer (default 0.1 µm)"),
-            quantities::surface_energy(&mut self.surface_energy)
-                .default(d.surface_energy)
-                .doc("combined surface energy (2γ_L; default 0.74)"),
-            quantities::force_range(&mut self.z0).default(d.z0).doc("range of surface forces (default 0.3 nm)"),
-            Control::number("xi", "rolling displacement ξ", &mut self.xi)
-                .default(d.xi)
-                .unit("m")
-                .shown("nm", 1e9)
-                .range(1e-11, 1e-8)
-                .log()
-                .doc("critical rolling displacement (default 0.1 nm)"),
-            Control::number("monomers", "monomers per aggregate N", &mut self.monomers)
-                .default(d.monomers)
-                .range(1.0, 1e9)
-                .log()
-                .doc("monomers in each of two equal aggregates"),
-            Control::number("contacts", "contacts n_c", &mut self.contacts)
-                .default(d.contacts)
-                .range(1.0, 1e9)
-                .log()
-                .doc("contacts in the colliding pair"),
-            Control::number("velocity", "aggregate velocity v", &mut self.velocity)
-                .default(d.velocity)
-                .unit("m s^-1")
-                .shown("m/s", 1.0)
-                .range(1e-4, 1e3)
-                .log()
-                .doc("relative velocity of the aggregates"),
-        ]
-    }
 
     fn material_changed(&mut self) {
         self.surface_energy = combined_surface_energy(&self.material, &self.material);

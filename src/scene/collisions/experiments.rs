@@ -6,9 +6,9 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::collision::{Options, Outcome, Setup, collide, sticking_velocity};
 use crate::physics::experiments::{Experiment, experiment, experiments};
 use crate::physics::plasticity::{e_combined, e_plastic};
-use crate::scene::controls::Control;
 use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -18,23 +18,21 @@ fn options() -> Vec<(&'static str, &'static str)> {
 }
 
 /// Parameters of the experiments scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Key of the experiment shown large (default "wall-mica").
+    /// experiment of Table 2.1
+    #[param(label = "experiment", choices = options(), default = "wall-mica".into())]
     pub experiment: String,
-    /// Also show all 17 experiments as small plots (Fig. 2.11).
+    /// also show every experiment as a small plot
+    #[param(label = "all 17 (Fig. 2.11)", default = true)]
     pub all: bool,
-    /// Velocities per curve (default 40).
+    /// points per curve
+    #[param(label = "velocities", range(4.0, 400.0), default = 40)]
     pub n_velocities: usize,
-    /// Relative tolerance of the integrator (default 1e-5).
+    /// relative tolerance of the integrator (default 1e-5)
+    #[param(quantity = quantities::solver_tolerance, default = 1e-5)]
     pub rtol: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { experiment: "wall-mica".into(), all: true, n_velocities: 40, rtol: 1e-5 }
-    }
 }
 
 /// The curves of one experiment: (v, e_A, e_P, e, e_JKR combined with e_P).
@@ -92,26 +90,6 @@ range, so plasticity is off; an upper limit on T_vis is drawn at the limit.",
         },
         Censored { key: "gamma_L", above: None, undefined: Some("no literature surface energy for these materials") },
     ];
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::choice("experiment", "experiment", &mut self.experiment, options())
-                .default(d.experiment.clone())
-                .doc("experiment of Table 2.1"),
-            Control::toggle("all", "all 17 (Fig. 2.11)", &mut self.all)
-                .default(d.all)
-                .doc("also show every experiment as a small plot"),
-            Control::count("n_velocities", "velocities", &mut self.n_velocities)
-                .default(d.n_velocities)
-                .range(4.0, 400.0)
-                .doc("points per curve"),
-            quantities::solver_tolerance(&mut self.rtol)
-                .default(d.rtol)
-                .doc("relative tolerance of the integrator (default 1e-5)"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -8,59 +8,83 @@ use crate::physics::collision::{Options, Setup};
 use crate::physics::experiments::experiment;
 use crate::physics::fit::{Fit as FitResult, FitError, Measurement, Search, fit, model_restitution};
 use crate::physics::material::Material;
-use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::controls::{LogRange, ParamError};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use rand::{Rng, SeedableRng};
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the fit scene. SI units.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
+#[param(manual_default)]
 pub struct Params {
     /// Measurements; empty means the synthetic example.
+    #[param(skip)]
     pub data: Vec<Measurement>,
-    /// Projectile material.
+    /// projectile material
+    #[param(label = "material 1")]
     pub projectile: Material,
-    /// Target material.
+    /// target material
+    #[param(label = "material 2")]
     pub target: Material,
-    /// Sphere on a flat target.
+    /// projectile hits a flat target
+    #[param(label = "sphere on wall")]
     pub wall: bool,
-    /// Projectile radius, m.
+    /// projectile radius
+    #[param(label = "radius 1", unit = "m", shown("µm", 1e6), range(2e-8, 2e-2), log)]
     pub radius_1: f64,
-    /// Target sphere radius, m (unused for a wall).
+    /// target radius (spheres)
+    #[param(label = "radius 2", unit = "m", shown("µm", 1e6), range(2e-8, 2e-2), log)]
     pub radius_2: f64,
-    /// γ search: smallest, largest (J m⁻²), points, held fixed at `gamma`.
+    /// smallest γ of the grid
+    #[param(label = "γ from", unit = "J m^-2", shown("J/m²", 1.0), range(1e-3, 100.0), log)]
     pub gamma_min: f64,
-    /// Largest γ, J m⁻².
+    /// largest γ of the grid
+    #[param(label = "γ to", unit = "J m^-2", shown("J/m²", 1.0), range(1e-3, 100.0), log)]
     pub gamma_max: f64,
-    /// Grid points in γ.
+    /// grid points in γ
+    #[param(label = "γ points", range(2.0, 100.0))]
     pub n_gamma: usize,
-    /// Hold γ fixed.
+    /// do not fit γ
+    #[param(label = "hold γ fixed")]
     pub fix_gamma: bool,
-    /// Fixed γ, J m⁻².
+    /// γ when held fixed
+    #[param(label = "fixed γ", unit = "J m^-2", shown("J/m²", 1.0), range(1e-3, 100.0), log)]
     pub gamma: f64,
-    /// Smallest T_vis, s.
+    /// smallest T_vis of the grid
+    #[param(label = "T_vis from", unit = "s", shown("s", 1.0), range(1e-15, 1e-6), log)]
     pub t_vis_min: f64,
-    /// Largest T_vis, s.
+    /// largest T_vis of the grid
+    #[param(label = "T_vis to", unit = "s", shown("s", 1.0), range(1e-15, 1e-6), log)]
     pub t_vis_max: f64,
-    /// Grid points in T_vis.
+    /// grid points in T_vis
+    #[param(label = "T_vis points", range(2.0, 100.0))]
     pub n_t_vis: usize,
-    /// Hold T_vis fixed.
+    /// do not fit T_vis
+    #[param(label = "hold T_vis fixed")]
     pub fix_t_vis: bool,
-    /// Fixed T_vis, s.
+    /// T_vis when held fixed
+    #[param(label = "fixed T_vis", unit = "s", shown("s", 1.0), range(1e-15, 1e-6), log)]
     pub t_vis: f64,
-    /// Smallest Y, Pa.
+    /// smallest Y of the grid
+    #[param(label = "Y from", unit = "Pa", shown("MPa", 1e-6), range(1e5, 1e12), log)]
     pub y_min: f64,
-    /// Largest Y, Pa.
+    /// largest Y of the grid
+    #[param(label = "Y to", unit = "Pa", shown("MPa", 1e-6), range(1e5, 1e12), log)]
     pub y_max: f64,
-    /// Grid points in Y.
+    /// grid points in Y
+    #[param(label = "Y points", range(2.0, 100.0))]
     pub n_y: usize,
-    /// Hold Y fixed.
+    /// do not fit Y
+    #[param(label = "hold Y fixed")]
     pub fix_y: bool,
-    /// Fixed Y, Pa.
+    /// Y when held fixed
+    #[param(label = "fixed Y", unit = "Pa", shown("MPa", 1e-6), range(1e5, 1e12), log)]
     pub yield_strength: f64,
-    /// Relative tolerance of the integrator (default 1e-4: fits need many collisions).
+    /// integrator tolerance (default 1e-4)
+    #[param(quantity = quantities::solver_tolerance)]
     pub rtol: f64,
 }
 
@@ -223,118 +247,6 @@ with Import data… or by dropping the file on the window; without data the scen
 example drawn from the Wall et al. mica fit with noise 0.01.",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let um = ("µm", 1e6);
-        let j = ("J/m²", 1.0);
-        let s = ("s", 1.0);
-        let mpa = ("MPa", 1e-6);
-        vec![
-            Control::material("projectile", "material 1", &mut self.projectile)
-                .default(d.projectile.name.clone())
-                .doc("projectile material"),
-            Control::material("target", "material 2", &mut self.target)
-                .default(d.target.name.clone())
-                .doc("target material"),
-            Control::toggle("wall", "sphere on wall", &mut self.wall)
-                .default(d.wall)
-                .doc("projectile hits a flat target"),
-            Control::number("radius_1", "radius 1", &mut self.radius_1)
-                .default(d.radius_1)
-                .unit("m")
-                .shown(um.0, um.1)
-                .range(2e-8, 2e-2)
-                .log()
-                .doc("projectile radius"),
-            Control::number("radius_2", "radius 2", &mut self.radius_2)
-                .default(d.radius_2)
-                .unit("m")
-                .shown(um.0, um.1)
-                .range(2e-8, 2e-2)
-                .log()
-                .doc("target radius (spheres)"),
-            Control::number("gamma_min", "γ from", &mut self.gamma_min)
-                .default(d.gamma_min)
-                .unit("J m^-2")
-                .shown(j.0, j.1)
-                .range(1e-3, 100.0)
-                .log()
-                .doc("smallest γ of the grid"),
-            Control::number("gamma_max", "γ to", &mut self.gamma_max)
-                .default(d.gamma_max)
-                .unit("J m^-2")
-                .shown(j.0, j.1)
-                .range(1e-3, 100.0)
-                .log()
-                .doc("largest γ of the grid"),
-            Control::count("n_gamma", "γ points", &mut self.n_gamma)
-                .default(d.n_gamma)
-                .range(2.0, 100.0)
-                .doc("grid points in γ"),
-            Control::toggle("fix_gamma", "hold γ fixed", &mut self.fix_gamma).default(d.fix_gamma).doc("do not fit γ"),
-            Control::number("gamma", "fixed γ", &mut self.gamma)
-                .default(d.gamma)
-                .unit("J m^-2")
-                .shown(j.0, j.1)
-                .range(1e-3, 100.0)
-                .log()
-                .doc("γ when held fixed"),
-            Control::number("t_vis_min", "T_vis from", &mut self.t_vis_min)
-                .default(d.t_vis_min)
-                .unit("s")
-                .shown(s.0, s.1)
-                .range(1e-15, 1e-6)
-                .log()
-                .doc("smallest T_vis of the grid"),
-            Control::number("t_vis_max", "T_vis to", &mut self.t_vis_max)
-                .default(d.t_vis_max)
-                .unit("s")
-                .shown(s.0, s.1)
-                .range(1e-15, 1e-6)
-                .log()
-                .doc("largest T_vis of the grid"),
-            Control::count("n_t_vis", "T_vis points", &mut self.n_t_vis)
-                .default(d.n_t_vis)
-                .range(2.0, 100.0)
-                .doc("grid points in T_vis"),
-            Control::toggle("fix_t_vis", "hold T_vis fixed", &mut self.fix_t_vis)
-                .default(d.fix_t_vis)
-                .doc("do not fit T_vis"),
-            Control::number("t_vis", "fixed T_vis", &mut self.t_vis)
-                .default(d.t_vis)
-                .unit("s")
-                .shown(s.0, s.1)
-                .range(1e-15, 1e-6)
-                .log()
-                .doc("T_vis when held fixed"),
-            Control::number("y_min", "Y from", &mut self.y_min)
-                .default(d.y_min)
-                .unit("Pa")
-                .shown(mpa.0, mpa.1)
-                .range(1e5, 1e12)
-                .log()
-                .doc("smallest Y of the grid"),
-            Control::number("y_max", "Y to", &mut self.y_max)
-                .default(d.y_max)
-                .unit("Pa")
-                .shown(mpa.0, mpa.1)
-                .range(1e5, 1e12)
-                .log()
-                .doc("largest Y of the grid"),
-            Control::count("n_y", "Y points", &mut self.n_y).default(d.n_y).range(2.0, 100.0).doc("grid points in Y"),
-            Control::toggle("fix_y", "hold Y fixed", &mut self.fix_y).default(d.fix_y).doc("do not fit Y"),
-            Control::number("yield_strength", "fixed Y", &mut self.yield_strength)
-                .default(d.yield_strength)
-                .unit("Pa")
-                .shown(mpa.0, mpa.1)
-                .range(1e5, 1e12)
-                .log()
-                .doc("Y when held fixed"),
-            quantities::solver_tolerance(&mut self.rtol).default(d.rtol).doc("integrator tolerance (default 1e-4)"),
-        ]
-    }
 
     fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
         Some(&mut self.data)

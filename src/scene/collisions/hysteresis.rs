@@ -7,32 +7,31 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::collision::{Options, Outcome, collide};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
-use crate::scene::controls::Control;
 use crate::scene::core::{
     Censored, Context, Cursor, Extra, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory,
 };
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline::{self, Mark};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
 /// Parameters of the hysteresis scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The collision.
+    #[param(flatten)]
     pub collision: CollisionParams,
+    /// Hertz times to follow a sticking collision after sticking is certain
+    ///
     /// For sticking collisions: how long to follow the spiral into the JKR
     /// equilibrium after sticking is certain, in Hertz times (default 6; 0–50).
+    #[param(label = "follow sticking", unit = "t_H", range(0.0, 50.0), default = 6.0)]
     pub follow: f64,
-    /// Time cursor for the sketch, as a fraction of the run (styling only).
+    /// time of the sketch, as a fraction of the run
+    #[param(quantity = quantities::time_cursor, style_only, default = 0.3)]
     pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { collision: CollisionParams::default(), follow: 6.0, cursor: 0.3 }
-    }
 }
 
 impl Scene for Params {
@@ -54,28 +53,12 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
     const CENSORED: &'static [Censored] =
         &[Censored { key: "t_c", above: None, undefined: Some("the spheres stick: the contact never ends") }];
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.collision.controls(&d.collision);
-        c.push(
-            Control::number("follow", "follow sticking", &mut self.follow)
-                .default(d.follow)
-                .unit("t_H")
-                .range(0.0, 50.0)
-                .doc("Hertz times to follow a sticking collision after sticking is certain"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time of the sketch, as a fraction of the run")
-                .style_only(),
-        );
-        c
-    }
-
     fn material_changed(&mut self) {
         self.collision.material_changed();
+    }
+
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {

@@ -6,24 +6,20 @@ use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::contact::Pair;
 use crate::physics::experiments::{Bounded, experiments};
 use crate::physics::material::{Material, combined_modulus};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the material-parameters scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Show the Lifshitz & Kolsky (1964) steel point in Fig. 2.8(a).
+    /// steel, R = 3.18 mm, v_y = 0.3 m/s
+    #[param(label = "Lifshitz & Kolsky point", default = true)]
     pub lifshitz_kolsky: bool,
-    /// Show the power-law guides Y ∝ l^{-1/2}, l^{-1} in Fig. 2.8(a).
+    /// Y ~ l^{-1/2} and Y ~ l^{-1}
+    #[param(label = "power-law guides", default = true)]
     pub guides: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { lifshitz_kolsky: true, guides: true }
-    }
 }
 
 /// The points of one panel: values with error bars, and one-sided limits.
@@ -72,19 +68,6 @@ Hall–Petch-like Y ~ l^{-1/2} and Y ~ l^{-1}. Relaxation times lie far below th
 time t_H (2.22; E* = 10 GPa, ρ = 2 g/cm³, v = 10 m/s) and grow with the reduced radius.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::toggle("lifshitz_kolsky", "Lifshitz & Kolsky point", &mut self.lifshitz_kolsky)
-                .default(d.lifshitz_kolsky)
-                .doc("steel, R = 3.18 mm, v_y = 0.3 m/s"),
-            Control::toggle("guides", "power-law guides", &mut self.guides)
-                .default(d.guides)
-                .doc("Y ~ l^{-1/2} and Y ~ l^{-1}"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -11,54 +11,48 @@ use crate::physics::collision::{
 use crate::physics::contact::e_independent;
 use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::plasticity;
-use crate::scene::controls::{Control, LogRange, ParamError};
+use crate::scene::controls::{LogRange, ParamError};
 use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::schema::ParamSet;
 use crate::solver::sampling::{Refined, interpolate, refine};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
 /// Parameters of the restitution scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The collision; its velocity is the fixed velocity of e(R).
+    #[param(flatten)]
     pub collision: CollisionParams,
-    /// Lowest velocity of e(v), m/s (default 0.5).
+    /// start of e(v)
+    #[param(label = "lowest velocity", unit = "m s^-1", shown("m/s", 1.0), range(1e-3, 1e3), log, default = 0.5)]
     pub v_min: f64,
-    /// Highest velocity of e(v), m/s (default 100).
+    /// end of e(v)
+    #[param(label = "highest velocity", unit = "m s^-1", shown("m/s", 1.0), range(1e-3, 1e3), log, default = 100.0)]
     pub v_max: f64,
-    /// Number of velocities of e(v) (default 200).
+    /// points of e(v)
+    #[param(label = "velocities", range(2.0, 2000.0), default = 200)]
     pub n_velocities: usize,
-    /// Smallest reduced radius of e(R) and v_s(R), m (default 0.1 µm).
+    /// start of e(R), v_s(R)
+    #[param(label = "smallest reduced radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-7)]
     pub r_min: f64,
-    /// Largest reduced radius of e(R) and v_s(R), m (default 100 µm).
+    /// end of e(R), v_s(R)
+    #[param(label = "largest reduced radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-4)]
     pub r_max: f64,
-    /// Number of radii (default 48).
+    /// points of e(R) and v_s(R)
+    #[param(label = "radii", range(2.0, 200.0), default = 48)]
     pub n_radii: usize,
-    /// Smallest T_vis of the v_s(R) family, s (default 1e-13).
+    /// first v_s(R) curve
+    #[param(label = "smallest T_vis", unit = "s", shown("s", 1.0), range(1e-15, 1e-8), log, default = 1e-13)]
     pub t_vis_min: f64,
-    /// Largest T_vis of the v_s(R) family, s (default 1e-10).
+    /// last v_s(R) curve
+    #[param(label = "largest T_vis", unit = "s", shown("s", 1.0), range(1e-15, 1e-8), log, default = 1e-10)]
     pub t_vis_max: f64,
-    /// Number of curves in the v_s(R) family, log-spaced in T_vis (default 4).
+    /// curves of v_s(R)
+    #[param(label = "T_vis curves", range(1.0, 8.0), default = 4)]
     pub n_t_vis: usize,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            collision: CollisionParams::default(),
-            v_min: 0.5,
-            v_max: 100.0,
-            n_velocities: 200,
-            r_min: 1e-7,
-            r_max: 1e-4,
-            n_radii: 48,
-            t_vis_min: 1e-13,
-            t_vis_max: 1e-10,
-            n_t_vis: 4,
-        }
-    }
 }
 
 impl Params {
@@ -155,88 +149,6 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
         Censored { key: "v_stick", above: Some((1e4, "no collision bounces up to 10⁴ m/s")), undefined: None },
         Censored { key: "v_y", above: None, undefined: Some("no plastic yield: plasticity is off") },
     ];
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.collision.controls(&d.collision);
-        let v = ("m/s", 1.0);
-        c.push(
-            Control::number("v_min", "lowest velocity", &mut self.v_min)
-                .default(d.v_min)
-                .unit("m s^-1")
-                .shown(v.0, v.1)
-                .range(1e-3, 1e3)
-                .log()
-                .doc("start of e(v)"),
-        );
-        c.push(
-            Control::number("v_max", "highest velocity", &mut self.v_max)
-                .default(d.v_max)
-                .unit("m s^-1")
-                .shown(v.0, v.1)
-                .range(1e-3, 1e3)
-                .log()
-                .doc("end of e(v)"),
-        );
-        c.push(
-            Control::count("n_velocities", "velocities", &mut self.n_velocities)
-                .default(d.n_velocities)
-                .range(2.0, 2000.0)
-                .doc("points of e(v)"),
-        );
-        let um = ("µm", 1e6);
-        c.push(
-            Control::number("r_min", "smallest reduced radius", &mut self.r_min)
-                .default(d.r_min)
-                .unit("m")
-                .shown(um.0, um.1)
-                .range(1e-8, 1e-2)
-                .log()
-                .doc("start of e(R), v_s(R)"),
-        );
-        c.push(
-            Control::number("r_max", "largest reduced radius", &mut self.r_max)
-                .default(d.r_max)
-                .unit("m")
-                .shown(um.0, um.1)
-                .range(1e-8, 1e-2)
-                .log()
-                .doc("end of e(R), v_s(R)"),
-        );
-        c.push(
-            Control::count("n_radii", "radii", &mut self.n_radii)
-                .default(d.n_radii)
-                .range(2.0, 200.0)
-                .doc("points of e(R) and v_s(R)"),
-        );
-        let s = ("s", 1.0);
-        c.push(
-            Control::number("t_vis_min", "smallest T_vis", &mut self.t_vis_min)
-                .default(d.t_vis_min)
-                .unit("s")
-                .shown(s.0, s.1)
-                .range(1e-15, 1e-8)
-                .log()
-                .doc("first v_s(R) curve"),
-        );
-        c.push(
-            Control::number("t_vis_max", "largest T_vis", &mut self.t_vis_max)
-                .default(d.t_vis_max)
-                .unit("s")
-                .shown(s.0, s.1)
-                .range(1e-15, 1e-8)
-                .log()
-                .doc("last v_s(R) curve"),
-        );
-        c.push(
-            Control::count("n_t_vis", "T_vis curves", &mut self.n_t_vis)
-                .default(d.n_t_vis)
-                .range(1.0, 8.0)
-                .doc("curves of v_s(R)"),
-        );
-        c
-    }
 
     /// Six radii for e(R) and v_s(R) (the costly panels).
     fn coarse(&self) -> Option<Self> {

@@ -4,30 +4,30 @@
 use super::common::materials;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{BENZ_ASPHAUG_3KMS, splitting_energy};
-use crate::scene::controls::{Control, LogRange};
+use crate::scene::controls::LogRange;
 use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the critical-energies scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Low efficiency (default 10⁻³).
+    /// dotted curves
+    #[param(label = "low efficiency η", range(1e-6, 1.0), log, default = 1e-3)]
     pub eta_low: f64,
-    /// High efficiency (default 1).
+    /// dashed curves
+    #[param(label = "high efficiency η", range(1e-6, 1.0), log, default = 1.0)]
     pub eta_high: f64,
-    /// Smallest size, m.
+    /// start of the size axis
+    #[param(label = "smallest size", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
     pub s_min: f64,
-    /// Largest size, m.
+    /// end of the size axis
+    #[param(label = "largest size", unit = "m", range(1e-9, 1e7), log, default = 1e5)]
     pub s_max: f64,
-    /// Show the Benz & Asphaug fits.
+    /// Benz & Asphaug (1999), 3 km/s
+    #[param(label = "disruption fits", default = true)]
     pub disruption_fits: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { eta_low: 1e-3, eta_high: 1.0, s_min: 1e-6, s_max: 1e5, disruption_fits: true }
-    }
 }
 
 impl Scene for Params {
@@ -43,38 +43,6 @@ Beitz et al. (2011) aggregate curve, whose fit is not given in the thesis. Destr
 far more energy than splitting it.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::number("eta_low", "low efficiency η", &mut self.eta_low)
-                .default(d.eta_low)
-                .range(1e-6, 1.0)
-                .log()
-                .doc("dotted curves"),
-            Control::number("eta_high", "high efficiency η", &mut self.eta_high)
-                .default(d.eta_high)
-                .range(1e-6, 1.0)
-                .log()
-                .doc("dashed curves"),
-            Control::number("s_min", "smallest size", &mut self.s_min)
-                .default(d.s_min)
-                .unit("m")
-                .range(1e-9, 1e6)
-                .log()
-                .doc("start of the size axis"),
-            Control::number("s_max", "largest size", &mut self.s_max)
-                .default(d.s_max)
-                .unit("m")
-                .range(1e-9, 1e7)
-                .log()
-                .doc("end of the size axis"),
-            Control::toggle("disruption_fits", "disruption fits", &mut self.disruption_fits)
-                .default(d.disruption_fits)
-                .doc("Benz & Asphaug (1999), 3 km/s"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

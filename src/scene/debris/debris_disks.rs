@@ -3,9 +3,9 @@
 
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{AU, ratio_to_blowout, ratio_to_blowout_printed};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// An observed system, placed approximately.
@@ -29,27 +29,27 @@ const SYSTEMS: [System; 3] = [
 ];
 
 /// Parameters of the debris-disk scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Surface energy γ, J m⁻² (default 0.1).
+    /// surface energy per unit surface
+    #[param(label = "surface energy γ", unit = "J m^-2", shown("J/m²", 1.0), range(1e-5, 10.0), log, default = 0.1)]
     pub gamma: f64,
-    /// Efficiency η (default 10⁻²).
+    /// fraction of kinetic energy into surface
+    #[param(quantity = quantities::efficiency, default = 1e-2)]
     pub eta: f64,
-    /// Velocity factor f = v_rel/v_K (default 10⁻²).
+    /// v_rel / v_K = (1.25e² + i²)^{1/2}
+    #[param(label = "velocity factor f", range(1e-4, 1.0), log, default = 1e-2)]
     pub f: f64,
-    /// Luminosity of the reference line, L☉ (default 1).
+    /// star of the reference line
+    #[param(label = "luminosity L", unit = "L_sun", range(1e-3, 1e3), log, default = 1.0)]
     pub luminosity: f64,
-    /// Show the printed prefactor 2.4 of (6.8) dashed.
+    /// the printed prefactor 2.4
+    #[param(label = "printed (6.8)", default = true)]
     pub show_printed: bool,
-    /// Show the observed systems.
+    /// Fomalhaut, HD 105, cold disks
+    #[param(label = "observed systems", default = true)]
     pub systems: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { gamma: 0.1, eta: 1e-2, f: 1e-2, luminosity: 1.0, show_printed: true, systems: true }
-    }
 }
 
 impl Scene for Params {
@@ -67,38 +67,6 @@ a natural dearth of small grains in weakly stirred, distant belts such as Fomalh
 Herschel cold debris disks. Arrows: how the ratio moves for ten times larger L, γ, f or η.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::number("gamma", "surface energy γ", &mut self.gamma)
-                .default(d.gamma)
-                .unit("J m^-2")
-                .shown("J/m²", 1.0)
-                .range(1e-5, 10.0)
-                .log()
-                .doc("surface energy per unit surface"),
-            quantities::efficiency(&mut self.eta).default(d.eta).doc("fraction of kinetic energy into surface"),
-            Control::number("f", "velocity factor f", &mut self.f)
-                .default(d.f)
-                .range(1e-4, 1.0)
-                .log()
-                .doc("v_rel / v_K = (1.25e² + i²)^{1/2}"),
-            Control::number("luminosity", "luminosity L", &mut self.luminosity)
-                .default(d.luminosity)
-                .unit("L_sun")
-                .range(1e-3, 1e3)
-                .log()
-                .doc("star of the reference line"),
-            Control::toggle("show_printed", "printed (6.8)", &mut self.show_printed)
-                .default(d.show_printed)
-                .doc("the printed prefactor 2.4"),
-            Control::toggle("systems", "observed systems", &mut self.systems)
-                .default(d.systems)
-                .doc("Fomalhaut, HD 105, cold disks"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -4,28 +4,27 @@
 use super::common::{FragmentParams, materials};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{smallest_fragment, splitting_limit};
-use crate::scene::controls::{Control, LogRange};
+use crate::scene::controls::LogRange;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the smallest-fragment scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// Collision parameters.
+    #[param(flatten)]
     pub collision: FragmentParams,
-    /// Smallest collider radius, m.
+    /// start of the collider-size axis
+    #[param(label = "smallest collider", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
     pub s0_min: f64,
-    /// Largest collider radius, m.
+    /// end of the collider-size axis
+    #[param(label = "largest collider", unit = "m", range(1e-9, 1e6), log, default = 1e4)]
     pub s0_max: f64,
-    /// Size above which self-gravity dominates, m (default 100).
+    /// bodies above this are held by gravity
+    #[param(label = "self-gravity size", unit = "m", range(1.0, 1e5), log, default = 100.0)]
     pub gravity_size: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { collision: FragmentParams::default(), s0_min: 1e-6, s0_max: 1e4, gravity_size: 100.0 }
-    }
 }
 
 /// The collider radius whose smallest fragment is `target` (m), by bisection in log s₀.
@@ -61,37 +60,6 @@ split the colliders, s_min ≈ 5γ/(ηρv²) (6.6, dotted), close to the smalles
 holds bodies together (shaded in the thesis, drawn here as limit lines).",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.collision.controls(&d.collision);
-        c.push(
-            Control::number("s0_min", "smallest collider", &mut self.s0_min)
-                .default(d.s0_min)
-                .unit("m")
-                .range(1e-9, 1e6)
-                .log()
-                .doc("start of the collider-size axis"),
-        );
-        c.push(
-            Control::number("s0_max", "largest collider", &mut self.s0_max)
-                .default(d.s0_max)
-                .unit("m")
-                .range(1e-9, 1e6)
-                .log()
-                .doc("end of the collider-size axis"),
-        );
-        c.push(
-            Control::number("gravity_size", "self-gravity size", &mut self.gravity_size)
-                .default(d.gravity_size)
-                .unit("m")
-                .range(1.0, 1e5)
-                .log()
-                .doc("bodies above this are held by gravity"),
-        );
-        c
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -2,28 +2,26 @@
 //! fragment of a body s₀ hit by colliders of other sizes.
 
 use crate::figure::{Axis, Figure, Series, Style};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the unequal-collider scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
-    /// Mass ratio above which collisions erode (default 100).
+    /// mass ratio above which collisions erode
+    #[param(label = "erosive mass ratio", range(1.0, 1e6), log, default = 100.0)]
     pub erosive_ratio: f64,
-    /// Smallest κ of the erosion family (default 1).
+    /// eroded mass / projectile mass
+    #[param(label = "smallest κ", range(0.01, 100.0), log, default = 1.0)]
     pub kappa_min: f64,
-    /// Largest κ of the erosion family (default 10).
+    /// eroded mass / projectile mass
+    #[param(label = "largest κ", range(0.01, 100.0), log, default = 10.0)]
     pub kappa_max: f64,
-    /// Curves of the erosion family (default 3).
+    /// curves of the erosion family
+    #[param(label = "κ curves", range(1.0, 6.0), default = 3)]
     pub n_kappa: usize,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { erosive_ratio: 100.0, kappa_min: 1.0, kappa_max: 10.0, n_kappa: 3 }
-    }
 }
 
 /// s_min(s_x)/s_min(s₀, s₀) for size ratio x = s_x/s₀ in the catastrophic regime.
@@ -51,32 +49,6 @@ regime. Normalised to the equal-size collision, near-equal masses make the small
 catastrophic collisions; in the erosive regime the value depends on κ alone (κ²/16).",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        vec![
-            Control::number("erosive_ratio", "erosive mass ratio", &mut self.erosive_ratio)
-                .default(d.erosive_ratio)
-                .range(1.0, 1e6)
-                .log()
-                .doc("mass ratio above which collisions erode"),
-            Control::number("kappa_min", "smallest κ", &mut self.kappa_min)
-                .default(d.kappa_min)
-                .range(0.01, 100.0)
-                .log()
-                .doc("eroded mass / projectile mass"),
-            Control::number("kappa_max", "largest κ", &mut self.kappa_max)
-                .default(d.kappa_max)
-                .range(0.01, 100.0)
-                .log()
-                .doc("eroded mass / projectile mass"),
-            Control::count("n_kappa", "κ curves", &mut self.n_kappa)
-                .default(d.n_kappa)
-                .range(1.0, 6.0)
-                .doc("curves of the erosion family"),
-        ]
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

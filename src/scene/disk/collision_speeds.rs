@@ -1,7 +1,7 @@
 //! Scene "Collision speeds" (thesis Fig. 4.2): the relative velocity of two
 //! particles over both masses, and its dominant source.
 
-use super::common::{DiskParams, radius_control};
+use super::common::DiskParams;
 use crate::figure::{Axis, Figure, Heatmap, Scale, Series, Style};
 use crate::physics::aggregate::{
     Aggregate, Particle, R_CRIT, SOURCES, TurbulenceModel, relative_velocity, stopping_time,
@@ -10,10 +10,10 @@ use crate::physics::constants::AU;
 use crate::physics::material::Material;
 use crate::scene::SceneParams;
 use crate::scene::collisions::common::CollisionParams;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::inspect::{self, Action, Inspection};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
@@ -172,41 +172,36 @@ pub fn cell(p: &Params, n_i: f64, n_j: f64) -> Inspection {
 }
 
 /// Parameters of the collision-speed scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// Disk and monomers.
+    #[param(flatten)]
     pub disk: DiskParams,
-    /// Radius, AU (default 5).
+    /// where the particles are
+    #[param(quantity = quantities::disk_radius, default = 5.0)]
     pub radius_au: f64,
-    /// Filling factor of both particles (default 1; 10⁻⁴ for the porous map).
+    /// of both particles
+    #[param(label = "filling factor φ", range(1e-6, 1.0), log, default = 1.0)]
     pub filling: f64,
-    /// Largest mass in monomer masses (default 10³²).
+    /// end of both mass axes
+    #[param(quantity = quantities::max_monomers, default = 1e32)]
     pub max_monomers: f64,
-    /// Grid points per axis (default 100).
+    /// per axis
+    #[param(label = "grid points", range(10.0, 400.0), default = 100)]
     pub cells: usize,
-    /// Use the full Ormel & Cuzzi turbulence form.
+    /// full closed form instead of (4.11)
+    #[param(label = "Ormel & Cuzzi form", default = false)]
     pub ormel_cuzzi: bool,
-    /// Dispersion ε of the mass-to-area ratio (default 0.1).
+    /// of the mass-to-area ratio
+    #[param(label = "dispersion ε", range(0.0, 1.0), default = 0.1)]
     pub epsilon: f64,
+    /// erosion threshold a clicked cell's collision is compared with (1e4: none; the maps do not depend on it)
+    ///
     /// Erosion threshold the inspected collisions are compared with, m s⁻¹
     /// (default 10⁴: none; it does not change the maps).
+    #[param(quantity = quantities::v_eros, style_only, default = 1e4)]
     pub v_eros: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            disk: DiskParams::default(),
-            radius_au: 5.0,
-            filling: 1.0,
-            max_monomers: 1e32,
-            cells: 100,
-            ormel_cuzzi: false,
-            epsilon: 0.1,
-            v_eros: 1e4,
-        }
-    }
 }
 
 /// The collision-speed map: masses m/m₀ of both axes, log₁₀ Δv [m/s] and the
@@ -266,39 +261,6 @@ for the smallest particles, turbulence for larger ones and drift near Ωt_s ~ 1;
 transitions by orders of magnitude in mass.",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.disk.controls(&d.disk);
-        c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
-        c.push(
-            Control::number("filling", "filling factor φ", &mut self.filling)
-                .default(d.filling)
-                .range(1e-6, 1.0)
-                .log()
-                .doc("of both particles"),
-        );
-        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of both mass axes"));
-        c.push(
-            Control::count("cells", "grid points", &mut self.cells).default(d.cells).range(10.0, 400.0).doc("per axis"),
-        );
-        c.push(
-            Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi)
-                .default(d.ormel_cuzzi)
-                .doc("full closed form instead of (4.11)"),
-        );
-        c.push(
-            Control::number("epsilon", "dispersion ε", &mut self.epsilon)
-                .default(d.epsilon)
-                .range(0.0, 1.0)
-                .doc("of the mass-to-area ratio"),
-        );
-        c.push(quantities::v_eros(&mut self.v_eros).default(d.v_eros).style_only().doc(
-            "erosion threshold a clicked cell's collision is compared with (1e4: none; the maps do not depend on it)",
-        ));
-        c
-    }
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
         let p = self;

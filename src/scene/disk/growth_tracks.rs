@@ -5,51 +5,45 @@ use super::common::GrowthParams;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
-use crate::scene::controls::{Control, LogRange};
+use crate::scene::controls::LogRange;
 use crate::scene::core::{
     Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace,
 };
 use crate::scene::inspect::{self, Inspection};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the growth-track scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The growth model (its v_frag applies to porous tracks).
+    #[param(flatten)]
     pub growth: GrowthParams,
-    /// Fragmentation velocity of the compact tracks, m s⁻¹ (default 10).
+    /// fragmentation velocity of compact grains
+    #[param(label = "compact v_frag", unit = "m s^-1", shown("m/s", 1.0), range(0.1, 1e3), log, default = 10.0)]
     pub v_frag_compact: f64,
-    /// Innermost starting radius, AU.
+    /// first starting radius
+    #[param(label = "innermost start", unit = "AU", range(1.1, 300.0), log, default = 3.0)]
     pub r_min_au: f64,
-    /// Outermost starting radius, AU.
+    /// last starting radius
+    #[param(label = "outermost start", unit = "AU", range(1.1, 1000.0), log, default = 300.0)]
     pub r_max_au: f64,
-    /// Number of starting radii (default 30).
+    /// starting radii, log-spaced
+    #[param(label = "tracks", range(1.0, 200.0), default = 30)]
     pub tracks: usize,
-    /// Duration, yr (default 10⁶).
+    /// time followed
+    #[param(quantity = quantities::duration, default = 1e6)]
     pub duration_yr: f64,
-    /// Include the compact tracks.
+    /// also run compact growth
+    #[param(label = "compact tracks", default = true)]
     pub compact: bool,
-    /// Time cursor, as a fraction of the run in log time (styling only).
+    /// time at which every track is marked, as a fraction of the run in log time
+    #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
     pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            growth: GrowthParams::default(),
-            v_frag_compact: 10.0,
-            r_min_au: 3.0,
-            r_max_au: 300.0,
-            tracks: 30,
-            duration_yr: 1e6,
-            compact: true,
-            cursor: 0.0,
-        }
-    }
 }
 
 impl Params {
@@ -92,56 +86,6 @@ outgrow the drift barrier in the inner disk unless erosion by small projectiles 
 near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.growth.controls(&d.growth);
-        c.push(
-            Control::number("v_frag_compact", "compact v_frag", &mut self.v_frag_compact)
-                .default(d.v_frag_compact)
-                .unit("m s^-1")
-                .shown("m/s", 1.0)
-                .range(0.1, 1e3)
-                .log()
-                .doc("fragmentation velocity of compact grains"),
-        );
-        c.push(
-            Control::number("r_min_au", "innermost start", &mut self.r_min_au)
-                .default(d.r_min_au)
-                .unit("AU")
-                .range(1.1, 300.0)
-                .log()
-                .doc("first starting radius"),
-        );
-        c.push(
-            Control::number("r_max_au", "outermost start", &mut self.r_max_au)
-                .default(d.r_max_au)
-                .unit("AU")
-                .range(1.1, 1000.0)
-                .log()
-                .doc("last starting radius"),
-        );
-        c.push(
-            Control::count("tracks", "tracks", &mut self.tracks)
-                .default(d.tracks)
-                .range(1.0, 200.0)
-                .doc("starting radii, log-spaced"),
-        );
-        c.push(quantities::duration(&mut self.duration_yr).default(d.duration_yr).doc("time followed"));
-        c.push(
-            Control::toggle("compact", "compact tracks", &mut self.compact)
-                .default(d.compact)
-                .doc("also run compact growth"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time at which every track is marked, as a fraction of the run in log time")
-                .style_only(),
-        );
-        c
-    }
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
         let p = self;
@@ -199,6 +143,10 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             actions: vec![crate::scene::registry::column_action(&p.growth.disk, q.r / AU)],
             point: path.points[i],
         })
+    }
+
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {

@@ -4,7 +4,6 @@
 use super::common::TrackParams;
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::growth::{Porosity, Track};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 
 /// The scene's parameters: the disk, the growth model and the radius of the track.
@@ -25,11 +24,6 @@ the three. Markers: a = λ_mfp, t_s = t_η, Ωt_s = α, Ωt_s = 1 (open in the t
 collisional, gas and self-gravity compaction. Local growth at fixed R (no drift), perfect sticking.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        TrackParams::controls(self, &TrackParams::default())
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -1,41 +1,34 @@
 //! Scene "Stokes number" (thesis Fig. 4.1): Ωt_s against mass for compact
 //! grains and porous aggregates, with and without Newton drag.
 
-use super::common::{DiskParams, radius_control};
+use super::common::DiskParams;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::{Aggregate, DragRegime, stopping_time};
 use crate::physics::constants::AU;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the Stokes-number scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// Disk and monomers.
+    #[param(flatten)]
     pub disk: DiskParams,
-    /// Radius in the disk, AU (default 5).
+    /// where the particles are
+    #[param(quantity = quantities::disk_radius, default = 5.0)]
     pub radius_au: f64,
-    /// Filling factor of the porous family (default 10⁻⁴).
+    /// filling factor of the constant-φ family
+    #[param(label = "porous φ", range(1e-6, 1.0), log, default = 1e-4)]
     pub porous_filling: f64,
-    /// Fractal dimension of the fractal family (default 2.5).
+    /// D_f of the fractal family
+    #[param(label = "fractal dimension", range(1.5, 3.0), default = 2.5)]
     pub fractal_dimension: f64,
-    /// Largest mass in monomer masses (default 10³⁰).
+    /// end of the mass axis
+    #[param(quantity = quantities::max_monomers, default = 1e30)]
     pub max_monomers: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            disk: DiskParams::default(),
-            radius_au: 5.0,
-            porous_filling: 1e-4,
-            fractal_dimension: 2.5,
-            max_monomers: 1e30,
-        }
-    }
 }
 
 impl Scene for Params {
@@ -53,28 +46,6 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
 πa² for solid grains, about a third of it for hit-and-stick aggregates of 10⁴ monomers.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.disk.controls(&d.disk);
-        c.push(radius_control(&mut self.radius_au, "where the particles are").default(d.radius_au));
-        c.push(
-            Control::number("porous_filling", "porous φ", &mut self.porous_filling)
-                .default(d.porous_filling)
-                .range(1e-6, 1.0)
-                .log()
-                .doc("filling factor of the constant-φ family"),
-        );
-        c.push(
-            Control::number("fractal_dimension", "fractal dimension", &mut self.fractal_dimension)
-                .default(d.fractal_dimension)
-                .range(1.5, 3.0)
-                .doc("D_f of the fractal family"),
-        );
-        c.push(quantities::max_monomers(&mut self.max_monomers).default(d.max_monomers).doc("end of the mass axis"));
-        c
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

@@ -5,17 +5,19 @@ use super::common::TrackParams;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::YEAR;
 use crate::physics::growth::Porosity;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the timescale scene.
-#[derive(Debug, Clone, PartialEq, Default, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The local track.
+    #[param(flatten)]
     pub track: TrackParams,
-    /// Only collisional compaction (Fig. 4.5) instead of the full model (Fig. 4.7).
+    /// Fig. 4.5 instead of Fig. 4.7
+    #[param(label = "collisional compaction only")]
     pub collisional_only: bool,
 }
 
@@ -32,18 +34,6 @@ holds t_grow fixed, as Sect. 4.5 does); beyond t_s = t_η growth speeds up again
 t_grow << t_drift and outgrow the drift barrier. The dotted line is t_drift/30.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.track.controls(&d.track);
-        c.push(
-            Control::toggle("collisional_only", "collisional compaction only", &mut self.collisional_only)
-                .default(d.collisional_only)
-                .doc("Fig. 4.5 instead of Fig. 4.7"),
-        );
-        c
-    }
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

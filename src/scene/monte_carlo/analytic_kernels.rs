@@ -5,59 +5,69 @@
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::PhysicsError;
 use crate::physics::monte_carlo::{Analytic, Body, Engine, Settings};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use crate::scene::quantities;
+use crate::scene::schema::{Choice, ParamSet};
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
-/// Parameters of the scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields)]
-pub struct Params {
-    /// "constant", "linear" or "product".
-    pub kernel: String,
-    /// Dimensionless time t (in units 1/(K₀N₀)) (default 1000 for the constant kernel).
-    pub time: f64,
-    /// Initial monomers N₀V (default 10²⁰).
-    pub particles: f64,
-    /// Groups per decade w* (default 60).
-    pub groups_per_decade: f64,
-    /// Sequence limit f_m (default 0.1).
-    pub f_m: f64,
-    /// Runs (default 8).
-    pub runs: usize,
-    /// First seed (default 1).
-    pub seed: usize,
-    /// Bins per decade (default 2).
-    pub bins_per_decade: usize,
-    /// Largest share of the total mass one group may hold, ε_M
-    /// (dimensionless, 10⁻⁴–1; default 1: no cap, the method of Sect. 4.3).
-    pub group_mass_cap: f64,
+/// The analytic test problem: a kernel with a known solution.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum TestKernel {
+    /// K = 1.
+    #[default]
+    #[choice(key = "constant", label = "constant K = 1")]
+    Constant,
+    /// K = m₁ + m₂.
+    #[choice(key = "linear", label = "linear K = m₁ + m₂")]
+    Linear,
+    /// K = m₁m₂ (gels at t = 1).
+    #[choice(key = "product", label = "product K = m₁m₂")]
+    Product,
 }
 
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            kernel: "constant".into(),
-            time: 1000.0,
-            particles: 1e20,
-            groups_per_decade: 60.0,
-            f_m: 0.1,
-            runs: 8,
-            seed: 1,
-            bins_per_decade: 2,
-            group_mass_cap: 1.0,
-        }
-    }
+/// Parameters of the scene.
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
+#[serde(default, deny_unknown_fields)]
+pub struct Params {
+    /// the analytic test problem
+    #[param(label = "kernel")]
+    pub kernel: TestKernel,
+    /// in units 1/(K₀N₀); the product kernel gels at t = 1
+    #[param(label = "time t", shown("", 1.0), range(1e-3, 1e5), log, default = 1000.0)]
+    pub time: f64,
+    /// monomers in the simulated volume
+    #[param(label = "initial particles N₀V", shown("", 1.0), range(1e3, 1e100), log, default = 1e20)]
+    pub particles: f64,
+    /// resolution of the distribution method (4.26)
+    #[param(quantity = quantities::groups_per_decade, default = 60.0)]
+    pub groups_per_decade: f64,
+    /// (4.22)
+    #[param(label = "sequence limit f_m", shown("", 1.0), range(0.01, 1.0), log, default = 0.1)]
+    pub f_m: f64,
+    /// independent seeds, run in parallel
+    #[param(label = "runs", range(1.0, 64.0), default = 8)]
+    pub runs: usize,
+    /// runs use seed, seed + 1, …
+    #[param(label = "first seed", range(0.0, 1_000_000.0), default = 1)]
+    pub seed: usize,
+    /// histogram
+    #[param(label = "bins per decade", range(1.0, 10.0), default = 2)]
+    pub bins_per_decade: usize,
+    /// caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the constant and product kernels within 5 % at ~100 times the cost
+    ///
+    /// Largest share of the total mass one group may hold, ε_M
+    /// (dimensionless, 10⁻⁴–1; default 1: no cap, the method of Sect. 4.3).
+    #[param(label = "largest group mass share ε_M", shown("", 1.0), range(1e-4, 1.0), log, default = 1.0)]
+    pub group_mass_cap: f64,
 }
 
 impl Params {
     fn analytic(&self) -> Analytic {
-        match self.kernel.as_str() {
-            "linear" => Analytic::Linear,
-            "product" => Analytic::Product,
-            _ => Analytic::Constant,
+        match self.kernel {
+            TestKernel::Constant => Analytic::Constant,
+            TestKernel::Linear => Analytic::Linear,
+            TestKernel::Product => Analytic::Product,
         }
     }
 }
@@ -67,7 +77,7 @@ pub type Bins = Vec<(f64, f64, f64, f64, f64)>;
 
 /// Runs the engine and bins the mass per unit volume.
 pub fn run(p: &Params, progress: &Progress) -> Result<(Bins, f64), SceneError> {
-    if p.kernel == "product" && p.time >= 1.0 {
+    if p.kernel == TestKernel::Product && p.time >= 1.0 {
         return Err(PhysicsError::Invalid("the product kernel gels at t = 1: choose t < 1".into()).into());
     }
     let kernel = p.analytic();
@@ -155,29 +165,16 @@ the groups per decade w* grow; the low-mass tail stays resolved far below the pe
         heavy: true,
     };
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let one = ("", 1.0);
-        vec![
-            Control::choice("kernel", "kernel", &mut self.kernel, vec![("constant", "constant K = 1"), ("linear", "linear K = m₁ + m₂"), ("product", "product K = m₁m₂")]).default(d.kernel.clone()).doc("the analytic test problem"),
-            Control::number("time", "time t", &mut self.time).default(d.time).shown(one.0, one.1).range(1e-3, 1e5).log().doc("in units 1/(K₀N₀); the product kernel gels at t = 1"),
-            Control::number("particles", "initial particles N₀V", &mut self.particles).default(d.particles).shown(one.0, one.1).range(1e3, 1e100).log().doc("monomers in the simulated volume"),
-            quantities::groups_per_decade(&mut self.groups_per_decade).default(d.groups_per_decade).doc("resolution of the distribution method (4.26)"),
-            Control::number("f_m", "sequence limit f_m", &mut self.f_m).default(d.f_m).shown(one.0, one.1).range(0.01, 1.0).log().doc("(4.22)"),
-            Control::count("runs", "runs", &mut self.runs).default(d.runs).range(1.0, 64.0).doc("independent seeds, run in parallel"),
-            Control::count("seed", "first seed", &mut self.seed).default(d.seed).range(0.0, 1_000_000.0).doc("runs use seed, seed + 1, …"),
-            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade).default(d.bins_per_decade).range(1.0, 10.0).doc("histogram"),
-            Control::number("group_mass_cap", "largest group mass share ε_M", &mut self.group_mass_cap).default(d.group_mass_cap).shown(one.0, one.1).range(1e-4, 1.0).log().doc("caps the zoom factor so that no group holds more of the total mass; 1 = (4.26) alone. 10⁻³ brings the constant and product kernels within 5 % at ~100 times the cost"),
-        ]
-    }
-
     /// Capped runs take seconds each: first the uncapped method with at most
     /// two runs (milliseconds).
     fn coarse(&self) -> Option<Self> {
         let p = self;
         let c = Params { group_mass_cap: 1.0, runs: p.runs.min(2), ..p.clone() };
         (c != *p).then_some(c)
+    }
+
+    fn seeds(&mut self) -> Option<Seeds<'_>> {
+        Some(Seeds { first: &mut self.seed, runs: &mut self.runs })
     }
 
     /// Computes the scene.
@@ -189,7 +186,7 @@ the groups per decade w* grow; the low-mass tail stays resolved far below the pe
         let centre = |b: &(f64, f64, f64, f64, f64)| (b.0 * b.1).sqrt();
         let mut fig = Figure::new(
             "kernel-mass-spectrum",
-            &format!("{} kernel at t = {}", p.kernel, p.time),
+            &format!("{} kernel at t = {}", Choice::key(&p.kernel), p.time),
             Axis::log("mass m/m₀", ""),
             Axis::log("m²N(m) (mass per ln m)", ""),
         );

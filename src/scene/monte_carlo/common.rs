@@ -7,204 +7,92 @@ use crate::physics::aggregate::{R_CRIT, Thresholds, TurbulenceModel};
 use crate::physics::coagulation::{Column, Compaction, Run, RunConfig, Sample};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::monte_carlo::Settings;
-use crate::scene::controls::Control;
-use crate::scene::core::{Progress, Scalar, SceneError};
-use crate::scene::disk::common::{DiskParams, radius_control};
+use crate::scene::core::{Progress, Scalar, SceneError, Seeds};
+use crate::scene::disk::common::DiskParams;
 use crate::scene::quantities;
+use crate::scene::schema::{Choice, ParamSet};
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
+/// How a column's aggregates are compressed.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum ColumnCompaction {
+    /// Hit-and-stick and collisional compaction only (Fig. 4.4).
+    #[choice(key = "collisional", label = "collisional only (Fig. 4.4)")]
+    Collisional,
+    /// Also the gas ram pressure and self-gravity (Fig. 4.6).
+    #[default]
+    #[choice(key = "full", label = "with gas and self-gravity (Fig. 4.6)")]
+    Full,
+}
+
 /// A Monte Carlo run of a disk column. SI units except where stated.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct ColumnParams {
     /// Disk and monomers.
+    #[param(flatten)]
     pub disk: DiskParams,
-    /// Radius of the column, AU (default 5).
+    /// radius of the column
+    #[param(quantity = quantities::disk_radius, default = 5.0)]
     pub radius_au: f64,
-    /// "collisional" (hit-and-stick and collisional compaction) or "full" (also gas and self-gravity).
-    pub compaction: String,
-    /// Erosion threshold v_eros, m s⁻¹ (default 10⁴: no erosion).
+    /// how aggregates are compressed
+    #[param(label = "compaction")]
+    pub compaction: ColumnCompaction,
+    /// projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)
+    #[param(quantity = quantities::v_eros, label = "erosion threshold v_eros", default = 1e4)]
     pub v_eros: f64,
-    /// Catastrophic fragmentation velocity, m s⁻¹ (default 80, (4.12) for 0.1 µm ice).
+    /// similar-size collisions above it shatter (80 m/s for 0.1 µm ice)
+    #[param(quantity = quantities::v_frag, default = 80.0)]
     pub v_frag: f64,
-    /// Use the monomer's v_frag (4.12) instead of `v_frag`.
+    /// use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above
+    #[param(label = "v_frag from the monomer", default = false)]
     pub v_frag_from_monomer: bool,
-    /// Erosion efficiency prefactor c₁ of (4.13) (default 1).
+    /// ε_eros = c₁ v/v_eros (4.13)
+    #[param(label = "erosion prefactor c₁", range(0.1, 10.0), log, default = 1.0)]
     pub c1: f64,
-    /// Include Newton drag (default: with full compaction).
+    /// include Re_p > 1 drag
+    #[param(label = "Newton drag", default = true)]
     pub newton: bool,
-    /// Use the full Ormel & Cuzzi turbulence form.
+    /// full turbulence closed form
+    #[param(label = "Ormel & Cuzzi form", default = false)]
     pub ormel_cuzzi: bool,
-    /// Groups per mass decade w* (default 40).
+    /// resolution of the distribution method (4.26); cost grows about as w*²
+    #[param(quantity = quantities::groups_per_decade, default = 40.0)]
     pub groups_per_decade: f64,
-    /// Sequence limits f_m = f_φ (default 0.1).
+    /// largest relative change of a particle per group event (4.22)–(4.24)
+    #[param(label = "sequence limit f_m = f_φ", range(0.01, 1.0), log, default = 0.1)]
     pub f_limit: f64,
-    /// Mass in the column, kg (default 10²¹).
+    /// mass in the simulated column; sets its area M/Σ_d
+    #[param(label = "column mass", unit = "kg", range(1e10, 1e30), log, default = 1e21)]
     pub column_mass: f64,
-    /// Runs with seeds seed, seed + 1, … (default 2).
+    /// independent seeds, run in parallel
+    #[param(label = "runs", range(1.0, 16.0), default = 2)]
     pub runs: usize,
-    /// First seed (default 1).
+    /// runs use seed, seed + 1, …
+    #[param(label = "first seed", range(0.0, 1_000_000.0), default = 1)]
     pub seed: usize,
-    /// First snapshot, yr (default 10).
+    /// time of the first snapshot
+    #[param(label = "first snapshot", unit = "yr", shown("yr", 1.0), range(1e-2, 1e6), log, default = 10.0)]
     pub t_first_yr: f64,
-    /// Last snapshot and end of the run, yr (default 10⁴).
+    /// end of the run
+    #[param(label = "last snapshot", unit = "yr", shown("yr", 1.0), range(1e-1, 1e7), log, default = 1e4)]
     pub t_end_yr: f64,
-    /// Snapshots, log-spaced (default 7).
+    /// log-spaced in time
+    #[param(label = "snapshots", range(1.0, 12.0), default = 7)]
     pub snapshots: usize,
-    /// Stop when the peak mass reaches this, g (default 10¹⁵).
+    /// the run ends when m_p reaches it
+    #[param(label = "stop at peak mass", unit = "kg", shown("g", 1e3), range(1e-10, 1e25), log, default = 1e15)]
     pub stop_mass_g: f64,
-    /// Safety limit on group events per run, millions (default 5).
+    /// group events per run at most
+    #[param(label = "event limit", shown("million", 1.0), range(0.01, 1000.0), log, default = 5.0)]
     pub max_events_millions: f64,
 }
 
-impl Default for ColumnParams {
-    fn default() -> Self {
-        ColumnParams {
-            disk: DiskParams::default(),
-            radius_au: 5.0,
-            compaction: "full".into(),
-            v_eros: 1e4,
-            v_frag: 80.0,
-            v_frag_from_monomer: false,
-            c1: 1.0,
-            newton: true,
-            ormel_cuzzi: false,
-            groups_per_decade: 40.0,
-            f_limit: 0.1,
-            column_mass: 1e21,
-            runs: 2,
-            seed: 1,
-            t_first_yr: 10.0,
-            t_end_yr: 1e4,
-            snapshots: 7,
-            stop_mass_g: 1e15,
-            max_events_millions: 5.0,
-        }
-    }
-}
-
 impl ColumnParams {
-    /// The documented parameters.
-    pub fn controls(&mut self, d: &Self) -> Vec<Control<'_>> {
-        let mut c = self.disk.controls(&d.disk);
-        let yr = ("yr", 1.0);
-        c.push(radius_control(&mut self.radius_au, "radius of the column").default(d.radius_au));
-        c.push(
-            Control::choice(
-                "compaction",
-                "compaction",
-                &mut self.compaction,
-                vec![("collisional", "collisional only (Fig. 4.4)"), ("full", "with gas and self-gravity (Fig. 4.6)")],
-            )
-            .default(d.compaction.clone())
-            .doc("how aggregates are compressed"),
-        );
-        c.push(
-            quantities::v_eros(&mut self.v_eros)
-                .default(d.v_eros)
-                .labelled("erosion threshold v_eros")
-                .doc("projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)"),
-        );
-        c.push(
-            quantities::v_frag(&mut self.v_frag)
-                .default(d.v_frag)
-                .doc("similar-size collisions above it shatter (80 m/s for 0.1 µm ice)"),
-        );
-        c.push(
-            Control::toggle("v_frag_from_monomer", "v_frag from the monomer", &mut self.v_frag_from_monomer)
-                .default(d.v_frag_from_monomer)
-                .doc("use v_frag = 20 (E_break/m₀)^{1/2} (4.12) of the monomer card instead of the number above"),
-        );
-        c.push(
-            Control::number("c1", "erosion prefactor c₁", &mut self.c1)
-                .default(d.c1)
-                .range(0.1, 10.0)
-                .log()
-                .doc("ε_eros = c₁ v/v_eros (4.13)"),
-        );
-        c.push(
-            Control::toggle("newton", "Newton drag", &mut self.newton).default(d.newton).doc("include Re_p > 1 drag"),
-        );
-        c.push(
-            Control::toggle("ormel_cuzzi", "Ormel & Cuzzi form", &mut self.ormel_cuzzi)
-                .default(d.ormel_cuzzi)
-                .doc("full turbulence closed form"),
-        );
-        c.push(
-            quantities::groups_per_decade(&mut self.groups_per_decade)
-                .default(d.groups_per_decade)
-                .doc("resolution of the distribution method (4.26); cost grows about as w*²"),
-        );
-        c.push(
-            Control::number("f_limit", "sequence limit f_m = f_φ", &mut self.f_limit)
-                .default(d.f_limit)
-                .range(0.01, 1.0)
-                .log()
-                .doc("largest relative change of a particle per group event (4.22)–(4.24)"),
-        );
-        c.push(
-            Control::number("column_mass", "column mass", &mut self.column_mass)
-                .default(d.column_mass)
-                .unit("kg")
-                .range(1e10, 1e30)
-                .log()
-                .doc("mass in the simulated column; sets its area M/Σ_d"),
-        );
-        c.push(
-            Control::count("runs", "runs", &mut self.runs)
-                .default(d.runs)
-                .range(1.0, 16.0)
-                .doc("independent seeds, run in parallel"),
-        );
-        c.push(
-            Control::count("seed", "first seed", &mut self.seed)
-                .default(d.seed)
-                .range(0.0, 1_000_000.0)
-                .doc("runs use seed, seed + 1, …"),
-        );
-        c.push(
-            Control::number("t_first_yr", "first snapshot", &mut self.t_first_yr)
-                .default(d.t_first_yr)
-                .unit("yr")
-                .shown(yr.0, yr.1)
-                .range(1e-2, 1e6)
-                .log()
-                .doc("time of the first snapshot"),
-        );
-        c.push(
-            Control::number("t_end_yr", "last snapshot", &mut self.t_end_yr)
-                .default(d.t_end_yr)
-                .unit("yr")
-                .shown(yr.0, yr.1)
-                .range(1e-1, 1e7)
-                .log()
-                .doc("end of the run"),
-        );
-        c.push(
-            Control::count("snapshots", "snapshots", &mut self.snapshots)
-                .default(d.snapshots)
-                .range(1.0, 12.0)
-                .doc("log-spaced in time"),
-        );
-        c.push(
-            Control::number("stop_mass_g", "stop at peak mass", &mut self.stop_mass_g)
-                .default(d.stop_mass_g)
-                .unit("kg")
-                .shown("g", 1e3)
-                .range(1e-10, 1e25)
-                .log()
-                .doc("the run ends when m_p reaches it"),
-        );
-        c.push(
-            Control::number("max_events_millions", "event limit", &mut self.max_events_millions)
-                .default(d.max_events_millions)
-                .shown("million", 1.0)
-                .range(0.01, 1000.0)
-                .log()
-                .doc("group events per run at most"),
-        );
-        c
+    /// The seeds of the runs.
+    pub fn seeds(&mut self) -> Seeds<'_> {
+        Seeds { first: &mut self.seed, runs: &mut self.runs }
     }
 
     /// The run configuration.
@@ -215,7 +103,7 @@ impl ColumnParams {
             )));
         }
         let disk = self.disk.disk();
-        let full = self.compaction == "full";
+        let full = self.compaction == ColumnCompaction::Full;
         let column = Column {
             env: disk.local(self.radius_au * AU),
             monomer: self.disk.monomer(),

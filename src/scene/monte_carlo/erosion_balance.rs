@@ -6,31 +6,28 @@ use super::common::{ColumnParams, RunCache};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
+use crate::scene::schema::ParamSet;
 use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
 /// Parameters of the scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The runs (their v_eros is replaced by the three thresholds below).
+    #[param(flatten, except("v_eros"), default = ColumnParams { runs: 1, stop_mass_g: 1e18, ..ColumnParams::default() })]
     pub run: ColumnParams,
-    /// First erosion threshold, m s⁻¹ (default 20).
+    /// erosion threshold of one set of runs
+    #[param(label = "v_eros (first)", unit = "m s^-1", shown("m/s", 1.0), range(1.0, 1e4), log, default = 20.0)]
     pub v_eros_1: f64,
-    /// Second erosion threshold, m s⁻¹ (default 40).
+    /// erosion threshold of one set of runs
+    #[param(label = "v_eros (second)", unit = "m s^-1", shown("m/s", 1.0), range(1.0, 1e4), log, default = 40.0)]
     pub v_eros_2: f64,
-    /// Third erosion threshold, m s⁻¹ (default 60).
+    /// erosion threshold of one set of runs
+    #[param(label = "v_eros (third)", unit = "m s^-1", shown("m/s", 1.0), range(1.0, 1e4), log, default = 60.0)]
     pub v_eros_3: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        let run = ColumnParams { runs: 1, stop_mass_g: 1e18, ..ColumnParams::default() };
-        Params { run, v_eros_1: 20.0, v_eros_2: 40.0, v_eros_3: 60.0 }
-    }
 }
 
 impl Params {
@@ -68,27 +65,8 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
     };
     const PAUSABLE: bool = true;
 
-    /// The documented parameters (the base run's own v_eros is not used).
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c: Vec<Control<'_>> = self.run.controls(&d.run).into_iter().filter(|c| c.key != "v_eros").collect();
-        let v = ("m/s", 1.0);
-        for (key, label, value, default) in [
-            ("v_eros_1", "v_eros (first)", &mut self.v_eros_1, d.v_eros_1),
-            ("v_eros_2", "v_eros (second)", &mut self.v_eros_2, d.v_eros_2),
-            ("v_eros_3", "v_eros (third)", &mut self.v_eros_3, d.v_eros_3),
-        ] {
-            c.push(
-                Control::number(key, label, value)
-                    .unit("m s^-1")
-                    .shown(v.0, v.1)
-                    .range(1.0, 1e4)
-                    .log()
-                    .default(default)
-                    .doc("erosion threshold of one set of runs"),
-            );
-        }
-        c
+    fn seeds(&mut self) -> Option<Seeds<'_>> {
+        Some(self.run.seeds())
     }
 
     /// Computes the scene.

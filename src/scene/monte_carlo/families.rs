@@ -2,36 +2,35 @@
 //! family as a dot in mass–filling-factor space at the snapshot times, with
 //! the peak track φ_p(m_p) and the semi-analytical track for comparison.
 
-use super::common::{ColumnParams, RunCache};
+use super::common::{ColumnCompaction, ColumnParams, RunCache};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::Aggregate;
 use crate::physics::coagulation::{FamilyPoint, Run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use crate::scene::inspect::{self, Inspection};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The runs.
+    #[param(flatten)]
     pub run: ColumnParams,
-    /// Show the semi-analytical track.
+    /// the Sect. 4.5 model for comparison
+    #[param(label = "semi-analytical track", default = true)]
     pub track: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { run: ColumnParams::default(), track: true }
-    }
 }
 
 /// The semi-analytical track matching a column: (mass, φ) points.
 pub fn semi_analytical(run: &ColumnParams) -> Vec<[f64; 2]> {
-    let porosity = if run.compaction == "full" { Porosity::Full } else { Porosity::Collisional };
+    let porosity = match run.compaction {
+        ColumnCompaction::Full => Porosity::Full,
+        ColumnCompaction::Collisional => Porosity::Collisional,
+    };
     let mut model = GrowthModel::chapter4(porosity);
     model.disk = run.disk.disk();
     model.monomer = run.disk.monomer();
@@ -56,18 +55,6 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         heavy: true,
     };
     const PAUSABLE: bool = true;
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            Control::toggle("track", "semi-analytical track", &mut self.track)
-                .default(d.track)
-                .doc("the Sect. 4.5 model for comparison"),
-        );
-        c
-    }
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
         let p = self;
@@ -120,6 +107,10 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
             actions: Vec::new(),
             point: [f.mass * 1e3, f.filling],
         })
+    }
+
+    fn seeds(&mut self) -> Option<Seeds<'_>> {
+        Some(self.run.seeds())
     }
 
     /// Computes the scene.

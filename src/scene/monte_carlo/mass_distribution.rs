@@ -6,28 +6,25 @@ use super::common::{ColumnParams, RunCache, endings, summary};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::coagulation::{Run, Sample, mass_distribution};
 use crate::physics::constants::YEAR;
-use crate::scene::controls::Control;
-use crate::scene::core::{Context, Cursor, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Cursor, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The runs.
+    #[param(flatten)]
     pub run: ColumnParams,
-    /// Histogram bins per mass decade (default 2).
+    /// histogram
+    #[param(label = "bins per decade", range(1.0, 10.0), default = 2)]
     pub bins_per_decade: usize,
-    /// Time cursor, as a fraction of the run in log time (styling only).
+    /// time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time
+    #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
     pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { run: ColumnParams::default(), bins_per_decade: 2, cursor: 0.0 }
-    }
 }
 
 /// Growth time t_grow = m_p/(dm_p/dt) (4.30) from the history, over steps in
@@ -68,23 +65,8 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
     };
     const PAUSABLE: bool = true;
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            Control::count("bins_per_decade", "bins per decade", &mut self.bins_per_decade)
-                .default(d.bins_per_decade)
-                .range(1.0, 10.0)
-                .doc("histogram"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time")
-                .style_only(),
-        );
-        c
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {
@@ -98,6 +80,10 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
             label.push_str(&format!(" (snapshot {} yr)", crate::figure::human(shown)));
         }
         Some(Cursor { fraction: p.cursor, label, marks, optional: true })
+    }
+
+    fn seeds(&mut self) -> Option<Seeds<'_>> {
+        Some(self.run.seeds())
     }
 
     /// Computes the scene.

@@ -8,21 +8,25 @@ use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
 use crate::physics::monomer::{GUNDLACH_RADIUS, GUNDLACH_ROLLING_ENERGY, Monomer, RollingLaw};
 use crate::scene::batches::common::BatchParams;
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Extra, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::disk::common::{DiskParams, GrowthParams, TrackParams};
-use crate::scene::monomer::ROLLING_LAWS;
+use crate::scene::monomer::RollingEnergyLaw;
+use crate::scene::schema::Choice;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
 /// Parameters of the scale ladder. SI units except where stated.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
+#[param(manual_default)]
 pub struct Params {
     /// The disk, its monomer and the batch model (default: Fig. 5.9's
     /// 0.2 M☉, Z₀ = 0.05, R_c = 30 AU disk with 500 batches out to 300 AU).
+    #[param(flatten)]
     pub run: BatchParams,
-    /// Radius of the local column, AU (default 5).
+    /// where the local column grows
+    #[param(quantity = crate::scene::quantities::disk_radius)]
     pub radius_au: f64,
 }
 
@@ -36,9 +40,9 @@ impl Default for Params {
 }
 
 impl Params {
-    /// The disk and monomer with the rolling-energy law `law` (a key of [`ROLLING_LAWS`]).
-    fn with_law(&self, law: &str) -> DiskParams {
-        DiskParams { rolling_law: law.to_string(), ..self.run.disk.clone() }
+    /// The disk and monomer with the rolling-energy law `law`.
+    fn with_law(&self, law: RollingEnergyLaw) -> DiskParams {
+        DiskParams { rolling_law: law, ..self.run.disk.clone() }
     }
 
     /// Local growth at the column's radius (no drift, no fragmentation).
@@ -69,17 +73,6 @@ lower mass; over the whole disk (ch. 5) that moves the outer edge of the planete
 at the resolution set below.",
         heavy: true,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.run.controls(&d.run);
-        c.push(
-            crate::scene::disk::common::radius_control(&mut self.radius_au, "where the local column grows")
-                .default(d.radius_au),
-        );
-        c
-    }
 
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse(), ..self.clone() })
@@ -167,9 +160,10 @@ at the resolution set below.",
             Axis::log("filling factor φ", ""),
         );
         let mut own: Option<Track> = None;
-        for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-            let track = p.local(p.with_law(key));
-            let chosen = *key == p.run.disk.rolling_law;
+        for (k, (key, label)) in RollingEnergyLaw::OPTIONS.iter().enumerate() {
+            let Some(law) = RollingEnergyLaw::from_key(key) else { continue };
+            let track = p.local(p.with_law(law));
+            let chosen = law == p.run.disk.rolling_law;
             let pts = track.points.iter().map(|q| [q.mass * 1e3, q.filling]).collect();
             let style = if chosen { Style::Line } else { [Style::Dashed, Style::Dotted, Style::Dashed][k] };
             fig_phi =
@@ -265,10 +259,11 @@ at the resolution set below.",
             Axis::log("monomer radius a₀", "µm"),
             Axis::log("E_roll", "erg"),
         );
-        for (k, (key, label)) in ROLLING_LAWS.iter().enumerate() {
-            let law = p.with_law(key).monomer();
+        for (k, (key, label)) in RollingEnergyLaw::OPTIONS.iter().enumerate() {
+            let Some(chosen) = RollingEnergyLaw::from_key(key) else { continue };
+            let law = p.with_law(chosen).monomer();
             let pts = radii.iter().map(|&a| [a * 1e6, Monomer { radius: a, ..law }.rolling_energy() * 1e7]).collect();
-            let style = if *key == p.run.disk.rolling_law {
+            let style = if chosen == p.run.disk.rolling_law {
                 Style::Line
             } else {
                 [Style::Dashed, Style::Dotted, Style::Dashed][k]
@@ -318,7 +313,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
     let h = crate::figure::human;
     let text = |key: &str, f: &dyn Fn(f64) -> String| get(key).map_or_else(|| "–".to_string(), f);
     let item = |q: &str, v: String, src: &str| (q.to_string(), v, src.to_string());
-    let law = ROLLING_LAWS.iter().find(|(k, _)| *k == p.run.disk.rolling_law).map_or(ROLLING_LAWS[0].1, |l| l.1);
+    let law = p.run.disk.rolling_law.label();
     vec![
         Rung {
             scale: format!("1 · Two monomers, a₀ = {}\u{a0}µm (ch.\u{a0}2–3)", h(mono.radius * 1e6)),

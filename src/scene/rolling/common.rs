@@ -3,24 +3,30 @@
 
 use crate::physics::contact::Pair;
 use crate::physics::material::{Material, combined_modulus};
-use crate::scene::controls::Control;
 use crate::scene::core::logspace;
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// The rolling contact. SI units.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
+#[param(manual_default)]
 pub struct RollingParams {
-    /// Material of the rolling sphere.
+    /// material of the rolling sphere
+    #[param(label = "sphere material")]
     pub sphere: Material,
-    /// Material of the substrate (or of the other sphere).
+    /// flat substrate or second sphere
+    #[param(label = "substrate material")]
     pub substrate: Material,
-    /// The sphere rests on a flat substrate (true) or on an equal sphere (false).
+    /// on a flat substrate (else on an equal sphere)
+    #[param(label = "sphere on flat")]
     pub wall: bool,
-    /// Sphere radius, m (default 5 µm; 0.1 µm – 1 mm).
+    /// radius of the rolling sphere
+    #[param(label = "sphere radius", unit = "m", shown("µm", 1e6), range(1e-7, 1e-3), log)]
     pub radius: f64,
-    /// Combined surface energy γ, J m⁻² (default 0.05 = 2 × 0.025 for PSL).
+    /// combined surface energy (2γ_L for like materials)
+    #[param(quantity = quantities::surface_energy)]
     pub surface_energy: f64,
 }
 
@@ -42,38 +48,6 @@ impl RollingParams {
             radius,
             surface_energy,
         }
-    }
-
-    /// The documented parameters; `with_radius` adds the radius slider.
-    pub fn controls(&mut self, d: &Self, with_radius: bool) -> Vec<Control<'_>> {
-        let mut c = vec![
-            Control::material("sphere", "sphere material", &mut self.sphere)
-                .default(d.sphere.name.clone())
-                .doc("material of the rolling sphere"),
-            Control::material("substrate", "substrate material", &mut self.substrate)
-                .default(d.substrate.name.clone())
-                .doc("flat substrate or second sphere"),
-            Control::toggle("wall", "sphere on flat", &mut self.wall)
-                .default(d.wall)
-                .doc("on a flat substrate (else on an equal sphere)"),
-        ];
-        if with_radius {
-            c.push(
-                Control::number("radius", "sphere radius", &mut self.radius)
-                    .default(d.radius)
-                    .unit("m")
-                    .shown("µm", 1e6)
-                    .range(1e-7, 1e-3)
-                    .log()
-                    .doc("radius of the rolling sphere"),
-            );
-        }
-        c.push(
-            quantities::surface_energy(&mut self.surface_energy)
-                .default(d.surface_energy)
-                .doc("combined surface energy (2γ_L for like materials)"),
-        );
-        c
     }
 
     /// After a material changed: γ = 2(γ₁γ₂)^{1/2} of the chosen materials.
@@ -102,47 +76,6 @@ impl RollingParams {
     pub fn inertia(&self, r: f64) -> f64 {
         0.4 * self.sphere_mass(r) * r * r
     }
-}
-
-/// Controls of a radius range (m) and a family of Δγ/γ curves, shared by the
-/// rolling scenes: (r_min, r_max) and (h_min, h_max, n_h).
-pub fn family_controls<'a>(
-    radius: (&'a mut f64, &'a mut f64),
-    hysteresis: (&'a mut f64, &'a mut f64, &'a mut usize),
-    defaults: ((f64, f64), (f64, f64, usize)),
-) -> Vec<Control<'a>> {
-    let (dr, dh) = defaults;
-    let um = ("µm", 1e6);
-    let unit = ("", 1.0);
-    vec![
-        Control::number("r_min", "smallest radius", radius.0)
-            .unit("m")
-            .shown(um.0, um.1)
-            .range(1e-8, 1e-2)
-            .log()
-            .default(dr.0)
-            .doc("smallest sphere radius"),
-        Control::number("r_max", "largest radius", radius.1)
-            .unit("m")
-            .shown(um.0, um.1)
-            .range(1e-8, 1e-2)
-            .log()
-            .default(dr.1)
-            .doc("largest sphere radius"),
-        Control::number("h_min", "smallest Δγ/γ", hysteresis.0)
-            .shown(unit.0, unit.1)
-            .range(1e-3, 100.0)
-            .log()
-            .default(dh.0)
-            .doc("first curve of the family"),
-        Control::number("h_max", "largest Δγ/γ", hysteresis.1)
-            .shown(unit.0, unit.1)
-            .range(1e-3, 100.0)
-            .log()
-            .default(dh.1)
-            .doc("last curve of the family"),
-        Control::count("n_h", "Δγ/γ curves", hysteresis.2).range(1.0, 8.0).default(dh.2).doc("curves in the family"),
-    ]
 }
 
 /// The hysteresis values of the family.

@@ -5,26 +5,23 @@
 use super::common::RollingParams;
 use crate::figure::{Axis, Figure, Fill, Heatmap, Series, Shape, Style};
 use crate::physics::rolling::{HalfDiscs, small_asymmetry_torque};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the contact-under-torque scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The contact (default: a 5 µm PSL sphere on PSL, Fig. 3.2).
+    #[param(flatten)]
     pub contact: RollingParams,
-    /// Asymmetry ξ/a_eq (default 0.1; 0 – 0.5).
+    /// rolling displacement relative to a_eq
+    #[param(label = "asymmetry ξ/a", range(0.0, 0.5), default = 0.1)]
     pub xi_over_a: f64,
-    /// Cells per side of the maps (default 81).
+    /// resolution of the maps
+    #[param(label = "map cells", range(11.0, 301.0), default = 81)]
     pub cells: usize,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params { contact: RollingParams::default(), xi_over_a: 0.1, cells: 81 }
-    }
 }
 
 /// Clips the colour range of a map to ± the 90th percentile of |value| (the
@@ -55,25 +52,6 @@ comes mostly from the crack edges far from the y-axis. For a small asymmetry at 
 M = 6πγRξ (3.14), Dominik & Tielens' result.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.contact.controls(&d.contact, true);
-        c.push(
-            Control::number("xi_over_a", "asymmetry ξ/a", &mut self.xi_over_a)
-                .default(d.xi_over_a)
-                .range(0.0, 0.5)
-                .doc("rolling displacement relative to a_eq"),
-        );
-        c.push(
-            Control::count("cells", "map cells", &mut self.cells)
-                .default(d.cells)
-                .range(11.0, 301.0)
-                .doc("resolution of the maps"),
-        );
-        c
-    }
 
     fn material_changed(&mut self) {
         self.contact.material_changed();

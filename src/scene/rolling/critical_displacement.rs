@@ -1,46 +1,40 @@
 //! Scene "Critical displacement" (thesis Fig. 3.4): the rolling displacement
 //! at which a pinned contact starts to roll, against radius.
 
+use super::common::RollingParams;
 use super::common::family;
-use super::common::{RollingParams, family_controls};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::rolling::critical_displacement;
-use crate::scene::controls::{Control, LogRange};
+use crate::scene::controls::LogRange;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the critical-displacement scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The contact (default: PSL on silicon, γ = 0.1 J m⁻²).
+    #[param(flatten, except("radius"), default = RollingParams::of("PSL", "silicon", true, 12e-6, 0.1))]
     pub contact: RollingParams,
-    /// Smallest sphere radius, m.
+    /// smallest sphere radius
+    #[param(label = "smallest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-6)]
     pub r_min: f64,
-    /// Largest sphere radius, m.
+    /// largest sphere radius
+    #[param(label = "largest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-4)]
     pub r_max: f64,
-    /// Smallest Δγ/γ of the family.
+    /// first curve of the family
+    #[param(label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 1.0)]
     pub h_min: f64,
-    /// Largest Δγ/γ of the family.
+    /// last curve of the family
+    #[param(label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 4.0)]
     pub h_max: f64,
-    /// Curves in the family.
+    /// curves in the family
+    #[param(label = "Δγ/γ curves", range(1, 8), default = 3)]
     pub n_h: usize,
-    /// Show Ding et al.'s measured range.
+    /// 73–94 nm at 22.5–26.8 µm diameter
+    #[param(label = "Ding et al. range", default = true)]
     pub ding_data: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            contact: RollingParams::of("PSL", "silicon", true, 12e-6, 0.1),
-            r_min: 1e-6,
-            r_max: 1e-4,
-            h_min: 1.0,
-            h_max: 4.0,
-            n_h: 3,
-            ding_data: true,
-        }
-    }
 }
 
 /// Ding et al.'s range: (diameters [m], ξ_crit [m]).
@@ -60,23 +54,6 @@ radius (~ R^{2/3}), not the atomic spacing (~0.3 nm) assumed by Dominik & Tielen
 case (Sect. 3.3.1).",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.contact.controls(&d.contact, false);
-        c.extend(family_controls(
-            (&mut self.r_min, &mut self.r_max),
-            (&mut self.h_min, &mut self.h_max, &mut self.n_h),
-            ((d.r_min, d.r_max), (d.h_min, d.h_max, d.n_h)),
-        ));
-        c.push(
-            Control::toggle("ding_data", "Ding et al. range", &mut self.ding_data)
-                .default(d.ding_data)
-                .doc("73–94 nm at 22.5–26.8 µm diameter"),
-        );
-        c
-    }
 
     fn material_changed(&mut self) {
         self.contact.material_changed();

@@ -5,44 +5,37 @@
 use super::common::RollingParams;
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::rolling::{Rocking as RockingModel, RockingSample, critical_displacement, small_asymmetry_torque};
-use crate::scene::controls::Control;
 use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the rocking scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The contact (default: 21.4 µm PSL on aluminium, γ = 0.1 J m⁻²).
+    #[param(flatten, default = RollingParams::of("PSL", "aluminium alloy", true, 10.7e-6, 0.1))]
     pub contact: RollingParams,
-    /// Adhesion hysteresis Δγ/γ (default 1).
+    /// sets ξ_crit (3.16)
+    #[param(quantity = quantities::hysteresis, default = 1.0)]
     pub hysteresis: f64,
-    /// Quality factor Q (default 30; 10¹² for practically no bulk loss).
+    /// bulk loss; 1e12 ≈ none
+    #[param(quantity = quantities::quality_factor, default = 30.0)]
     pub q: f64,
-    /// Kick, as the amplitude ξ_max/a_eq it gives an undamped pinned contact (default 0.08).
+    /// amplitude the kick gives an undamped pinned contact
+    #[param(label = "kick (ξ_max/a_eq)", range(1e-4, 1.0), log, default = 0.08)]
     pub kick_amplitude: f64,
-    /// Duration in rocking periods (default 20).
+    /// length of the run
+    #[param(label = "duration", unit = "periods", range(1.0, 200.0), log, default = 20.0)]
     pub periods: f64,
-    /// Integration steps per period (default 400).
+    /// Runge–Kutta steps per period
+    #[param(label = "steps per period", range(20.0, 5000.0), default = 400)]
     pub steps_per_period: usize,
-    /// Time cursor as a fraction of the run (styling only).
+    /// time of the marker, fraction of the run
+    #[param(quantity = quantities::time_cursor, style_only, default = 0.1)]
     pub cursor: f64,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            contact: RollingParams::of("PSL", "aluminium alloy", true, 10.7e-6, 0.1),
-            hysteresis: 1.0,
-            q: 30.0,
-            kick_amplitude: 0.08,
-            periods: 20.0,
-            steps_per_period: 400,
-            cursor: 0.1,
-        }
-    }
 }
 
 impl Params {
@@ -85,44 +78,12 @@ Q/π periods (3.25): Peri & Cetinkaya's rocking dies out in ~10 periods, Q ~ 30.
         heavy: false,
     };
 
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.contact.controls(&d.contact, true);
-        c.push(crate::scene::quantities::hysteresis(&mut self.hysteresis).default(d.hysteresis));
-        c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss; 1e12 ≈ none"));
-        c.push(
-            Control::number("kick_amplitude", "kick (ξ_max/a_eq)", &mut self.kick_amplitude)
-                .default(d.kick_amplitude)
-                .range(1e-4, 1.0)
-                .log()
-                .doc("amplitude the kick gives an undamped pinned contact"),
-        );
-        c.push(
-            Control::number("periods", "duration", &mut self.periods)
-                .default(d.periods)
-                .unit("periods")
-                .range(1.0, 200.0)
-                .log()
-                .doc("length of the run"),
-        );
-        c.push(
-            Control::count("steps_per_period", "steps per period", &mut self.steps_per_period)
-                .default(d.steps_per_period)
-                .range(20.0, 5000.0)
-                .doc("Runge–Kutta steps per period"),
-        );
-        c.push(
-            quantities::time_cursor(&mut self.cursor)
-                .default(d.cursor)
-                .doc("time of the marker, fraction of the run")
-                .style_only(),
-        );
-        c
-    }
-
     fn material_changed(&mut self) {
         self.contact.material_changed();
+    }
+
+    fn time_cursor(&mut self) -> Option<&mut f64> {
+        Some(&mut self.cursor)
     }
 
     fn cursor(&self, out: &SceneOutput) -> Option<Cursor> {

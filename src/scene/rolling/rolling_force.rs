@@ -2,12 +2,13 @@
 //! F = M/R from adhesion hysteresis against radius, with the Dominik &
 //! Tielens and bulk-loss lines and the measured silica forces.
 
-use super::common::{RollingParams, family, family_controls};
+use super::common::{RollingParams, family};
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
 use crate::physics::rolling::{bulk_torque, rolling_force, rolling_torque, small_asymmetry_torque};
-use crate::scene::controls::{Control, LogRange};
+use crate::scene::controls::LogRange;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
+use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
 /// A measured rolling force with its uncertainty (silica spheres).
@@ -27,43 +28,36 @@ const SILICA: [Measured; 3] = [
 ];
 
 /// Parameters of the rolling-force scene.
-#[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
+#[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// The contact (default: equal silica spheres, Fig. 3.5).
+    #[param(flatten, except("radius"), default = RollingParams::of("silicate", "silicate", false, 0.95e-6, 0.05))]
     pub contact: RollingParams,
-    /// Smallest sphere radius, m.
+    /// smallest sphere radius
+    #[param(label = "smallest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 2e-7)]
     pub r_min: f64,
-    /// Largest sphere radius, m.
+    /// largest sphere radius
+    #[param(label = "largest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 2e-5)]
     pub r_max: f64,
-    /// Smallest Δγ/γ of the family.
+    /// first curve of the family
+    #[param(label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 0.25)]
     pub h_min: f64,
-    /// Largest Δγ/γ of the family.
+    /// last curve of the family
+    #[param(label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 3.0)]
     pub h_max: f64,
-    /// Curves in the family (log-spaced).
+    /// curves in the family
+    #[param(label = "Δγ/γ curves", range(1, 8), default = 4)]
     pub n_h: usize,
-    /// Rolling displacement of the Dominik & Tielens line, m (default 0.3 nm).
+    /// ξ of the Dominik & Tielens line
+    #[param(label = "DT displacement ξ", unit = "m", shown("nm", 1e9), range(1e-11, 1e-8), log, default = 3e-10)]
     pub xi_dt: f64,
-    /// Quality factor of the bulk line (default 100).
+    /// bulk loss line (3.22)
+    #[param(quantity = quantities::quality_factor, default = 100.0)]
     pub q: f64,
-    /// Show the silica measurements.
+    /// Heim, Blum & Wurm, Gundlach
+    #[param(label = "silica measurements", default = true)]
     pub silica_data: bool,
-}
-
-impl Default for Params {
-    fn default() -> Self {
-        Params {
-            contact: RollingParams::of("silicate", "silicate", false, 0.95e-6, 0.05),
-            r_min: 2e-7,
-            r_max: 2e-5,
-            h_min: 0.25,
-            h_max: 3.0,
-            n_h: 4,
-            xi_dt: 3e-10,
-            q: 100.0,
-            silica_data: true,
-        }
-    }
 }
 
 impl Scene for Params {
@@ -80,33 +74,6 @@ M_B = (πU_E/Q)(R/2a) (3.22). The silica data (equal spheres, effective radius R
 on glass (Sümer & Sitti 2008) the thesis infers Δγ/γ ≈ 3; their measured forces are not printed.",
         heavy: false,
     };
-
-    /// The documented parameters.
-    fn controls(&mut self) -> Vec<Control<'_>> {
-        let d = Self::default();
-        let mut c = self.contact.controls(&d.contact, false);
-        c.extend(family_controls(
-            (&mut self.r_min, &mut self.r_max),
-            (&mut self.h_min, &mut self.h_max, &mut self.n_h),
-            ((d.r_min, d.r_max), (d.h_min, d.h_max, d.n_h)),
-        ));
-        c.push(
-            Control::number("xi_dt", "DT displacement ξ", &mut self.xi_dt)
-                .default(d.xi_dt)
-                .unit("m")
-                .shown("nm", 1e9)
-                .range(1e-11, 1e-8)
-                .log()
-                .doc("ξ of the Dominik & Tielens line"),
-        );
-        c.push(quantities::quality_factor(&mut self.q).default(d.q).doc("bulk loss line (3.22)"));
-        c.push(
-            Control::toggle("silica_data", "silica measurements", &mut self.silica_data)
-                .default(d.silica_data)
-                .doc("Heim, Blum & Wurm, Gundlach"),
-        );
-        c
-    }
 
     fn material_changed(&mut self) {
         self.contact.material_changed();

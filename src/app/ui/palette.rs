@@ -1,0 +1,114 @@
+//! The command palette: every action by its name, with its keys, filtered
+//! as one types; Enter runs the first match, a click the one clicked, Esc
+//! closes. F2 or the Commands button opens it, on the desktop and in the
+//! browser alike. Names, meanings and keys come from the one action table
+//! ([`Action::text`], [`shortcuts::SHORTCUTS`]).
+
+use super::Cx;
+use crate::app::command::{Action, Command};
+use crate::app::shortcuts::{self, Mode};
+
+/// The actions whose name or meaning holds every word of `filter` (any
+/// case): those whose name holds them first, each group in the palette's
+/// order; those of presenting a deck only while `presenting`, those of
+/// exploring only while not.
+pub fn matching(filter: &str, presenting: bool) -> Vec<Action> {
+    let words: Vec<String> = filter.split_whitespace().map(str::to_lowercase).collect();
+    let holds = |text: &str| words.iter().all(|w| text.contains(w.as_str()));
+    let mut found: Vec<(bool, Action)> = Action::ALL
+        .iter()
+        .copied()
+        .filter(|a| a.presenting().is_none_or(|p| p == presenting))
+        .filter_map(|a| {
+            let t = a.text();
+            let name = t.name.to_lowercase();
+            holds(&format!("{name} {}", t.does.to_lowercase())).then(|| (!holds(&name), a))
+        })
+        .collect();
+    found.sort_by_key(|(by_meaning, _)| *by_meaning);
+    found.into_iter().map(|(_, a)| a).collect()
+}
+
+/// The palette's window, while it is open.
+pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
+    let Some(filter) = cx.state.palette.clone() else { return };
+    let presenting = cx.state.presenter.is_some();
+    let mode = if presenting { Mode::Presenter } else { Mode::Explorer };
+    let found = matching(&filter, presenting);
+    let text_size = super::look::body_size(cx.state.session.lecture);
+    let mut text = filter;
+    let mut run = None;
+    let mut close = false;
+    // Within the screen at 1024 px in the lecture look too: the meanings
+    // are cut to the room left (in full as a tooltip).
+    let width = (ctx.content_rect().width() - 48.0).clamp(240.0, 900.0);
+    egui::Window::new("Commands")
+        .collapsible(false)
+        .resizable(false)
+        .min_width(width)
+        .max_width(width)
+        .anchor(egui::Align2::CENTER_TOP, [0.0, 48.0])
+        .show(ctx, |ui| {
+            let edit = ui
+                .horizontal(|ui| {
+                    let find = ui.label("Find");
+                    ui.add(
+                        egui::TextEdit::singleline(&mut text)
+                            .hint_text("type a command's name; Enter runs the first")
+                            .desired_width((width - 80.0).min(380.0)),
+                    )
+                    .labelled_by(find.id)
+                })
+                .inner;
+            edit.request_focus();
+            if edit.changed() {
+                cx.send(Command::SetPalette(Some(text.clone())));
+            }
+            let (enter, escape) = ui.input(|i| (i.key_pressed(egui::Key::Enter), i.key_pressed(egui::Key::Escape)));
+            egui::ScrollArea::vertical().max_height(ctx.content_rect().height() * 0.6).show(ui, |ui| {
+                egui::Grid::new("palette").num_columns(3).striped(true).show(ui, |ui| {
+                    for (k, a) in found.iter().enumerate() {
+                        let t = a.text();
+                        let name = egui::RichText::new(t.name).size(text_size);
+                        if ui.selectable_label(k == 0, name).on_hover_text(t.does).clicked() {
+                            run = Some(*a);
+                        }
+                        ui.label(egui::RichText::new(shortcuts::keys(*a, mode)).monospace());
+                        ui.add(egui::Label::new(egui::RichText::new(t.does).weak()).truncate()).on_hover_text(t.does);
+                        ui.end_row();
+                    }
+                });
+            });
+            if found.is_empty() {
+                ui.label("no command matches");
+            }
+            if enter {
+                run = run.or(found.first().copied());
+            }
+            close = escape;
+        });
+    if let Some(a) = run {
+        cx.send(Command::SetPalette(None));
+        cx.send(Command::Act(a));
+    } else if close {
+        cx.send(Command::SetPalette(None));
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_palette_finds_actions_by_any_word_of_their_text() {
+        let all = matching("", false);
+        assert!(all.contains(&Action::Undo) && all.contains(&Action::Pin) && !all.contains(&Action::NextSlide));
+        assert!(matching("", true).contains(&Action::NextSlide) && !matching("", true).contains(&Action::Pin));
+        assert_eq!(matching("undo", false).first(), Some(&Action::Undo));
+        // A match in the name comes before one in the meaning.
+        assert_eq!(matching("un", false)[..2], [Action::Undo, Action::Palette]);
+        assert_eq!(matching("LECTURE mode", false), vec![Action::ToggleLecture, Action::Leave]);
+        assert_eq!(matching("pinned", false), vec![Action::ClearPins]);
+        assert!(matching("no such thing", false).is_empty());
+    }
+}

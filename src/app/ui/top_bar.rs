@@ -93,7 +93,8 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             cx.send(Command::Deck(DeckEdit::Show(open)));
         }
         ui.menu_button("Present", |ui| decks_menu(ui, cx));
-        for action in [Action::Palette, Action::Help, Action::CopyLink] {
+        // The palette's button last: the buttons before it keep their places.
+        for action in [Action::Help, Action::CopyLink, Action::Palette] {
             action_button(ui, cx, action, action.text().name);
         }
     });

@@ -9,7 +9,7 @@
 // reviewed references in web/tests/references (UPDATE_REFERENCES=1 writes
 // them); compares the numbers with the native binary's `--json`; drags a
 // slider and sees the figure change; downloads an exported PNG and drops it
-// on a fresh page, which reopens its state. Screenshots go to $OUT
+// on a fresh page, which reopens its state; runs a command from the palette. Screenshots go to $OUT
 // (default web/test-output). Prints the budgets it measures.
 
 import { chromium } from "playwright-core";
@@ -367,6 +367,40 @@ try {
     await settle(page);
     await shot(page, "porous-growth-03");
     await page.close();
+  }
+
+  // The command palette (F2): typing "lecture" and Enter turns lecture mode
+  // on, which gives the plot most of the page. On a page of its own storage
+  // (the deck above leaves its session).
+  {
+    const own = await browser.newContext({ viewport: size });
+    const page = await own.newPage();
+    page.on("pageerror", (e) => fail(`palette: page error: ${e.message.slice(0, 400)}`));
+    page.on("console", (m) => {
+      if (m.type() === "error") fail(`palette: console error: ${m.text().slice(0, 400)}`);
+    });
+    await page.goto(base + "?preset=ice-bounce-8ms");
+    await page.waitForFunction(() => typeof window.grainscope?.busy === "function", null, { timeout: 60_000 });
+    await settle(page);
+    const frame = async () => Array.from(await page.evaluate(() => window.grainscope.plot_frame("contact-radius")));
+    const area = (f) => (f.length === 4 ? (f[2] - f[0]) * (f[3] - f[1]) : 0);
+    const before = area(await frame());
+    await page.mouse.click(700, 400);
+    // Waits of a few frames between the keys, for a busy machine.
+    await page.keyboard.press("F2");
+    await page.waitForTimeout(800);
+    await page.keyboard.type("lecture", { delay: 30 });
+    await page.waitForTimeout(500);
+    await page.keyboard.press("Enter");
+    await page.waitForTimeout(1500);
+    const after = area(await frame());
+    if (!(before > 0 && after > 1.3 * before)) {
+      fail(`palette: F2, "lecture", Enter left the plot at ${Math.round(after)} px² (before ${Math.round(before)})`);
+    } else {
+      ok(`palette: F2, "lecture", Enter: lecture mode, the plot ${(after / before).toFixed(2)}× larger`);
+    }
+    fs.writeFileSync(path.join(out, "palette-lecture.png"), await page.screenshot());
+    await own.close();
   }
 
   // A preset opened with the file picker (the top bar's "Open preset…"), on

@@ -41,7 +41,7 @@
 
 use proc_macro::TokenStream;
 use proc_macro2::TokenStream as Tokens;
-use quote::{format_ident, quote};
+use quote::quote;
 use syn::punctuated::Punctuated;
 use syn::{Data, DeriveInput, Expr, Fields, LitStr, Path, Token, parse_macro_input};
 
@@ -273,8 +273,7 @@ fn expand(input: &DeriveInput) -> syn::Result<Tokens> {
             }
         }
     };
-    let lifetime = format_ident!("a");
-    let lifetime = syn::Lifetime::new(&format!("'{lifetime}"), proc_macro2::Span::call_site());
+    let lifetime = syn::Lifetime::new("'a", proc_macro2::Span::call_site());
     Ok(quote! {
         #default_impl
 

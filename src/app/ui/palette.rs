@@ -18,7 +18,8 @@ pub fn matching(filter: &str, presenting: bool) -> Vec<Action> {
     let mut found: Vec<(bool, Action)> = Action::ALL
         .iter()
         .copied()
-        .filter(|a| a.presenting().is_none_or(|p| p == presenting))
+        // The palette does not offer itself.
+        .filter(|a| *a != Action::Palette && a.presenting().is_none_or(|p| p == presenting))
         .filter_map(|a| {
             let t = a.text();
             let name = t.name.to_lowercase();
@@ -106,7 +107,8 @@ mod tests {
         assert!(matching("", true).contains(&Action::NextSlide) && !matching("", true).contains(&Action::Pin));
         assert_eq!(matching("undo", false).first(), Some(&Action::Undo));
         // A match in the name comes before one in the meaning.
-        assert_eq!(matching("un", false)[..2], [Action::Undo, Action::Palette]);
+        assert_eq!(matching("un", false)[..2], [Action::Undo, Action::Redo]);
+        assert!(!all.contains(&Action::Palette));
         assert_eq!(matching("LECTURE mode", false), vec![Action::ToggleLecture, Action::Leave]);
         assert_eq!(matching("pinned", false), vec![Action::ClearPins]);
         assert!(matching("no such thing", false).is_empty());

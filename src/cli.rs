@@ -91,6 +91,34 @@ pub enum Command {
         #[arg(long)]
         json: bool,
     },
+    /// The continuity audit: sweep every parameter of each preset over its
+    /// documented range (one at a time, around the preset's point) and report
+    /// errors, undefined and missing values, steps in a scalar and parameters
+    /// that change the figures but no scalar. Findings the scene declares as
+    /// physics are listed with their reason; any other fails the audit
+    /// (exit status 1).
+    Audit {
+        /// Preset files or shipped preset names; every shipped preset when none.
+        presets: Vec<String>,
+        /// Grid points along each numeric parameter's range.
+        #[arg(long, default_value_t = 24, value_parser = clap::value_parser!(u32).range(3..=1000))]
+        points: u32,
+        /// Bisections of the interval of each step candidate.
+        #[arg(long, default_value_t = 10, value_parser = clap::value_parser!(u32).range(1..=40))]
+        refine: u32,
+        /// Only these parameters (keys, comma-separated); all by default.
+        #[arg(long, value_delimiter = ',', value_name = "A,B")]
+        only: Vec<String>,
+        /// Audit heavy scenes at the cheaper setting of their preview.
+        #[arg(long)]
+        coarse: bool,
+        /// Leave heavy scenes out.
+        #[arg(long, conflicts_with = "coarse")]
+        light: bool,
+        /// Print one JSON object per preset (a line each) instead of text.
+        #[arg(long)]
+        json: bool,
+    },
     /// Merge the folders of a sharded sweep into the files of the whole run.
     SweepMerge {
         /// The shards' output folders.
@@ -318,6 +346,44 @@ pub fn run(command: Command) -> Result<()> {
                     "program": crate::provenance::program(), "preset": p.to_ron()?}));
             }
             say(format_args!("{}", crate::sensitivity::matters_text(&m, &output, factor)))
+        }
+        Command::Audit { presets, points, refine, only, coarse, light, json } => {
+            let names: Vec<String> = if presets.is_empty() {
+                SHIPPED.iter().map(|(file, _)| file.trim_end_matches(".ron").to_string()).collect()
+            } else {
+                presets
+            };
+            let options = crate::audit::Options { points: points as usize, refine: refine as usize, only };
+            let mut failing = Vec::new();
+            for name in &names {
+                let p = resolve(name)?;
+                let heavy = p.scene.info().heavy;
+                if heavy && light {
+                    continue;
+                }
+                let base = match p.scene.coarse() {
+                    Some(c) if heavy && coarse => c,
+                    _ => p.scene.clone(),
+                };
+                let started = std::time::Instant::now();
+                let report = crate::audit::audit(&base, &options, &Progress::default())
+                    .with_context(|| format!("auditing {name}"))?;
+                if report.failures().next().is_some() {
+                    failing.push(name.clone());
+                }
+                if json {
+                    say(serde_json::json!({"preset": name, "coarse": heavy && coarse, "report": report,
+                        "program": crate::provenance::program()}))?;
+                } else {
+                    let setting = if heavy && coarse { " (coarse)" } else { "" };
+                    say(format_args!("{name}{setting} — {}", report.text().trim_end()))?;
+                    tell(format_args!("{name}: {:.1} s", started.elapsed().as_secs_f64()));
+                }
+            }
+            if !failing.is_empty() {
+                bail!("the audit fails for {} of {} presets: {}", failing.len(), names.len(), failing.join(", "));
+            }
+            Ok(())
         }
         Command::SweepMerge { shards, out } => {
             let files = crate::sweep_files::merge(&shards, &out)?;

@@ -24,8 +24,10 @@
 //! | `log` | a logarithmic slider |
 //! | `default = expr` | the default value |
 //! | `style_only` | changing it restyles the output; nothing is recomputed |
+//! | `figure_only` | it sets only what a figure shows (an axis range, a curve's resolution, an overlay): no scalar depends on it (the audit holds it to that) |
 //! | `choices = expr` | a `String` field that holds one of these (key, label) options |
 //! | `quantity = path` | a shared quantity: `path(&mut field)` gives the control; `label`, `doc` and the rest refine it |
+//! | `below = field` | the value must be below that of the sibling field `field` (a range's two ends) |
 //! | `flatten` | the field is itself a parameter struct whose parameters are listed here |
 //! | `except("a", …)` | with `flatten`: leave out these keys |
 //! | `skip` | not a parameter (it still takes `default`) |
@@ -67,6 +69,8 @@ struct FieldSpec {
     log: bool,
     default: Option<Expr>,
     style_only: bool,
+    figure_only: bool,
+    below: Option<syn::Ident>,
     choices: Option<Expr>,
     quantity: Option<Path>,
     flatten: bool,
@@ -109,6 +113,10 @@ fn field_spec(field: &syn::Field) -> syn::Result<FieldSpec> {
                 spec.default = Some(meta.value()?.parse()?);
             } else if p.is_ident("style_only") {
                 spec.style_only = true;
+            } else if p.is_ident("figure_only") {
+                spec.figure_only = true;
+            } else if p.is_ident("below") {
+                spec.below = Some(meta.value()?.parse()?);
             } else if p.is_ident("choices") {
                 spec.choices = Some(meta.value()?.parse()?);
             } else if p.is_ident("quantity") {
@@ -243,6 +251,9 @@ fn expand(input: &DeriveInput) -> syn::Result<Tokens> {
         if spec.style_only {
             chain = quote!(#chain.style_only());
         }
+        if spec.figure_only {
+            chain = quote!(#chain.figure_only());
+        }
         match doc {
             Some(doc) => chain = quote!(#chain.doc(#doc)),
             None if spec.quantity.is_none() => {
@@ -256,6 +267,20 @@ fn expand(input: &DeriveInput) -> syn::Result<Tokens> {
                 #schema::FieldValue::check(&self.#ident, spec)?;
             }
         });
+        if let Some(other) = &spec.below {
+            let other_key = LitStr::new(&other.to_string(), other.span());
+            checks.push(quote! {
+                if !(self.#ident < self.#other) {
+                    return ::core::result::Result::Err(#schema::ParamError::Inconsistent(::std::format!(
+                        "{} = {} must be below {} = {}",
+                        #key,
+                        #schema::short(self.#ident as f64),
+                        #other_key,
+                        #schema::short(self.#other as f64)
+                    )));
+                }
+            });
+        }
         getters.push(quote! {
             if key == #key {
                 return ::core::option::Option::Some(#schema::FieldValue::value(&self.#ident));

@@ -94,7 +94,7 @@ pub fn chapter4() -> Vec<Check> {
             21.0,
             scalar(&drag, "fractal_re_one").log10(),
             0.5,
-            "\"at a mass of m/m0 ~ 1e21\"; ours reaches Re_p = 1 at 10^21.75 with v_dg the systematic drift, the velocity the drag law (4.9) iterates on. The thesis does not say which v_dg enters Re_p: with the particle's full velocity against the gas, the sources of Sect. 4.2.2 (turbulence 6.4, settling 3.9, radial drift 4.2 m/s there), Re_p = 1 at 10^21.43 (next row). Not the projected area: at these masses Okuzumi et al.'s A equals pi a^2 within 1e-4",
+            "\"at a mass of m/m0 ~ 1e21\"; ours reaches Re_p = 1 at 10^21.74 with v_dg the systematic drift, the velocity the drag law (4.9) iterates on. The thesis does not say which v_dg enters Re_p: with the particle's full velocity against the gas, the sources of Sect. 4.2.2 (turbulence 6.4, settling 3.9, radial drift 4.2 m/s there), Re_p = 1 at 10^21.43 (next row). Not the projected area: at these masses Okuzumi et al.'s A equals pi a^2 within 1e-4",
         )
         .thesis(),
         check(

@@ -75,6 +75,9 @@ pub struct Control<'a> {
     pub default: Option<DefaultValue>,
     /// Changing it only restyles the output; nothing is recomputed.
     pub style_only: bool,
+    /// It sets only what a figure shows (an axis range, a curve's
+    /// resolution, an overlay): no scalar depends on it.
+    pub figure_only: bool,
     /// The value.
     pub kind: ControlKind<'a>,
 }
@@ -82,7 +85,17 @@ pub struct Control<'a> {
 impl<'a> Control<'a> {
     /// A control of `kind` with no unit, documentation or default yet.
     fn new(key: &'static str, label: &'static str, kind: ControlKind<'a>) -> Self {
-        Control { key, label, unit: "", si_unit: "", doc: "", default: None, style_only: false, kind }
+        Control {
+            key,
+            label,
+            unit: "",
+            si_unit: "",
+            doc: "",
+            default: None,
+            style_only: false,
+            figure_only: false,
+            kind,
+        }
     }
 
     /// A real-valued control (SI); set its unit, range and default with the
@@ -176,6 +189,12 @@ impl<'a> Control<'a> {
         self
     }
 
+    /// Marks the control as setting only what a figure shows.
+    pub fn figure_only(mut self) -> Self {
+        self.figure_only = true;
+        self
+    }
+
     /// The spec of the control (its value aside).
     pub fn spec(&self) -> Spec {
         let c = self;
@@ -196,6 +215,7 @@ impl<'a> Control<'a> {
             doc: c.doc,
             default: c.default.clone(),
             style_only: c.style_only,
+            figure_only: c.figure_only,
             kind,
         }
     }

@@ -58,6 +58,12 @@ pub trait Scene:
     /// reads a non-finite scalar through [`status`]. Empty by default.
     const CENSORED: &'static [Censored] = &[];
 
+    /// What the continuity audit ([`crate::audit`]) finds in this scene that
+    /// is the model's physics, not a defect (a threshold such as sticking, a
+    /// regime boundary, a parameter that only shapes a figure), with the
+    /// reason. Empty by default: every finding is a defect.
+    const DECLARED: &'static [Declared] = &[];
+
     /// Computes the scene. Pure: the same parameters give the same output;
     /// the caches only save work.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError>;
@@ -157,6 +163,72 @@ pub struct Censored {
     pub undefined: Option<&'static str>,
 }
 
+/// What the continuity audit can find along one parameter's range.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash, serde::Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Irregularity {
+    /// The computation fails at a value inside the documented range.
+    Error,
+    /// The scalar is non-finite where the scene declares no meaning for it.
+    Undefined,
+    /// The scalar is reported at some values and absent at others.
+    Missing,
+    /// The scalar jumps: the change between two neighbouring values stays
+    /// as the interval between them shrinks.
+    Step,
+    /// The parameter changes the figures but no scalar.
+    Ignored,
+    /// A parameter declared to set only what a figure shows changes a scalar.
+    Moves,
+}
+
+impl Irregularity {
+    /// The irregularity as one word, as the audit prints it.
+    pub fn word(&self) -> &'static str {
+        match self {
+            Irregularity::Error => "error",
+            Irregularity::Undefined => "undefined",
+            Irregularity::Missing => "missing",
+            Irregularity::Step => "step",
+            Irregularity::Ignored => "ignored",
+            Irregularity::Moves => "moves",
+        }
+    }
+}
+
+/// An audit finding declared as the model's physics: scalar `scalar`
+/// (\"*\" any) shows `kind` along parameter `parameter` (\"*\" any), for
+/// the reason `why`.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Declared {
+    /// The scalar's key, or \"*\" for every scalar (and for
+    /// [`Irregularity::Ignored`], which concerns no one scalar).
+    pub scalar: &'static str,
+    /// The parameter's key, or \"*\" for every parameter.
+    pub parameter: &'static str,
+    /// What is found.
+    pub kind: Irregularity,
+    /// Why it is physics.
+    pub why: &'static str,
+}
+
+impl Declared {
+    /// The declaration in `declared` that covers `kind` of `scalar` along
+    /// `parameter`, if any.
+    pub fn find<'a>(
+        declared: &'a [Declared],
+        kind: Irregularity,
+        scalar: &str,
+        parameter: &str,
+    ) -> Option<&'a Declared> {
+        declared.iter().find(|d| {
+            d.kind == kind
+                && (d.scalar == "*" || d.scalar == scalar)
+                && (d.parameter == "*" || d.parameter == parameter)
+        })
+    }
+}
+
 /// How a scalar's value reads.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Status {
@@ -214,6 +286,9 @@ impl Status {
     }
 }
 
+/// Why a non-finite scalar has no value where its scene declares nothing.
+pub const NOT_FINITE: &str = "not a finite number";
+
 /// How scalar `key` with value `value` reads, by the scene's declarations
 /// `censored` (see [`Scene::CENSORED`]). A finite value is a value; a
 /// non-finite one is what the scene declares, or undefined ("not a finite
@@ -228,7 +303,7 @@ pub fn status(censored: &[Censored], key: &str, value: f64) -> Status {
     {
         return Status::Above { bound, why };
     }
-    Status::Undefined { why: declared.and_then(|c| c.undefined).unwrap_or("not a finite number") }
+    Status::Undefined { why: declared.and_then(|c| c.undefined).unwrap_or(NOT_FINITE) }
 }
 
 /// A [`Scalar`] as read back from bytes; its texts are interned.

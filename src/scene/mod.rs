@@ -26,8 +26,8 @@ pub mod timeline;
 
 pub use controls::{Control, ControlKind, DefaultValue, LogRange, ParamError};
 pub use core::{
-    Caches, Censored, Context, Extra, Progress, Report, Rung, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds,
-    Status, TimedPath, Trajectory, Watcher, logspace, status,
+    Caches, Censored, Context, Declared, Extra, Irregularity, NOT_FINITE, Progress, Report, Rung, Scalar, Scene,
+    SceneError, SceneInfo, SceneOutput, Seeds, Status, TimedPath, Trajectory, Watcher, logspace, status,
 };
 pub use registry::{
     Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, parameter_reference, scalar,

@@ -10,7 +10,7 @@
 
 use super::controls::short;
 use super::controls::{Control, ControlKind, ParamError};
-use super::core::{Caches, Censored, Context, Progress, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
+use super::core::{Caches, Censored, Context, Declared, Progress, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use super::schema::{ParamSet, Spec, SpecKind, Value};
 use super::timeline::Cursor;
 use super::{batches, collisions, debris, disk, inspect, monomer, monte_carlo, overview, rolling};
@@ -62,6 +62,13 @@ macro_rules! scenes {
             pub fn censored(&self) -> &'static [Censored] {
                 match self {
                     $($( SceneParams::$scene(_) => <$chapter::$module::Params as Scene>::CENSORED, )*)*
+                }
+            }
+
+            /// What the audit finds that is the scene's physics (see [`Scene::DECLARED`]).
+            pub fn declared(&self) -> &'static [Declared] {
+                match self {
+                    $($( SceneParams::$scene(_) => <$chapter::$module::Params as Scene>::DECLARED, )*)*
                 }
             }
 

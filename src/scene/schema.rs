@@ -8,7 +8,7 @@
 //! reference, links, sweeps and Python read.
 
 pub use super::controls::{Control, ControlKind};
-pub use super::spec::{Choice, ChoiceField, ParamError, Spec, SpecKind, Value, check_material, unknown_option};
+pub use super::spec::{Choice, ChoiceField, ParamError, Spec, SpecKind, Value, check_material, short, unknown_option};
 pub use grainscope_derive::{Choice, ParamSet};
 
 use crate::physics::material::Material;

@@ -183,6 +183,9 @@ pub struct Spec {
     pub default: Option<Value>,
     /// Changing it only restyles the output.
     pub style_only: bool,
+    /// It sets only what a figure shows (an axis range, a curve's
+    /// resolution, an overlay): no scalar depends on it.
+    pub figure_only: bool,
     /// Kind and valid values.
     pub kind: SpecKind,
 }

@@ -68,7 +68,7 @@ pub struct BatchParams {
     #[param(label = "settling in Δv", default = false)]
     pub settling: bool,
     /// initial radius of the first batch
-    #[param(label = "innermost batch", unit = "AU", range(1.1, 100.0), log, default = 3.0)]
+    #[param(below = r_out_au, label = "innermost batch", unit = "AU", range(1.1, 100.0), log, default = 3.0)]
     pub r_in_au: f64,
     /// initial radius of the last batch
     #[param(label = "outermost batch", unit = "AU", range(2.0, 1000.0), log, default = 200.0)]

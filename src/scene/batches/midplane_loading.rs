@@ -15,13 +15,13 @@ use serde::{Deserialize, Serialize};
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// first metallicity of settled particles
-    #[param(label = "smallest Z* / solar", range(0.1, 20.0), log, default = 0.5)]
+    #[param(figure_only, label = "smallest Z* / solar", range(0.1, 20.0), log, default = 0.5)]
     pub z_min_solar: f64,
     /// last metallicity
-    #[param(label = "largest Z* / solar", range(0.1, 20.0), log, default = 5.0)]
+    #[param(figure_only, label = "largest Z* / solar", range(0.1, 20.0), log, default = 5.0)]
     pub z_max_solar: f64,
     /// log-spaced
-    #[param(label = "metallicities", range(1.0, 8.0), default = 4)]
+    #[param(figure_only, label = "metallicities", range(1.0, 8.0), default = 4)]
     pub n_z: usize,
     /// mass of the three disks
     #[param(quantity = quantities::disk_mass, default = 0.01)]

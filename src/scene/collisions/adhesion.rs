@@ -6,7 +6,9 @@ use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::contact::Pair;
 use crate::physics::material::combined_surface_energy;
 use crate::physics::material::{Material, combined_modulus};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
@@ -84,6 +86,13 @@ n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energ
     5E_roll, n_cE_roll, n_cE_break and 10n_cE_break.",
         heavy: false,
     };
+
+    const DECLARED: &'static [Declared] = &[Declared {
+        scalar: "*",
+        parameter: "contacts",
+        kind: Irregularity::Ignored,
+        why: "n_c sets the aggregates' energy drawn against velocity; the scalars are per monomer contact",
+    }];
 
     fn material_changed(&mut self) {
         self.surface_energy = combined_surface_energy(&self.material, &self.material);

@@ -8,7 +8,8 @@ use crate::physics::collision::{Options, Outcome, collide};
 use crate::physics::contact::e_independent;
 use crate::physics::plasticity;
 use crate::scene::core::{
-    Censored, Context, Cursor, Extra, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Trajectory,
+    Censored, Context, Cursor, Declared, Extra, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput,
+    Trajectory,
 };
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
@@ -52,6 +53,49 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
 
     const CENSORED: &'static [Censored] =
         &[Censored { key: "t_c", above: None, undefined: Some("the spheres stick: the contact never ends") }];
+
+    const DECLARED: &'static [Declared] = &[
+        Declared {
+            scalar: "*",
+            parameter: "rtol",
+            kind: Irregularity::Step,
+            why: "the integrator's tolerance: results move by about its size, in steps where the sequence of steps changes",
+        },
+        Declared {
+            scalar: "sticks",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "a threshold: the spheres stick below v_stick and bounce above it",
+        },
+        Declared {
+            scalar: "steps",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "a diagnostic, the integrator's accepted steps: whole numbers, and a longer run where the contact never breaks",
+        },
+        Declared {
+            scalar: "energy_error",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "a diagnostic at the level of the tolerance rtol (below 10⁻⁴ of the energy), not a result",
+        },
+        Declared {
+            scalar: "crack_fraction",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "sticking has two regimes: where the contact breaks but the spheres cannot escape, the run and its \
+                  losses end at the break; where it never breaks, the run follows the spiral into equilibrium, which \
+                  dissipates the rest",
+        },
+        Declared {
+            scalar: "bulk_fraction",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "sticking has two regimes: where the contact breaks but the spheres cannot escape, the run and its \
+                  losses end at the break; where it never breaks, the run follows the spiral into equilibrium, which \
+                  dissipates the rest",
+        },
+    ];
 
     fn material_changed(&mut self) {
         self.collision.material_changed();

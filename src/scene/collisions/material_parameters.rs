@@ -15,10 +15,10 @@ use serde::{Deserialize, Serialize};
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// steel, R = 3.18 mm, v_y = 0.3 m/s
-    #[param(label = "Lifshitz & Kolsky point", default = true)]
+    #[param(figure_only, label = "Lifshitz & Kolsky point", default = true)]
     pub lifshitz_kolsky: bool,
     /// Y ~ l^{-1/2} and Y ~ l^{-1}
-    #[param(label = "power-law guides", default = true)]
+    #[param(figure_only, label = "power-law guides", default = true)]
     pub guides: bool,
 }
 
@@ -128,9 +128,9 @@ time t_H (2.22; E* = 10 GPa, ρ = 2 g/cm³, v = 10 m/s) and grow with the reduce
                 ));
         }
         let mut lk = None;
-        if p.lifshitz_kolsky
-            && let Some(steel) = Material::named("stainless steel")
-        {
+        // The point is computed whether or not it is drawn: its scalar is
+        // the scene's with either setting.
+        if let Some(steel) = Material::named("stainless steel") {
             // Equal steel spheres of radius 3.18 mm that yield at 0.3 m/s: invert (2.28).
             let r: f64 = 3.18e-3;
             let m = crate::physics::sphere_mass(steel.density, r);
@@ -140,12 +140,14 @@ time t_H (2.22; E* = 10 GPa, ρ = 2 g/cm³, v = 10 m/s) and grow with the reduce
             let p_y = (v_y * v_y * pair.mass * pair.modulus.powi(4) / (10.2 * pair.radius.powi(3))).powf(0.2);
             let y_lk = p_y / 1.6;
             let l_lk = (15.0 * pair.mass * v_y * v_y * pair.radius.powi(2) / (16.0 * pair.modulus)).powf(0.2);
-            fig_l = fig_l.with(Series::new(
-                "Lifshitz & Kolsky (1964)",
-                vec![[l_lk * 1e6, y_lk / steel.youngs_modulus]],
-                Style::Symbol(Shape::Square, Fill::Filled),
-                0,
-            ));
+            if p.lifshitz_kolsky {
+                fig_l = fig_l.with(Series::new(
+                    "Lifshitz & Kolsky (1964)",
+                    vec![[l_lk * 1e6, y_lk / steel.youngs_modulus]],
+                    Style::Symbol(Shape::Square, Fill::Filled),
+                    0,
+                ));
+            }
             lk = Some(y_lk);
         }
 

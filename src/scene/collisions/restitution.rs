@@ -12,7 +12,9 @@ use crate::physics::contact::e_independent;
 use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::plasticity;
 use crate::scene::controls::{LogRange, ParamError};
-use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Censored, Context, Declared, Irregularity, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::schema::ParamSet;
 use crate::solver::sampling::{Refined, interpolate, refine};
 use rayon::prelude::*;
@@ -33,25 +35,57 @@ pub struct Params {
     #[param(label = "highest velocity", unit = "m s^-1", shown("m/s", 1.0), range(1e-3, 1e3), log, default = 100.0)]
     pub v_max: f64,
     /// points of e(v)
-    #[param(label = "velocities", range(2.0, 2000.0), default = 200)]
+    #[param(figure_only, label = "velocities", range(2.0, 2000.0), default = 200)]
     pub n_velocities: usize,
     /// start of e(R), v_s(R)
-    #[param(label = "smallest reduced radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-7)]
+    #[param(
+        figure_only,
+        label = "smallest reduced radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 1e-7
+    )]
     pub r_min: f64,
     /// end of e(R), v_s(R)
-    #[param(label = "largest reduced radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-4)]
+    #[param(
+        figure_only,
+        label = "largest reduced radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 1e-4
+    )]
     pub r_max: f64,
     /// points of e(R) and v_s(R)
-    #[param(label = "radii", range(2.0, 200.0), default = 48)]
+    #[param(figure_only, label = "radii", range(2.0, 200.0), default = 48)]
     pub n_radii: usize,
     /// first v_s(R) curve
-    #[param(label = "smallest T_vis", unit = "s", shown("s", 1.0), range(1e-15, 1e-8), log, default = 1e-13)]
+    #[param(
+        figure_only,
+        label = "smallest T_vis",
+        unit = "s",
+        shown("s", 1.0),
+        range(1e-15, 1e-8),
+        log,
+        default = 1e-13
+    )]
     pub t_vis_min: f64,
     /// last v_s(R) curve
-    #[param(label = "largest T_vis", unit = "s", shown("s", 1.0), range(1e-15, 1e-8), log, default = 1e-10)]
+    #[param(
+        figure_only,
+        label = "largest T_vis",
+        unit = "s",
+        shown("s", 1.0),
+        range(1e-15, 1e-8),
+        log,
+        default = 1e-10
+    )]
     pub t_vis_max: f64,
     /// curves of v_s(R)
-    #[param(label = "T_vis curves", range(1.0, 8.0), default = 4)]
+    #[param(figure_only, label = "T_vis curves", range(1.0, 8.0), default = 4)]
     pub n_t_vis: usize,
 }
 
@@ -144,6 +178,13 @@ bounces to zero; viscosity at the crack raises it far above v_c for small grains
 e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the model.",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[Declared {
+        scalar: "*",
+        parameter: "velocity",
+        kind: Irregularity::Ignored,
+        why: "the velocity fixes e(R), a figure; the scalars are thresholds of e(v) and do not depend on it",
+    }];
 
     const CENSORED: &'static [Censored] = &[
         Censored { key: "v_stick", above: Some((1e4, "no collision bounces up to 10⁴ m/s")), undefined: None },

@@ -14,19 +14,19 @@ use serde::{Deserialize, Serialize};
 #[serde(default, deny_unknown_fields)]
 pub struct Params {
     /// dotted curves
-    #[param(label = "low efficiency η", range(1e-6, 1.0), log, default = 1e-3)]
+    #[param(figure_only, label = "low efficiency η", range(1e-6, 1.0), log, default = 1e-3)]
     pub eta_low: f64,
     /// dashed curves
     #[param(label = "high efficiency η", range(1e-6, 1.0), log, default = 1.0)]
     pub eta_high: f64,
     /// start of the size axis
-    #[param(label = "smallest size", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
+    #[param(figure_only, label = "smallest size", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
     pub s_min: f64,
     /// end of the size axis
-    #[param(label = "largest size", unit = "m", range(1e-9, 1e7), log, default = 1e5)]
+    #[param(figure_only, label = "largest size", unit = "m", range(1e-9, 1e7), log, default = 1e5)]
     pub s_max: f64,
     /// Benz & Asphaug (1999), 3 km/s
-    #[param(label = "disruption fits", default = true)]
+    #[param(figure_only, label = "disruption fits", default = true)]
     pub disruption_fits: bool,
 }
 

@@ -45,10 +45,10 @@ pub struct Params {
     #[param(label = "luminosity L", unit = "L_sun", range(1e-3, 1e3), log, default = 1.0)]
     pub luminosity: f64,
     /// the printed prefactor 2.4
-    #[param(label = "printed (6.8)", default = true)]
+    #[param(figure_only, label = "printed (6.8)", default = true)]
     pub show_printed: bool,
     /// Fomalhaut, HD 105, cold disks
-    #[param(label = "observed systems", default = true)]
+    #[param(figure_only, label = "observed systems", default = true)]
     pub systems: bool,
 }
 

@@ -5,7 +5,7 @@ use super::common::{FragmentParams, materials};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::debris::{smallest_fragment, splitting_limit};
 use crate::scene::controls::LogRange;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
@@ -17,13 +17,13 @@ pub struct Params {
     #[param(flatten)]
     pub collision: FragmentParams,
     /// start of the collider-size axis
-    #[param(label = "smallest collider", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
+    #[param(figure_only, label = "smallest collider", unit = "m", range(1e-9, 1e6), log, default = 1e-6)]
     pub s0_min: f64,
     /// end of the collider-size axis
-    #[param(label = "largest collider", unit = "m", range(1e-9, 1e6), log, default = 1e4)]
+    #[param(figure_only, label = "largest collider", unit = "m", range(1e-9, 1e6), log, default = 1e4)]
     pub s0_max: f64,
     /// bodies above this are held by gravity
-    #[param(label = "self-gravity size", unit = "m", range(1.0, 1e5), log, default = 100.0)]
+    #[param(figure_only, label = "self-gravity size", unit = "m", range(1.0, 1e5), log, default = 100.0)]
     pub gravity_size: f64,
 }
 
@@ -60,6 +60,12 @@ split the colliders, s_min ≈ 5γ/(ηρv²) (6.6, dotted), close to the smalles
 holds bodies together (shaded in the thesis, drawn here as limit lines).",
         heavy: false,
     };
+
+    const CENSORED: &'static [Censored] = &[Censored {
+        key: "collider_for_1um_silicate",
+        above: Some((1e9, "no collider up to 10⁹ m makes silicate fragments as small as 1 µm")),
+        undefined: None,
+    }];
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
@@ -107,14 +113,13 @@ holds bodies together (shaded in the thesis, drawn here as limit lines).",
                 6,
             ))
             .with(Series::new("self-gravity", vec![[p.gravity_size, 1e-12], [p.gravity_size, 1e6]], Style::Dashed, 6));
-        if let Some(s0) = collider_for(c, 0, 1e-6) {
-            scalars.push(Scalar {
-                key: "collider_for_1um_silicate",
-                label: "collider making 1 µm silicate fragments",
-                value: s0,
-                unit: "m",
-            });
-        }
+        scalars.push(Scalar {
+            key: "collider_for_1um_silicate",
+            label: "collider making 1 µm silicate fragments",
+            // None: not even the largest collider searched (10⁹ m) makes them.
+            value: collider_for(c, 0, 1e-6).unwrap_or(f64::INFINITY),
+            unit: "m",
+        });
         Ok(SceneOutput {
             warnings: Vec::new(),
             scalars,

@@ -17,10 +17,10 @@ pub struct Params {
     #[param(label = "smallest κ", range(0.01, 100.0), log, default = 1.0)]
     pub kappa_min: f64,
     /// eroded mass / projectile mass
-    #[param(label = "largest κ", range(0.01, 100.0), log, default = 10.0)]
+    #[param(figure_only, label = "largest κ", range(0.01, 100.0), log, default = 10.0)]
     pub kappa_max: f64,
     /// curves of the erosion family
-    #[param(label = "κ curves", range(1.0, 6.0), default = 3)]
+    #[param(figure_only, label = "κ curves", range(1.0, 6.0), default = 3)]
     pub n_kappa: usize,
 }
 
@@ -34,6 +34,35 @@ pub fn normalised_catastrophic(x: f64) -> f64 {
 /// s_min/s_min(equal) in the erosive regime: (κ/4)².
 pub fn normalised_erosion(kappa: f64) -> f64 {
     (kappa / 4.0).powi(2)
+}
+
+/// The mass ratio in `[lo, hi]` whose catastrophic s_min is smallest, and
+/// that s_min normalised: golden-section search in ln(ratio) to 10⁻¹²
+/// (the normalised s_min falls with the ratio up to its minimum, then rises,
+/// so the search converges to the minimum or to the end `hi` before it).
+pub fn best_catastrophic(lo: f64, hi: f64) -> (f64, f64) {
+    let f = |u: f64| normalised_catastrophic(u.exp().cbrt());
+    let g = 0.5 * (5f64.sqrt() - 1.0);
+    let (mut a, mut b) = (lo.ln(), hi.ln());
+    let (mut c, mut d) = (b - g * (b - a), a + g * (b - a));
+    let (mut fc, mut fd) = (f(c), f(d));
+    while b - a > 1e-12 {
+        if fc < fd {
+            (b, d, fd) = (d, c, fc);
+            c = b - g * (b - a);
+            fc = f(c);
+        } else {
+            (a, c, fc) = (c, d, fd);
+            d = a + g * (b - a);
+            fd = f(d);
+        }
+    }
+    // The ends, where the minimum lies outside.
+    [(a + b) / 2.0, hi.ln(), lo.ln()]
+        .into_iter()
+        .map(|u| (u.exp(), f(u)))
+        .min_by(|x, y| x.1.total_cmp(&y.1))
+        .unwrap_or((1.0, 1.0))
 }
 
 impl Scene for Params {
@@ -84,12 +113,7 @@ catastrophic collisions; in the erosive regime the value depends on κ alone (κ
                 1 + i,
             ));
         }
-        let (best_ratio, best) = ratios
-            .iter()
-            .filter(|&&r| r <= p.erosive_ratio)
-            .map(|&r| (r, normalised_catastrophic(x_of(r))))
-            .min_by(|a, b| a.1.total_cmp(&b.1))
-            .unwrap_or((1.0, 1.0));
+        let (best_ratio, best) = best_catastrophic(ratios[0], p.erosive_ratio.max(ratios[0]));
         let scalars = vec![
             crate::scene::core::Scalar {
                 key: "best_mass_ratio",

@@ -3,8 +3,10 @@
 
 use super::common::TrackParams;
 use crate::figure::{Axis, Figure, Fill, Series, Shape, Style};
-use crate::physics::growth::{Porosity, Track};
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::physics::growth::{Porosity, Stop, Track};
+use crate::scene::core::{
+    Censored, Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput,
+};
 
 /// The scene's parameters: the disk, the growth model and the radius of the track.
 pub type Params = TrackParams;
@@ -24,6 +26,51 @@ the three. Markers: a = λ_mfp, t_s = t_η, Ωt_s = α, Ωt_s = 1 (open in the t
 collisional, gas and self-gravity compaction. Local growth at fixed R (no drift), perfect sticking.",
         heavy: false,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored {
+            key: "mass_st1",
+            above: None,
+            undefined: Some("the track ends before Ωt_s = 1 (growth halted, or the time limit)"),
+        },
+        Censored {
+            key: "mass_gravity",
+            above: None,
+            undefined: Some("self-gravity never sets the filling factor along the track"),
+        },
+        Censored {
+            key: "phi_final",
+            above: None,
+            undefined: Some("the track does not reach the planetesimal mass (growth halted, or the time limit)"),
+        },
+        Censored {
+            key: "time_final",
+            above: None,
+            undefined: Some("the track does not reach the planetesimal mass (growth halted, or the time limit)"),
+        },
+    ];
+
+    const DECLARED: &'static [Declared] = &[
+        Declared {
+            scalar: "*",
+            parameter: "dlnm",
+            kind: Irregularity::Step,
+            why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
+                  where the track gains or loses a point",
+        },
+        Declared {
+            scalar: "phi_min_collisional",
+            parameter: "v_frag",
+            kind: Irregularity::Step,
+            why: "a threshold: below it growth halts at the fragmentation barrier, before φ reaches its lowest value",
+        },
+        Declared {
+            scalar: "phi_min_collisional",
+            parameter: "v_eros",
+            kind: Irregularity::Step,
+            why: "a threshold: below it growth halts at the erosion barrier, before φ reaches its lowest value",
+        },
+    ];
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
@@ -75,31 +122,33 @@ collisional, gas and self-gravity compaction. Local growth at fixed R (no drift)
             value: phi_min_coll,
             unit: "",
         });
-        if let Some([m, _]) = full.markers.stokes_one {
-            scalars.push(Scalar { key: "mass_st1", label: "mass at Ωt_s = 1 (full)", value: m, unit: "kg" });
-        }
-        if let Some([m, _]) = full.markers.gravity {
-            scalars.push(Scalar {
-                key: "mass_gravity",
-                label: "mass at first self-gravity compaction",
-                value: m,
-                unit: "kg",
-            });
-        }
-        if let Some(last) = full.points.last() {
-            scalars.push(Scalar {
-                key: "phi_final",
-                label: "φ at the planetesimal mass (full)",
-                value: last.filling,
-                unit: "",
-            });
-            scalars.push(Scalar {
-                key: "time_final",
-                label: "time to the planetesimal mass (full)",
-                value: last.t,
-                unit: "s",
-            });
-        }
+        let mass = |at: Option<[f64; 2]>| at.map_or(f64::NAN, |[m, _]| m);
+        scalars.push(Scalar {
+            key: "mass_st1",
+            label: "mass at Ωt_s = 1 (full)",
+            value: mass(full.markers.stokes_one),
+            unit: "kg",
+        });
+        scalars.push(Scalar {
+            key: "mass_gravity",
+            label: "mass at first self-gravity compaction",
+            value: mass(full.markers.gravity),
+            unit: "kg",
+        });
+        // Values at the planetesimal mass exist only where the track reaches it.
+        let end = full.points.last().filter(|_| full.stop == Stop::Planetesimal);
+        scalars.push(Scalar {
+            key: "phi_final",
+            label: "φ at the planetesimal mass (full)",
+            value: end.map_or(f64::NAN, |q| q.filling),
+            unit: "",
+        });
+        scalars.push(Scalar {
+            key: "time_final",
+            label: "time to the planetesimal mass (full)",
+            value: end.map_or(f64::NAN, |q| q.t),
+            unit: "s",
+        });
         Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
     }
 }

@@ -5,7 +5,9 @@ use super::common::DiskParams;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::{Aggregate, DragRegime, stopping_time};
 use crate::physics::constants::AU;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Censored, Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
@@ -31,6 +33,28 @@ pub struct Params {
     pub max_monomers: f64,
 }
 
+/// The drag regimes in the order a growing particle meets them: 0 Epstein,
+/// 1 Stokes, 2 intermediate, 3 Newton.
+fn regime_rank(regime: DragRegime) -> usize {
+    match regime {
+        DragRegime::Epstein => 0,
+        DragRegime::Stokes => 1,
+        DragRegime::Intermediate => 2,
+        DragRegime::Newton => 3,
+    }
+}
+
+/// The mass in `[lo, hi]` where `past` turns true (false at `lo`, true at
+/// `hi`), by bisection in ln m to 10⁻¹² relative.
+fn boundary(lo: f64, hi: f64, past: impl Fn(f64) -> bool) -> f64 {
+    let (mut a, mut b) = (lo.ln(), hi.ln());
+    while b - a > 1e-12 {
+        let m = 0.5 * (a + b);
+        if past(m.exp()) { b = m } else { a = m }
+    }
+    b.exp()
+}
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "stokes-number",
@@ -46,6 +70,44 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
 πa² for solid grains, about a third of it for hit-and-stick aggregates of 10⁴ monomers.",
         heavy: false,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored {
+            key: "compact_st1",
+            above: None,
+            undefined: Some("compact grains stay below Ωt_s = 1 up to the end of the mass axis"),
+        },
+        Censored {
+            key: "fractal_stokes_onset",
+            above: None,
+            undefined: Some("the fractal family stays in Epstein drag up to the end of the mass axis"),
+        },
+        Censored {
+            key: "fractal_re_one",
+            above: None,
+            undefined: Some("the fractal family stays below Re_p = 1 up to the end of the mass axis"),
+        },
+        Censored {
+            key: "fractal_newton",
+            above: None,
+            undefined: Some("the fractal family does not reach Newton drag up to the end of the mass axis"),
+        },
+    ];
+
+    const DECLARED: &'static [Declared] = &[
+        Declared {
+            scalar: "newton_iterations",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "a diagnostic, a whole number of iterations",
+        },
+        Declared {
+            scalar: "*",
+            parameter: "alpha",
+            kind: Irregularity::Ignored,
+            why: "α draws only the line Ωt_s = α: stopping times and drag regimes do not depend on it",
+        },
+    ];
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
@@ -80,26 +142,32 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
             let filling = |n: f64| filling_of(k, n);
             let mut full = Vec::new();
             let mut no_newton = Vec::new();
-            let mut first = [None::<f64>; 3];
-            for &n in &ns {
+            // The first grid index of each regime (Stokes, intermediate, Newton).
+            let mut first = [None::<usize>; 3];
+            for (j, &n) in ns.iter().enumerate() {
                 let agg = Aggregate { mass: n * m0, filling: filling(n) };
                 let s = stopping_time(&env, &mono, &agg, true);
                 worst_iterations = worst_iterations.max(s.iterations);
                 let st = s.time * env.omega;
                 full.push([n, st]);
                 no_newton.push([n, stopping_time(&env, &mono, &agg, false).time * env.omega]);
-                let slot = match s.regime {
-                    DragRegime::Stokes => Some(0),
-                    DragRegime::Intermediate => Some(1),
-                    DragRegime::Newton => Some(2),
-                    DragRegime::Epstein => None,
-                };
-                if let Some(i) = slot
-                    && first[i].is_none()
-                {
-                    first[i] = Some(n);
+                let rank = regime_rank(s.regime);
+                for (i, slot) in first.iter_mut().enumerate() {
+                    if slot.is_none() && rank == i + 1 {
+                        *slot = Some(j);
+                    }
                 }
             }
+            // A boundary between grid points, found by bisection in ln m (to
+            // 10⁻¹² relative), so that it does not depend on the grid.
+            let regime_at = |n: f64| {
+                let agg = Aggregate { mass: n * m0, filling: filling(n) };
+                regime_rank(stopping_time(&env, &mono, &agg, true).regime)
+            };
+            let st_at = |n: f64| {
+                let agg = Aggregate { mass: n * m0, filling: filling(n) };
+                stopping_time(&env, &mono, &agg, true).time * env.omega
+            };
             if k == 2 {
                 let keys = ["fractal_stokes_onset", "fractal_re_one", "fractal_newton"];
                 let labels = [
@@ -108,15 +176,21 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
                     "D_f family: C_D = 0.44 from m/m₀",
                 ];
                 for i in 0..3 {
-                    if let Some(n) = first[i] {
-                        scalars.push(Scalar { key: keys[i], label: labels[i], value: n, unit: "" });
-                    }
+                    let value = match first[i] {
+                        Some(0) => ns[0],
+                        Some(j) => boundary(ns[j - 1], ns[j], |n| regime_at(n) > i),
+                        None => f64::NAN,
+                    };
+                    scalars.push(Scalar { key: keys[i], label: labels[i], value, unit: "" });
                 }
             }
-            if k == 0
-                && let Some(&[n, _]) = full.iter().find(|q| q[1] >= 1.0)
-            {
-                scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value: n, unit: "" });
+            if k == 0 {
+                let value = match full.iter().position(|q| q[1] >= 1.0) {
+                    Some(0) => ns[0],
+                    Some(j) => boundary(ns[j - 1], ns[j], |n| st_at(n) >= 1.0),
+                    None => f64::NAN,
+                };
+                scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value, unit: "" });
             }
             fig = fig.with(Series::new(name.clone(), full, Style::Line, colours[k])).with(Series::new(
                 format!("{name}, Epstein + Stokes only"),

@@ -5,7 +5,7 @@ use super::common::TrackParams;
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::YEAR;
 use crate::physics::growth::Porosity;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
@@ -34,6 +34,14 @@ holds t_grow fixed, as Sect. 4.5 does); beyond t_s = t_η growth speeds up again
 t_grow << t_drift and outgrow the drift barrier. The dotted line is t_drift/30.",
         heavy: false,
     };
+
+    const DECLARED: &'static [Declared] = &[Declared {
+        scalar: "*",
+        parameter: "dlnm",
+        kind: Irregularity::Step,
+        why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
+              where the track gains or loses a point",
+    }];
 
     /// Computes the scene.
     fn compute(&self, _ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {

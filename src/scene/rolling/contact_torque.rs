@@ -20,7 +20,7 @@ pub struct Params {
     #[param(label = "asymmetry ξ/a", range(0.0, 0.5), default = 0.1)]
     pub xi_over_a: f64,
     /// resolution of the maps
-    #[param(label = "map cells", range(11.0, 301.0), default = 81)]
+    #[param(figure_only, label = "map cells", range(11.0, 301.0), default = 81)]
     pub cells: usize,
 }
 

@@ -18,22 +18,38 @@ pub struct Params {
     #[param(flatten, except("radius"), default = RollingParams::of("PSL", "silicon", true, 12e-6, 0.1))]
     pub contact: RollingParams,
     /// smallest sphere radius
-    #[param(label = "smallest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-6)]
+    #[param(
+        figure_only,
+        label = "smallest radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 1e-6
+    )]
     pub r_min: f64,
     /// largest sphere radius
-    #[param(label = "largest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-4)]
+    #[param(
+        figure_only,
+        label = "largest radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 1e-4
+    )]
     pub r_max: f64,
     /// first curve of the family
-    #[param(label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 1.0)]
+    #[param(figure_only, label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 1.0)]
     pub h_min: f64,
     /// last curve of the family
-    #[param(label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 4.0)]
+    #[param(figure_only, label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 4.0)]
     pub h_max: f64,
     /// curves in the family
-    #[param(label = "Δγ/γ curves", range(1, 8), default = 3)]
+    #[param(figure_only, label = "Δγ/γ curves", range(1, 8), default = 3)]
     pub n_h: usize,
     /// 73–94 nm at 22.5–26.8 µm diameter
-    #[param(label = "Ding et al. range", default = true)]
+    #[param(figure_only, label = "Ding et al. range", default = true)]
     pub ding_data: bool,
 }
 

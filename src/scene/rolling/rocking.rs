@@ -5,7 +5,7 @@
 use super::common::RollingParams;
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::rolling::{Rocking as RockingModel, RockingSample, critical_displacement, small_asymmetry_torque};
-use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
@@ -77,6 +77,19 @@ stops and pins again. The bulk loss is a linear damping that makes the rocking e
 Q/π periods (3.25): Peri & Cetinkaya's rocking dies out in ~10 periods, Q ~ 30.",
         heavy: false,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored {
+            key: "f_measured",
+            above: None,
+            undefined: Some("too few upward zero crossings of ξ while pinned to measure a frequency"),
+        },
+        Censored {
+            key: "efold_periods",
+            above: None,
+            undefined: Some("longer than the run: the energy stays above E(0)/e for the whole duration"),
+        },
+    ];
 
     fn material_changed(&mut self) {
         self.contact.material_changed();
@@ -171,17 +184,18 @@ Q/π periods (3.25): Peri & Cetinkaya's rocking dies out in ~10 periods, Q ~ 30.
                 unit: "deg",
             },
         ];
-        if let Some(f) = measured_frequency(&samples) {
-            scalars.push(Scalar {
-                key: "f_measured",
-                label: "measured frequency (zero crossings)",
-                value: f,
-                unit: "Hz",
-            });
-        }
-        if let Some(n) = efold {
-            scalars.push(Scalar { key: "efold_periods", label: "periods until E < E(0)/e", value: n, unit: "" });
-        }
+        scalars.push(Scalar {
+            key: "f_measured",
+            label: "measured frequency (zero crossings)",
+            value: measured_frequency(&samples).unwrap_or(f64::NAN),
+            unit: "Hz",
+        });
+        scalars.push(Scalar {
+            key: "efold_periods",
+            label: "periods until E < E(0)/e",
+            value: efold.unwrap_or(f64::NAN),
+            unit: "",
+        });
         let notes = vec![if rolled > 0.0 {
             format!("The kick pushed ξ past ξ_crit: the sphere rolled {:.1} nm before pinning again.", rolled * 1e9)
         } else {

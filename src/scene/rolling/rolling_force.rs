@@ -35,28 +35,52 @@ pub struct Params {
     #[param(flatten, except("radius"), default = RollingParams::of("silicate", "silicate", false, 0.95e-6, 0.05))]
     pub contact: RollingParams,
     /// smallest sphere radius
-    #[param(label = "smallest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 2e-7)]
+    #[param(
+        figure_only,
+        label = "smallest radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 2e-7
+    )]
     pub r_min: f64,
     /// largest sphere radius
-    #[param(label = "largest radius", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 2e-5)]
+    #[param(
+        figure_only,
+        label = "largest radius",
+        unit = "m",
+        shown("µm", 1e6),
+        range(1e-8, 1e-2),
+        log,
+        default = 2e-5
+    )]
     pub r_max: f64,
     /// first curve of the family
-    #[param(label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 0.25)]
+    #[param(figure_only, label = "smallest Δγ/γ", range(1e-3, 100.0), log, default = 0.25)]
     pub h_min: f64,
     /// last curve of the family
-    #[param(label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 3.0)]
+    #[param(figure_only, label = "largest Δγ/γ", range(1e-3, 100.0), log, default = 3.0)]
     pub h_max: f64,
     /// curves in the family
-    #[param(label = "Δγ/γ curves", range(1, 8), default = 4)]
+    #[param(figure_only, label = "Δγ/γ curves", range(1, 8), default = 4)]
     pub n_h: usize,
     /// ξ of the Dominik & Tielens line
-    #[param(label = "DT displacement ξ", unit = "m", shown("nm", 1e9), range(1e-11, 1e-8), log, default = 3e-10)]
+    #[param(
+        figure_only,
+        label = "DT displacement ξ",
+        unit = "m",
+        shown("nm", 1e9),
+        range(1e-11, 1e-8),
+        log,
+        default = 3e-10
+    )]
     pub xi_dt: f64,
     /// bulk loss line (3.22)
-    #[param(quantity = quantities::quality_factor, default = 100.0)]
+    #[param(figure_only, quantity = quantities::quality_factor, default = 100.0)]
     pub q: f64,
     /// Heim, Blum & Wurm, Gundlach
-    #[param(label = "silica measurements", default = true)]
+    #[param(figure_only, label = "silica measurements", default = true)]
     pub silica_data: bool,
 }
 
@@ -140,14 +164,14 @@ on glass (Sümer & Sitti 2008) the thesis infers Δγ/γ ≈ 3; their measured f
                     if inside { "inside the error bar" } else { "outside the error bar" }
                 ));
             }
-            let pair = c.pair(0.95e-6);
-            scalars.push(Scalar {
-                key: "force_1_9um_h05",
-                label: "F at d = 1.9 µm, Δγ/γ = 0.5",
-                value: rolling_force(&pair, rolling_torque(&pair, 0.5)),
-                unit: "N",
-            });
         }
+        let pair = c.pair(0.95e-6);
+        scalars.push(Scalar {
+            key: "force_1_9um_h05",
+            label: "F at d = 1.9 µm, Δγ/γ = 0.5",
+            value: rolling_force(&pair, rolling_torque(&pair, 0.5)),
+            unit: "N",
+        });
         let pair = c.pair(p.contact.radius);
         scalars.push(Scalar {
             key: "a_eq",

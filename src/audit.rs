@@ -1,0 +1,594 @@
+//! The continuity audit: does a scene answer everywhere a user can set it,
+//! and does every answer change smoothly where the physics is smooth?
+//!
+//! [`audit`] sweeps every parameter of a preset's scene over its documented
+//! range, one at a time around the preset's point: numbers on a grid
+//! (logarithmic where the control is), counts from their smallest value up
+//! to the preset's, every other option of a switch or a choice. For every
+//! scalar it reports
+//! - **errors**: the computation fails at a valid value;
+//! - **undefined** values: non-finite where the scene declares no meaning
+//!   ([`crate::scene::Scene::CENSORED`]);
+//! - **missing** values: reported at some values, absent at others;
+//! - **steps**: a change between grid neighbours that stands out from its
+//!   neighbours' changes (more than [`TREND`] times their median, and more
+//!   than [`RELEVANT`] of the value) and that stays as the interval is
+//!   bisected [`Options::refine`] times — a jump, not a steep slope;
+//! - **ignored** parameters: ones that change the figures but no scalar
+//!   (declared where the parameter's spec says `figure_only`: an axis
+//!   range, a curve's resolution, an overlay), and parameters so declared
+//!   that do move a scalar.
+//!
+//! A finding the scene declares as physics ([`crate::scene::Scene::DECLARED`]:
+//! a threshold such as sticking, a regime boundary, a parameter that only
+//! shapes a figure) is listed with its reason; any other fails the audit.
+//! A parameter that changes nothing at all here (e.g. a yield strength with
+//! plasticity off) is listed as inert.
+//!
+//! Scenes of random runs (Monte Carlo) change their random path with every
+//! parameter, so their scalars are noisy at every scale: a step there must
+//! also exceed [`NOISE`] times the spread of the scalar over independent
+//! seeds at the preset's point.
+
+use crate::scene::schema::Spec;
+use crate::scene::schema::{SpecKind, Value};
+use crate::scene::spec::short;
+use crate::scene::{self, Declared, Irregularity, Progress, SceneError, SceneParams};
+use rayon::prelude::*;
+use std::collections::{BTreeMap, BTreeSet};
+use std::hash::{Hash, Hasher};
+
+/// A change between grid neighbours is a step candidate when it exceeds this
+/// many times the median change of its neighbours.
+pub const TREND: f64 = 2.0;
+
+/// Changes below this fraction of the value are never steps (solver
+/// tolerances, rounding).
+pub const RELEVANT: f64 = 1e-3;
+
+/// A bisected change counts as a jump when it keeps at least this fraction
+/// of the grid change it came from (a smooth change halves with every
+/// bisection).
+pub const KEEPS: f64 = 0.5;
+
+/// For a scene of random runs: a step must also exceed this many standard
+/// deviations of the scalar over independent seeds.
+pub const NOISE: f64 = 4.0;
+
+/// Why an ignored parameter declared `figure_only` in its spec is no defect.
+pub const FIGURE_ONLY: &str = "it sets only what a figure shows (its spec says so)";
+
+/// How finely to look.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// Grid points along each numeric parameter's range.
+    pub points: usize,
+    /// Bisections of each step candidate's interval.
+    pub refine: usize,
+    /// Only these parameters (keys); every parameter when empty.
+    pub only: Vec<String>,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { points: 24, refine: 10, only: Vec::new() }
+    }
+}
+
+/// One finding of the audit.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Finding {
+    /// What was found.
+    pub kind: Irregularity,
+    /// The parameter along which it was found.
+    pub parameter: &'static str,
+    /// The scalar it concerns; empty for a finding about the parameter
+    /// itself (an error, an ignored parameter).
+    pub scalar: String,
+    /// Where: the parameter's values (SI), one value or a bracket.
+    pub at: Vec<f64>,
+    /// What was seen, in words and numbers.
+    pub detail: String,
+    /// The scene's reason, where it declares the finding as physics.
+    pub declared: Option<&'static str>,
+}
+
+/// The audit of one preset.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Report {
+    /// The scene's identifier.
+    pub scene: &'static str,
+    /// Parameters swept.
+    pub parameters: usize,
+    /// Computations made.
+    pub computations: usize,
+    /// Points the scene's own checks refused (a combination outside what
+    /// the scene accepts, e.g. a range end past the other end).
+    pub refused: usize,
+    /// Every finding, declared ones included.
+    pub findings: Vec<Finding>,
+    /// Parameters that change nothing at all at this point.
+    pub inert: Vec<&'static str>,
+}
+
+impl Report {
+    /// The findings the scene does not declare: what fails the audit.
+    pub fn failures(&self) -> impl Iterator<Item = &Finding> {
+        self.findings.iter().filter(|f| f.declared.is_none())
+    }
+
+    /// The report as text, a line per finding.
+    pub fn text(&self) -> String {
+        let mut s = format!(
+            "{}: {} parameters, {} computations, {} refused points\n",
+            self.scene, self.parameters, self.computations, self.refused
+        );
+        for f in &self.findings {
+            let what = if f.scalar.is_empty() {
+                f.parameter.to_string()
+            } else {
+                format!("{} along {}", f.scalar, f.parameter)
+            };
+            match f.declared {
+                None => s += &format!("  FAIL {:<9} {what}: {}\n", f.kind.word(), f.detail),
+                Some(why) => s += &format!("  ok   {:<9} {what}: {} (declared: {why})\n", f.kind.word(), f.detail),
+            }
+        }
+        if !self.inert.is_empty() {
+            s += &format!("  inert here: {}\n", self.inert.join(", "));
+        }
+        s
+    }
+}
+
+/// What one computation gave.
+#[derive(Debug, Clone)]
+enum Point {
+    /// The scene refused the combination.
+    Refused,
+    /// The computation failed.
+    Failed(String),
+    /// The scalars (key, value, unit) and a fingerprint of the figures.
+    Done { scalars: Vec<(&'static str, f64, &'static str)>, figures: u64 },
+}
+
+impl Point {
+    fn scalar(&self, key: &str) -> Option<f64> {
+        match self {
+            Point::Done { scalars, .. } => scalars.iter().find(|s| s.0 == key).map(|s| s.1),
+            _ => None,
+        }
+    }
+}
+
+/// A fingerprint of a scene's figures: every number they draw.
+fn fingerprint(figures: &[crate::figure::Figure]) -> u64 {
+    let mut h = std::collections::hash_map::DefaultHasher::new();
+    for f in figures {
+        f.id.hash(&mut h);
+        for s in &f.series {
+            s.points.len().hash(&mut h);
+            for p in &s.points {
+                p[0].to_bits().hash(&mut h);
+                p[1].to_bits().hash(&mut h);
+            }
+        }
+        if let Some(m) = &f.heatmap {
+            for v in m.x.iter().chain(&m.y).chain(&m.values) {
+                v.to_bits().hash(&mut h);
+            }
+        }
+    }
+    h.finish()
+}
+
+/// Computes `params`.
+fn compute(params: &SceneParams, progress: &Progress) -> Result<Point, SceneError> {
+    if params.validate().is_err() {
+        return Ok(Point::Refused);
+    }
+    match scene::compute(params, &progress.quiet_child()) {
+        Ok(out) => Ok(Point::Done {
+            scalars: out.scalars.iter().map(|s| (s.key, s.value, s.unit)).collect(),
+            figures: fingerprint(&out.figures),
+        }),
+        Err(SceneError::Cancelled) => Err(SceneError::Cancelled),
+        Err(SceneError::Param(_)) => Ok(Point::Refused),
+        Err(SceneError::Physics(e)) => Ok(Point::Failed(e.to_string())),
+    }
+}
+
+/// How a parameter is swept.
+#[derive(Debug, Clone)]
+enum Sweep {
+    /// A number over `[min, max]`, on a grid in `u` (ln x where `log`).
+    Number { log: bool },
+    /// A count: whole numbers.
+    Count,
+    /// A switch or a choice: its other options.
+    Options,
+}
+
+/// A parameter and the points along it.
+struct Line {
+    key: &'static str,
+    spec: &'static Spec,
+    sweep: Sweep,
+    /// Grid coordinate (for numbers: x or ln x), the value set, the result.
+    points: Vec<(f64, Value, Point)>,
+}
+
+/// `base` with parameter `key` set to `value`, or None where it is refused.
+fn with(base: &SceneParams, key: &str, value: &Value) -> Option<SceneParams> {
+    let mut p = base.clone();
+    p.set_value(key, value).ok().map(|_| p)
+}
+
+/// A parameter, how it is swept, and its grid: (u, value) per point.
+type Planned = (&'static Spec, Sweep, Vec<(f64, Value)>);
+
+/// A confirmed step: the candidate and its narrowed bracket, (u, y) at each end.
+type Bracket = (Candidate, (f64, f64), (f64, f64));
+
+/// The values along each parameter of `base`: (key, sweep, [(u, value)]).
+fn plan(base: &SceneParams, options: &Options) -> Vec<Planned> {
+    let n = options.points.max(3);
+    base.specs()
+        .iter()
+        .filter(|s| !s.style_only)
+        .filter(|s| options.only.is_empty() || options.only.iter().any(|k| k == s.key))
+        .filter_map(|s| {
+            let here = base.get(s.key)?;
+            match (&s.kind, here) {
+                (SpecKind::Number { min, max, log, .. }, Value::Number(_)) => {
+                    let (a, b) = if *log { (min.ln(), max.ln()) } else { (*min, *max) };
+                    if !(a.is_finite() && b.is_finite() && b > a) {
+                        return None;
+                    }
+                    let values = (0..n)
+                        .map(|i| {
+                            let u = a + (b - a) * i as f64 / (n - 1) as f64;
+                            let x = if *log { u.exp() } else { u };
+                            (u, Value::Number(x.clamp(*min, *max)))
+                        })
+                        .collect();
+                    Some((s, Sweep::Number { log: *log }, values))
+                }
+                (SpecKind::Count { min, max }, Value::Count(here)) => {
+                    // From the smallest count up to the preset's (no dearer
+                    // than the preset), or a few above the smallest.
+                    let top = if here > *min { here } else { (*min * 4).max(*min + 3).min(*max) };
+                    let mut counts: BTreeSet<usize> = BTreeSet::new();
+                    for i in 0..6 {
+                        let f = i as f64 / 5.0;
+                        let c = (*min.max(&1) as f64).powf(1.0 - f) * (top as f64).powf(f);
+                        counts.insert((c.round() as usize).clamp(*min, top));
+                    }
+                    counts.insert(*min);
+                    counts.remove(&here);
+                    Some((s, Sweep::Count, counts.into_iter().map(|c| (c as f64, Value::Count(c))).collect()))
+                }
+                (SpecKind::Toggle, Value::Toggle(on)) => Some((s, Sweep::Options, vec![(0.0, Value::Toggle(!on))])),
+                (SpecKind::Choice { options }, Value::Text(here)) => Some((
+                    s,
+                    Sweep::Options,
+                    options
+                        .iter()
+                        .filter(|(k, _)| *k != here)
+                        .enumerate()
+                        .map(|(i, (k, _))| (i as f64, Value::Text(k.to_string())))
+                        .collect(),
+                )),
+                _ => None,
+            }
+        })
+        .collect()
+}
+
+/// Audits the scene of `base` (see the module's documentation).
+pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Result<Report, SceneError> {
+    base.validate()?;
+    if let Some(k) = options.only.iter().find(|k| base.spec(k).is_none()) {
+        return Err(crate::scene::ParamError::unknown(k, &base.keys()).into());
+    }
+    let declared = base.declared();
+    let censored = base.censored();
+    let here = compute(base, progress)?;
+    let base_keys: Vec<&'static str> = match &here {
+        Point::Done { scalars, .. } => scalars.iter().map(|s| s.0).collect(),
+        Point::Failed(e) => {
+            return Err(SceneError::Physics(crate::physics::PhysicsError::Invalid(format!(
+                "the preset's own point fails: {e}"
+            ))));
+        }
+        Point::Refused => return Err(SceneError::Cancelled),
+    };
+    let noise = spread(base, &base_keys, progress)?;
+
+    // Every point of every line, computed in parallel.
+    let planned = plan(base, options);
+    let flat: Vec<(usize, f64, Value)> = planned
+        .iter()
+        .enumerate()
+        .flat_map(|(i, (_, _, values))| values.iter().map(move |(u, v)| (i, *u, v.clone())))
+        .collect();
+    let done: Vec<Point> = flat
+        .par_iter()
+        .map(|(i, _, v)| match with(base, planned[*i].0.key, v) {
+            Some(p) => compute(&p, progress),
+            None => Ok(Point::Refused),
+        })
+        .collect::<Result<_, _>>()?;
+    let mut lines: Vec<Line> = planned
+        .iter()
+        .map(|(spec, sweep, _)| Line { key: spec.key, spec, sweep: sweep.clone(), points: Vec::new() })
+        .collect();
+    for ((i, u, v), point) in flat.into_iter().zip(done) {
+        lines[i].points.push((u, v, point));
+    }
+
+    let mut report = Report {
+        scene: base.info().id,
+        parameters: lines.len(),
+        computations: 1 + lines.iter().map(|l| l.points.len()).sum::<usize>(),
+        refused: lines.iter().flat_map(|l| &l.points).filter(|p| matches!(p.2, Point::Refused)).count(),
+        findings: Vec::new(),
+        inert: Vec::new(),
+    };
+    let mut candidates = Vec::new();
+    for line in &lines {
+        let shown = |v: &Value| format!("{} = {}", line.key, line.spec.display(v));
+        let si = |v: &Value| match v {
+            Value::Number(x) => vec![*x],
+            Value::Count(c) => vec![*c as f64],
+            _ => Vec::new(),
+        };
+        let mut push = |kind, scalar: &str, at: Vec<f64>, detail: String| {
+            let d = Declared::find(declared, kind, if scalar.is_empty() { "*" } else { scalar }, line.key);
+            report.findings.push(Finding {
+                kind,
+                parameter: line.key,
+                scalar: scalar.to_string(),
+                at,
+                detail,
+                declared: d
+                    .map(|d| d.why)
+                    .or((kind == Irregularity::Ignored && line.spec.figure_only).then_some(FIGURE_ONLY)),
+            });
+        };
+
+        // Failures.
+        let failed: Vec<(&Value, &String)> = line
+            .points
+            .iter()
+            .filter_map(|(_, v, p)| if let Point::Failed(e) = p { Some((v, e)) } else { None })
+            .collect();
+        if let Some((v, e)) = failed.first() {
+            push(
+                Irregularity::Error,
+                "",
+                si(v),
+                format!("fails at {} of {} points, first at {}: {e}", failed.len(), line.points.len(), shown(v)),
+            );
+        }
+
+        // Missing and undefined values.
+        let mut keys: BTreeSet<&'static str> = base_keys.iter().copied().collect();
+        for (_, _, p) in &line.points {
+            if let Point::Done { scalars, .. } = p {
+                keys.extend(scalars.iter().map(|s| s.0));
+            }
+        }
+        let done: Vec<&(f64, Value, Point)> =
+            line.points.iter().filter(|(_, _, p)| matches!(p, Point::Done { .. })).collect();
+        for key in &keys {
+            let absent: Vec<&Value> = done.iter().filter(|(_, _, p)| p.scalar(key).is_none()).map(|t| &t.1).collect();
+            if let Some(v) = absent.first().filter(|_| absent.len() < done.len() || base_keys.contains(key)) {
+                push(
+                    Irregularity::Missing,
+                    key,
+                    si(v),
+                    format!("absent at {} of {} points, first at {}", absent.len(), done.len(), shown(v)),
+                );
+            }
+            let undefined: Vec<(&Value, f64)> = done
+                .iter()
+                .filter_map(|(_, v, p)| p.scalar(key).filter(|x| !meant(censored, key, *x)).map(|x| (v, x)))
+                .collect();
+            if let Some((v, x)) = undefined.first() {
+                push(
+                    Irregularity::Undefined,
+                    key,
+                    si(v),
+                    format!(
+                        "{x} at {} of {} points, first at {}, with no stated meaning",
+                        undefined.len(),
+                        done.len(),
+                        shown(v)
+                    ),
+                );
+            }
+        }
+
+        // Ignored and inert parameters.
+        // The preset's own point and every computed one.
+        let seen: Vec<&Point> = std::iter::once(&here).chain(done.iter().map(|t| &t.2)).collect();
+        let fingerprints: BTreeSet<u64> = seen
+            .iter()
+            .filter_map(|p| match p {
+                Point::Done { figures, .. } => Some(*figures),
+                _ => None,
+            })
+            .collect();
+        let scalars_move = keys.iter().any(|key| {
+            let xs: BTreeSet<u64> = seen
+                .iter()
+                .filter_map(|p| p.scalar(key))
+                .map(|x| if x.is_nan() { u64::MAX } else { x.to_bits() })
+                .collect();
+            xs.len() > 1
+        });
+        if line.spec.figure_only && scalars_move {
+            push(
+                Irregularity::Moves,
+                "",
+                Vec::new(),
+                "declared to set only what a figure shows, but a scalar moves with it".into(),
+            );
+        }
+        if !scalars_move && !done.is_empty() {
+            if fingerprints.len() > 1 {
+                push(Irregularity::Ignored, "", Vec::new(), "changes the figures but no scalar".into());
+            } else {
+                report.inert.push(line.key);
+            }
+        }
+
+        // Step candidates along numbers.
+        if let Sweep::Number { log, .. } = line.sweep {
+            for key in &keys {
+                let ys: Vec<Option<f64>> =
+                    line.points.iter().map(|(_, _, p)| p.scalar(key).filter(|x| x.is_finite())).collect();
+                let change = |i: usize| -> Option<f64> {
+                    let (a, b) = (ys.get(i).copied()??, ys.get(i + 1).copied()??);
+                    let scale = a.abs().max(b.abs());
+                    Some(if scale > 0.0 { (b - a).abs() / scale } else { 0.0 })
+                };
+                for i in 0..ys.len().saturating_sub(1) {
+                    let Some(d) = change(i) else { continue };
+                    let mut around: Vec<f64> = [i.wrapping_sub(2), i.wrapping_sub(1), i + 1, i + 2]
+                        .iter()
+                        .filter_map(|&j| change(j))
+                        .collect();
+                    around.sort_by(f64::total_cmp);
+                    let trend = if around.is_empty() { 0.0 } else { around[around.len() / 2] };
+                    let (ya, yb) = (ys[i].unwrap_or(0.0), ys[i + 1].unwrap_or(0.0));
+                    let sd = noise.get(*key).copied().unwrap_or(0.0);
+                    if d > RELEVANT && d > TREND * trend && (yb - ya).abs() > NOISE * sd {
+                        candidates.push(Candidate {
+                            line: line.key,
+                            scalar: key,
+                            log,
+                            a: (line.points[i].0, ya),
+                            b: (line.points[i + 1].0, yb),
+                            sd,
+                        });
+                    }
+                }
+            }
+        }
+    }
+
+    // Bisect the candidates: a jump stays, a steep slope shrinks.
+    let steps: Vec<Option<Bracket>> = candidates
+        .into_par_iter()
+        .map(|c| {
+            let (mut a, mut b) = (c.a, c.b);
+            let scale = a.1.abs().max(b.1.abs());
+            let d0 = (b.1 - a.1).abs();
+            for _ in 0..options.refine {
+                let u = 0.5 * (a.0 + b.0);
+                let x = if c.log { u.exp() } else { u };
+                let Some(p) = with(base, c.line, &Value::Number(x)) else { return Ok(None) };
+                let Some(y) = compute(&p, progress)?.scalar(c.scalar).filter(|y| y.is_finite()) else {
+                    // The scalar leaves its defined range inside: a stated
+                    // boundary, not a step.
+                    return Ok(None);
+                };
+                if (y - a.1).abs() >= (b.1 - y).abs() {
+                    b = (u, y);
+                } else {
+                    a = (u, y);
+                }
+            }
+            let d = (b.1 - a.1).abs();
+            let jump = d > KEEPS * d0 && d > RELEVANT * scale && d > NOISE * c.sd;
+            Ok(jump.then_some((c, a, b)))
+        })
+        .collect::<Result<_, SceneError>>()?;
+    report.computations += steps.len() * options.refine;
+    for (c, a, b) in steps.into_iter().flatten() {
+        let x = |u: f64| if c.log { u.exp() } else { u };
+        let shown = |u: f64| match lines.iter().find(|l| l.key == c.line) {
+            Some(l) => l.spec.display(&Value::Number(x(u))),
+            None => short(x(u)),
+        };
+        let sunit = match &here {
+            Point::Done { scalars, .. } => scalars.iter().find(|s| s.0 == c.scalar).map(|s| s.2).unwrap_or(""),
+            _ => "",
+        };
+        let rel = if a.1 != 0.0 { format!(" ({:+.1} %)", 100.0 * (b.1 / a.1 - 1.0)) } else { String::new() };
+        let detail = format!(
+            "{} → {} {sunit}{rel} between {} = {} and {}",
+            short(a.1),
+            short(b.1),
+            c.line,
+            shown(a.0),
+            shown(b.0),
+        );
+        let d = Declared::find(declared, Irregularity::Step, c.scalar, c.line);
+        report.findings.push(Finding {
+            kind: Irregularity::Step,
+            parameter: c.line,
+            scalar: c.scalar.to_string(),
+            at: vec![x(a.0), x(b.0)],
+            detail: detail.replace("  ", " ").trim_end().to_string(),
+            declared: d.map(|d| d.why),
+        });
+    }
+    Ok(report)
+}
+
+/// A step candidate: scalar `scalar` along `line` between grid points `a`
+/// and `b` ((u, y) each).
+#[derive(Debug, Clone)]
+struct Candidate {
+    line: &'static str,
+    scalar: &'static str,
+    log: bool,
+    a: (f64, f64),
+    b: (f64, f64),
+    sd: f64,
+}
+
+/// Whether a value of scalar `key` is a number or has a stated meaning.
+fn meant(censored: &[scene::Censored], key: &str, x: f64) -> bool {
+    x.is_finite()
+        || !matches!(scene::status(censored, key, x), scene::Status::Undefined { why } if why == scene::NOT_FINITE)
+}
+
+/// For a scene of random runs, each scalar's standard deviation over four
+/// independent seeds at the preset's point (of the scene's own mean over
+/// its runs); empty for a deterministic scene.
+fn spread(
+    base: &SceneParams,
+    keys: &[&'static str],
+    progress: &Progress,
+) -> Result<BTreeMap<&'static str, f64>, SceneError> {
+    let mut p = base.clone();
+    let Some((first, runs)) = p.seeds().map(|s| (*s.first, *s.runs)) else { return Ok(BTreeMap::new()) };
+    let points: Vec<SceneParams> = (1..=4)
+        .map(|k| {
+            let mut q = base.clone();
+            if let Some(s) = q.seeds() {
+                *s.first = first + k * runs.max(1);
+            }
+            q
+        })
+        .collect();
+    let done: Vec<Point> = points.par_iter().map(|q| compute(q, progress)).collect::<Result<_, _>>()?;
+    Ok(keys
+        .iter()
+        .map(|key| {
+            let xs: Vec<f64> = done.iter().filter_map(|p| p.scalar(key)).filter(|x| x.is_finite()).collect();
+            let n = xs.len() as f64;
+            let mean = xs.iter().sum::<f64>() / n;
+            let sd = if xs.len() > 1 {
+                (xs.iter().map(|x| (x - mean).powi(2)).sum::<f64>() / (n - 1.0)).sqrt()
+            } else {
+                0.0
+            };
+            (*key, sd)
+        })
+        .collect())
+}

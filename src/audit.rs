@@ -13,7 +13,8 @@
 //! - **steps**: a change between grid neighbours that stands out from its
 //!   neighbours' changes (more than [`TREND`] times their median, and more
 //!   than [`RELEVANT`] of the value) and that stays as the interval is
-//!   bisected [`Options::refine`] times — a jump, not a steep slope;
+//!   bisected [`Options::refine`] times, all in one half of the last
+//!   bracket ([`ONE_SIDED`]) — a jump, not a steep slope or a pole;
 //! - **ignored** parameters: ones that change the figures but no scalar
 //!   (declared where the parameter's spec says `figure_only`: an axis
 //!   range, a curve's resolution, an overlay), and parameters so declared
@@ -50,6 +51,11 @@ pub const RELEVANT: f64 = 1e-3;
 /// of the grid change it came from (a smooth change halves with every
 /// bisection).
 pub const KEEPS: f64 = 0.5;
+
+/// A jump sits in one half of its last bracket: that half carries at least
+/// this share of the bracket's change (a smooth change splits about evenly,
+/// even next to a pole, where the nearer half carries about two thirds).
+pub const ONE_SIDED: f64 = 0.9;
 
 /// For a scene of random runs: a step must also exceed this many standard
 /// deviations of the scalar over independent seeds.
@@ -486,6 +492,8 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
             let (mut a, mut b) = (c.a, c.b);
             let scale = a.1.abs().max(b.1.abs());
             let d0 = (b.1 - a.1).abs();
+            // The share of the last bracket's change its larger half carries.
+            let mut share = 1.0;
             for _ in 0..options.refine {
                 let u = 0.5 * (a.0 + b.0);
                 let x = if c.log { u.exp() } else { u };
@@ -495,14 +503,17 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
                     // boundary, not a step.
                     return Ok(None);
                 };
-                if (y - a.1).abs() >= (b.1 - y).abs() {
+                let whole = (b.1 - a.1).abs();
+                let (left, right) = ((y - a.1).abs(), (b.1 - y).abs());
+                share = if whole > 0.0 { left.max(right) / whole } else { 1.0 };
+                if left >= right {
                     b = (u, y);
                 } else {
                     a = (u, y);
                 }
             }
             let d = (b.1 - a.1).abs();
-            let jump = d > KEEPS * d0 && d > RELEVANT * scale && d > NOISE * c.sd;
+            let jump = d > KEEPS * d0 && d > RELEVANT * scale && d > NOISE * c.sd && share >= ONE_SIDED;
             Ok(jump.then_some((c, a, b)))
         })
         .collect::<Result<_, SceneError>>()?;

@@ -109,6 +109,9 @@ pub enum Command {
         /// Only these parameters (keys, comma-separated); all by default.
         #[arg(long, value_delimiter = ',', value_name = "A,B")]
         only: Vec<String>,
+        /// Override a parameter of every preset by its documented key, e.g. `--set crack_law=thesis`.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
         /// Audit heavy scenes at the cheaper setting of their preview.
         #[arg(long)]
         coarse: bool,
@@ -239,6 +242,12 @@ pub fn apply_sets(preset: &mut Preset, sets: &[String]) -> Result<()> {
     Ok(())
 }
 
+/// A check that ran and found what it checks for (the audit's undeclared
+/// findings): the binary exits with status 1, not the 2 of bad input.
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct CheckFailed(pub String);
+
 /// Whether `error` comes from writing to a closed standard output (the
 /// reader of a pipe went away, as in `grainscope presets | head -1`): the
 /// command then ends quietly.
@@ -347,7 +356,7 @@ pub fn run(command: Command) -> Result<()> {
             }
             say(format_args!("{}", crate::sensitivity::matters_text(&m, &output, factor)))
         }
-        Command::Audit { presets, points, refine, only, coarse, light, json } => {
+        Command::Audit { presets, points, refine, only, set, coarse, light, json } => {
             let names: Vec<String> = if presets.is_empty() {
                 SHIPPED.iter().map(|(file, _)| file.trim_end_matches(".ron").to_string()).collect()
             } else {
@@ -356,7 +365,8 @@ pub fn run(command: Command) -> Result<()> {
             let options = crate::audit::Options { points: points as usize, refine: refine as usize, only };
             let mut failing = Vec::new();
             for name in &names {
-                let p = resolve(name)?;
+                let mut p = resolve(name)?;
+                apply_sets(&mut p, &set)?;
                 let heavy = p.scene.info().heavy;
                 if heavy && light {
                     continue;
@@ -381,7 +391,13 @@ pub fn run(command: Command) -> Result<()> {
                 }
             }
             if !failing.is_empty() {
-                bail!("the audit fails for {} of {} presets: {}", failing.len(), names.len(), failing.join(", "));
+                return Err(CheckFailed(format!(
+                    "the audit fails for {} of {} presets: {}",
+                    failing.len(),
+                    names.len(),
+                    failing.join(", ")
+                ))
+                .into());
             }
             Ok(())
         }

@@ -18,6 +18,11 @@ fn main() -> ExitCode {
         Ok(()) => ExitCode::SUCCESS,
         // The reader of our output went away (`grainscope presets | head -1`): nothing to say.
         Err(e) if grainscope::cli::is_closed_pipe(&e) => ExitCode::SUCCESS,
+        // A check that ran and failed (the audit): status 1.
+        Err(e) if e.downcast_ref::<grainscope::cli::CheckFailed>().is_some() => {
+            let _ = writeln!(std::io::stderr(), "{e}");
+            ExitCode::from(1)
+        }
         Err(e) => {
             let _ = writeln!(std::io::stderr(), "error: {e:#}");
             ExitCode::from(2)

@@ -370,3 +370,21 @@ fn matters_reports_the_jkr_exponent_of_the_sticking_velocity() {
     let bad = grainscope(&["matters", "ice-bounce-8ms", "--output", "v_c", "--factor", "0.5"]);
     assert!(!bad.status.success());
 }
+
+#[test]
+fn audit_passes_a_light_preset_and_fails_the_thesis_crack_law_with_status_1() {
+    let out = grainscope(&["audit", "ice-bounce-8ms", "--points", "8"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("hysteresis") && text.contains("declared: a threshold"), "{text}");
+
+    let out = grainscope(&["audit", "restitution-ice", "--only", "k", "--set", "crack_law=thesis"]);
+    assert_eq!(out.status.code(), Some(1), "{}", String::from_utf8_lossy(&out.stderr));
+    let text = String::from_utf8_lossy(&out.stdout);
+    assert!(text.contains("FAIL step      v_stick along k"), "{text}");
+    assert!(String::from_utf8_lossy(&out.stderr).contains("the audit fails for 1 of 1 presets"));
+
+    let out = grainscope(&["audit", "restitution-ice", "--only", "kk"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&out.stderr).contains("'kk'"));
+}

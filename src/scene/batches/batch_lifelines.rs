@@ -4,7 +4,7 @@
 use super::common::{BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::constants::AU;
-use crate::scene::core::{Context, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Declared, Irregularity, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::schema::ParamSet;
 use serde::{Deserialize, Serialize};
 
@@ -16,10 +16,10 @@ pub struct Params {
     #[param(flatten)]
     pub run: BatchParams,
     /// else by Stokes number
-    #[param(label = "colour by φ", default = false)]
+    #[param(figure_only, label = "colour by φ", default = false)]
     pub colour_by_filling: bool,
     /// thins the paths
-    #[param(label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
+    #[param(figure_only, label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
     pub every: usize,
 }
 
@@ -33,6 +33,13 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
     (Ωt_s < 10⁻⁴, 10⁻⁴–10⁻³, …, > 1) or by the filling factor, along the paths drawn (every n-th batch).",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[Declared {
+        scalar: "*",
+        parameter: "*",
+        kind: Irregularity::Ignored,
+        why: "a figure of the batches' paths: the scene reports only the monomer's scalars (the disk map reports the run's)",
+    }];
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {
         let p = self;

@@ -3,7 +3,7 @@
 use crate::physics::batches::{BatchConfig, BatchRun, KERNEL_HALF_WIDTH, Smoothing, run};
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{GrowthModel, Porosity};
-use crate::scene::core::{Progress, SceneError};
+use crate::scene::core::{Declared, Irregularity, Progress, SceneError};
 use crate::scene::disk::common::{DiskParams, DiskProfile};
 use crate::scene::quantities;
 use crate::scene::schema::{Choice, ParamSet};
@@ -289,4 +289,23 @@ pub fn inspect_batch(
 /// 0.4, so that markers on crowded radii stay apart.
 pub fn marker_size(n: usize, every: usize) -> f64 {
     (40.0 / n.div_ceil(every.max(1)).max(1) as f64).sqrt().clamp(0.4, 1.0)
+}
+
+/// Why the batch scenes' results move in steps (the continuity audit's
+/// finding, declared as the model's nature): the dust is N batches, each of
+/// which is lost at the inner edge, turns into planetesimals or stays dust
+/// as a whole.
+const WHOLE_BATCHES: &str = "the dust is N batches, each lost at the inner edge, turned into planetesimals or left as dust \
+     as a whole: fractions, loadings and radii move in steps where one batch changes its fate or its frame (about 1/N of \
+     the dust mass), steps that shrink as N grows";
+
+/// Steps of every batch scalar along every parameter: [`WHOLE_BATCHES`].
+pub const BATCH_STEPS: Declared =
+    Declared { scalar: "*", parameter: "*", kind: Irregularity::Step, why: WHOLE_BATCHES };
+
+/// A physical parameter whose change moves no batch across a fate at few
+/// batches (the audit's coarse setting), so that every scalar stays exactly
+/// equal while the figures change: [`WHOLE_BATCHES`].
+pub const fn batch_quantised(parameter: &'static str) -> Declared {
+    Declared { scalar: "*", parameter, kind: Irregularity::Ignored, why: WHOLE_BATCHES }
 }

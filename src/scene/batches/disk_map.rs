@@ -2,11 +2,11 @@
 //! time with the Stokes-number window, planetesimal formation and the
 //! midplane mass loading.
 
-use super::common::{BatchParams, RunCache};
+use super::common::{BATCH_STEPS, BatchParams, RunCache};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::Fate;
 use crate::physics::constants::{AU, YEAR};
-use crate::scene::core::{Censored, Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Cursor, Declared, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
@@ -20,7 +20,7 @@ pub struct Params {
     #[param(flatten)]
     pub run: BatchParams,
     /// thins the paths
-    #[param(label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
+    #[param(figure_only, label = "draw every n-th batch", range(1.0, 100.0), default = 5)]
     pub every: usize,
     /// time marked on the batch paths, as a fraction of the run in log time
     #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
@@ -40,6 +40,8 @@ t_grow > Ω⁻¹ (Sect. 5.4.1); the count of batches meeting all three is report
 mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[BATCH_STEPS];
 
     const CENSORED: &'static [Censored] =
         &[Censored { key: "outermost_planetesimals", above: None, undefined: Some("no planetesimals form") }];

@@ -1,10 +1,10 @@
 //! Scene "Formation zone" (thesis Figs. 5.9, 5.10): the outer edge of the
 //! region where planetesimals form directly, against disk mass and metallicity.
 
-use super::common::{BatchParams, log_grid};
+use super::common::{BATCH_STEPS, BatchParams, batch_quantised, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
-use crate::scene::core::{Censored, Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Declared, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::disk::common::DiskProfile;
 use crate::scene::schema::{Choice, ParamSet};
 use rayon::prelude::*;
@@ -80,6 +80,8 @@ Massive, dust-rich disks form planetesimals further out; a cold disk nearly doub
 disks run in parallel, each also with half the batches: the change estimates the edges' resolution error.",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[BATCH_STEPS, batch_quantised("cold")];
 
     const CENSORED: &'static [Censored] = &[
         Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") },

@@ -1,10 +1,10 @@
 //! Scene "Planetesimal yield" (thesis Figs. 5.7, 5.8): planetesimal mass and
 //! converted fraction against time for a grid of disks.
 
-use super::common::{BatchParams, log_grid};
+use super::common::{BATCH_STEPS, BatchParams, batch_quantised, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::YEAR;
-use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::disk::common::DiskProfile;
 use crate::scene::schema::ParamSet;
 use rayon::prelude::*;
@@ -47,6 +47,18 @@ disks of several masses and metallicities (porous perfect sticking unless set ot
 are independent and go in parallel.",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[
+        BATCH_STEPS,
+        batch_quantised("dlnm"),
+        batch_quantised("settling"),
+        Declared {
+            scalar: "min_converted",
+            parameter: "z_max",
+            kind: Irregularity::Ignored,
+            why: "the least converted disk is the poorest in metals, at the smallest Z₀",
+        },
+    ];
 
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse_over(self.n_mass * self.n_z), ..self.clone() })

@@ -1,11 +1,13 @@
 //! Scene "Surface density" (thesis Figs. 5.1, 5.3 top, 5.5 top, 5.11): gas,
 //! dust and planetesimal surface densities of the batch model at chosen times.
 
-use super::common::{BatchParams, RunCache};
+use super::common::{BATCH_STEPS, BatchParams, RunCache, batch_quantised};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::batches::{Fate, surface_density, surface_density_in};
 use crate::physics::constants::{AU, YEAR};
-use crate::scene::core::{Context, Cursor, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Context, Cursor, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
@@ -41,6 +43,23 @@ with v_frag = 5 m/s empty the disk within 10⁶ yr (Fig. 5.3); porous ices form 
 inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[
+        BATCH_STEPS,
+        batch_quantised("cold"),
+        Declared {
+            scalar: "*",
+            parameter: "surface_density",
+            kind: Irregularity::Ignored,
+            why: "the run's drift and growth use the gas, not the dust estimate; the estimate only draws Σ_d",
+        },
+        Declared {
+            scalar: "*",
+            parameter: "smoothing",
+            kind: Irregularity::Ignored,
+            why: "the run's drift and growth use the gas, not the dust estimate; the kernel only draws Σ_d",
+        },
+    ];
 
     fn coarse(&self) -> Option<Self> {
         Some(Params { run: self.run.coarse(), ..self.clone() })

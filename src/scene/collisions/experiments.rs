@@ -25,10 +25,10 @@ pub struct Params {
     #[param(label = "experiment", choices = options(), default = "wall-mica".into())]
     pub experiment: String,
     /// also show every experiment as a small plot
-    #[param(label = "all 17 (Fig. 2.11)", default = true)]
+    #[param(figure_only, label = "all 17 (Fig. 2.11)", default = true)]
     pub all: bool,
     /// points per curve
-    #[param(label = "velocities", range(4.0, 400.0), default = 40)]
+    #[param(figure_only, label = "velocities", range(4.0, 400.0), default = 40)]
     pub n_velocities: usize,
     /// relative tolerance of the integrator (default 1e-5)
     #[param(quantity = quantities::solver_tolerance, default = 1e-5)]

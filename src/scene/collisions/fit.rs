@@ -9,7 +9,9 @@ use crate::physics::experiments::experiment;
 use crate::physics::fit::{Fit as FitResult, FitError, Measurement, Search, fit, model_restitution};
 use crate::physics::material::Material;
 use crate::scene::controls::{LogRange, ParamError};
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Censored, Context, Declared, Irregularity, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use rand::{Rng, SeedableRng};
@@ -231,6 +233,14 @@ fn slice(f: &FitResult, a: usize, b: usize, fixed: usize) -> Heatmap {
     Heatmap::new(f.grids[a].clone(), f.grids[b].clone(), values, "log₁₀ χ²", "")
 }
 
+/// Why a fitted range has no low end.
+const NO_LOW: &str =
+    "no low end: the data do not bound it from below within the grid, or it is held fixed or undetermined";
+
+/// Why a fitted range has no high end.
+const NO_HIGH: &str =
+    "no high end: the data do not bound it from above within the grid, or it is held fixed or undetermined";
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "fit",
@@ -247,6 +257,22 @@ with Import data… or by dropping the file on the window; without data the scen
 example drawn from the Wall et al. mica fit with noise 0.01.",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored { key: "gamma_low", above: None, undefined: Some(NO_LOW) },
+        Censored { key: "gamma_high", above: None, undefined: Some(NO_HIGH) },
+        Censored { key: "t_vis_low", above: None, undefined: Some(NO_LOW) },
+        Censored { key: "t_vis_high", above: None, undefined: Some(NO_HIGH) },
+        Censored { key: "y_low", above: None, undefined: Some(NO_LOW) },
+        Censored { key: "y_high", above: None, undefined: Some(NO_HIGH) },
+    ];
+
+    const DECLARED: &'static [Declared] = &[Declared {
+        scalar: "collisions",
+        parameter: "*",
+        kind: Irregularity::Step,
+        why: "a count of the collisions integrated: a whole number",
+    }];
 
     fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
         Some(&mut self.data)

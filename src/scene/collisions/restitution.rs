@@ -179,12 +179,21 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
         heavy: true,
     };
 
-    const DECLARED: &'static [Declared] = &[Declared {
-        scalar: "*",
-        parameter: "velocity",
-        kind: Irregularity::Ignored,
-        why: "the velocity fixes e(R), a figure; the scalars are thresholds of e(v) and do not depend on it",
-    }];
+    const DECLARED: &'static [Declared] = &[
+        Declared {
+            scalar: "*",
+            parameter: "velocity",
+            kind: Irregularity::Ignored,
+            why: "the velocity fixes e(R), a figure; the scalars are thresholds of e(v) and do not depend on it",
+        },
+        Declared {
+            scalar: "*",
+            parameter: "v_min",
+            kind: Irregularity::Ignored,
+            why: "e_max is the largest e on the velocity grid, which ends at v_max: where e rises towards v_max, the \
+                  grid's start moves no scalar",
+        },
+    ];
 
     const CENSORED: &'static [Censored] = &[
         Censored { key: "v_stick", above: Some((1e4, "no collision bounces up to 10⁴ m/s")), undefined: None },

@@ -10,7 +10,9 @@ use crate::physics::constants::AU;
 use crate::physics::material::Material;
 use crate::scene::SceneParams;
 use crate::scene::collisions::common::CollisionParams;
-use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
+use crate::scene::core::{
+    Context, Declared, Irregularity, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace,
+};
 use crate::scene::inspect::{self, Action, Inspection};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
@@ -247,6 +249,10 @@ pub fn map(p: &Params, progress: &Progress) -> Result<SpeedMap, SceneError> {
     Ok(SpeedMap { masses: ns, log_speed, dominant })
 }
 
+/// Why the shares of the dominant sources step.
+const DOMINANT: &str = "the dominant source is the largest of five: where two sources scale alike with mass over a \
+     region, the whole region changes hands at one parameter value; and a share counts map cells, in steps of one cell";
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "collision-speeds",
@@ -261,6 +267,14 @@ for the smallest particles, turbulence for larger ones and drift near Ωt_s ~ 1;
 transitions by orders of magnitude in mass.",
         heavy: true,
     };
+
+    const DECLARED: &'static [Declared] = &[
+        Declared { scalar: "share_brownian", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+        Declared { scalar: "share_turbulence", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+        Declared { scalar: "share_settling", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+        Declared { scalar: "share_radial", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+        Declared { scalar: "share_azimuthal", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+    ];
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
         let p = self;

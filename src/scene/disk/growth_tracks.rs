@@ -7,7 +7,8 @@ use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
 use crate::scene::controls::LogRange;
 use crate::scene::core::{
-    Context, Cursor, Extra, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, TimedPath, logspace,
+    Censored, Context, Cursor, Declared, Extra, Irregularity, Progress, Scalar, Scene, SceneError, SceneInfo,
+    SceneOutput, TimedPath, logspace,
 };
 use crate::scene::inspect::{self, Inspection};
 use crate::scene::quantities;
@@ -24,7 +25,15 @@ pub struct Params {
     #[param(flatten)]
     pub growth: GrowthParams,
     /// fragmentation velocity of compact grains
-    #[param(label = "compact v_frag", unit = "m s^-1", shown("m/s", 1.0), range(0.1, 1e3), log, default = 10.0)]
+    #[param(
+        figure_only,
+        label = "compact v_frag",
+        unit = "m s^-1",
+        shown("m/s", 1.0),
+        range(0.1, 1e3),
+        log,
+        default = 10.0
+    )]
     pub v_frag_compact: f64,
     /// first starting radius
     #[param(label = "innermost start", unit = "AU", range(1.1, 300.0), log, default = 3.0)]
@@ -39,7 +48,7 @@ pub struct Params {
     #[param(quantity = quantities::duration, default = 1e6)]
     pub duration_yr: f64,
     /// also run compact growth
-    #[param(label = "compact tracks", default = true)]
+    #[param(figure_only, label = "compact tracks", default = true)]
     pub compact: bool,
     /// time at which every track is marked, as a fraction of the run in log time
     #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
@@ -73,6 +82,9 @@ impl Params {
     }
 }
 
+/// Why a formation radius has no value.
+const NO_PLANETESIMAL: &str = "no porous track forms a planetesimal";
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "growth-tracks",
@@ -86,6 +98,47 @@ outgrow the drift barrier in the inner disk unless erosion by small projectiles 
 near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
         heavy: true,
     };
+
+    const CENSORED: &'static [Censored] = &[
+        Censored { key: "outermost_planetesimal_formation", above: None, undefined: Some(NO_PLANETESIMAL) },
+        Censored { key: "outermost_planetesimal_start", above: None, undefined: Some(NO_PLANETESIMAL) },
+        Censored { key: "max_stokes_eroded", above: None, undefined: Some("erosion halts no porous track") },
+    ];
+
+    const DECLARED: &'static [Declared] = &[
+        Declared {
+            scalar: "porous_planetesimal_tracks",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "a count of tracks: a whole number",
+        },
+        Declared {
+            scalar: "outermost_planetesimal_start",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "the start of one of the log-spaced tracks: it moves by whole spacings of the track grid (`tracks`)",
+        },
+        Declared {
+            scalar: "outermost_planetesimal_formation",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "where the outermost forming track ends: it moves when another track of the grid becomes the outermost",
+        },
+        Declared {
+            scalar: "max_stokes_eroded",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: "the largest Ωt_s over the tracks halted by erosion: it steps where a track starts or stops being halted \
+                  by erosion",
+        },
+        Declared {
+            scalar: "*",
+            parameter: "v_bounce",
+            kind: Irregularity::Ignored,
+            why: "the bouncing threshold halts compact growth only; compact tracks are drawn for comparison and have no \
+                  scalar",
+        },
+    ];
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
         let p = self;
@@ -207,8 +260,9 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
                 Some([t.points.first()?.r / AU, end.r / AU, end.mass * 1e3])
             })
             .collect();
-        let outermost = formed.iter().map(|f| f[0]).fold(0.0, f64::max);
-        let outermost_formation = formed.iter().map(|f| f[1]).fold(0.0, f64::max);
+        // Undefined (NaN) where no track forms a planetesimal.
+        let outermost = formed.iter().map(|f| f[0]).fold(f64::NAN, f64::max);
+        let outermost_formation = formed.iter().map(|f| f[1]).fold(f64::NAN, f64::max);
         if !formed.is_empty() {
             let points = formed.iter().map(|f| [f[1], f[2]]).collect();
             fig_m = fig_m.with(Series::new("planetesimal formed", points, Style::Points, 3));
@@ -217,7 +271,7 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             .iter()
             .filter(|t| t.halted_by == Some("erosion"))
             .flat_map(|t| t.points.iter().map(|q| q.stokes))
-            .fold(0.0, f64::max);
+            .fold(f64::NAN, f64::max);
         let scalars = vec![
             Scalar {
                 key: "porous_planetesimal_tracks",

@@ -78,7 +78,11 @@ pub type Bins = Vec<(f64, f64, f64, f64, f64)>;
 /// Runs the engine and bins the mass per unit volume.
 pub fn run(p: &Params, progress: &Progress) -> Result<(Bins, f64), SceneError> {
     if p.kernel == TestKernel::Product && p.time >= 1.0 {
-        return Err(PhysicsError::Invalid("the product kernel gels at t = 1: choose t < 1".into()).into());
+        return Err(crate::scene::ParamError::Inconsistent(format!(
+            "time = {}: the product kernel gels at t = 1, choose t < 1",
+            crate::scene::spec::short(p.time)
+        ))
+        .into());
     }
     let kernel = p.analytic();
     let n = p.bins_per_decade.max(1) as f64;
@@ -164,6 +168,8 @@ m²N(m), of the runs (mean, dashed ±1σ) and exact, and the relative error per 
 the groups per decade w* grow; the low-mass tail stays resolved far below the peak.",
         heavy: true,
     };
+
+    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
 
     /// Capped runs take seconds each: first the uncapped method with at most
     /// two runs (milliseconds).

@@ -262,3 +262,13 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
         })
         .collect()
 }
+
+/// The Monte Carlo scenes' event count is a diagnostic: a whole number per
+/// run (the mean over runs), which steps with the grouping (`groups_per_decade`)
+/// and the random path.
+pub const EVENT_COUNT: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "events",
+    parameter: "*",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "a diagnostic, the group events of a run: whole numbers, with the grouping and the random path",
+};

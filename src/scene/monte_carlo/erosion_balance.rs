@@ -63,6 +63,8 @@ negative near Ωt_s ~ 1 and the largest bodies settle into a steady state; at 40
 masses first; at 60 m/s erosion is never strong enough to stop growth.",
         heavy: true,
     };
+
+    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
     const PAUSABLE: bool = true;
 
     fn seeds(&mut self) -> Option<Seeds<'_>> {

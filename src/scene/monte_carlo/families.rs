@@ -54,6 +54,8 @@ compaction flattens the track; gas and self-gravity compress the largest bodies.
 inherit the fractal dimension of their target (4.14) and the distribution of φ turns bimodal.",
         heavy: true,
     };
+
+    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
     const PAUSABLE: bool = true;
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {

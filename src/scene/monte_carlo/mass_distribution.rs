@@ -63,6 +63,8 @@ t_drift = R/v_drift (4.31) of the peak mass m_p = ⟨m²⟩/⟨m⟩ (4.29). Perf
 drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies stall near Ωt_s ~ 1.",
         heavy: true,
     };
+
+    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
     const PAUSABLE: bool = true;
 
     fn time_cursor(&mut self) -> Option<&mut f64> {

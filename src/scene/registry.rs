@@ -430,7 +430,13 @@ of the \"SI unit\" column; the window shows them in the unit of the default.\n",
                         options.iter().map(|(k, _)| format!("`{k}`")).collect::<Vec<_>>().join(", ")
                     }
                 };
-                let style = if s.style_only { " (display only)" } else { "" };
+                let style = if s.style_only {
+                    " (display only)"
+                } else if s.figure_only {
+                    " (sets only what a figure shows)"
+                } else {
+                    ""
+                };
                 out.push_str(&format!(
                     "| `{}` | {} | {} | {} | {} | {}{style} |\n",
                     s.key,

@@ -299,15 +299,12 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
     }
     let declared = base.declared();
     let censored = base.censored();
-    let here = compute(base, progress)?;
-    let base_keys: Vec<&'static str> = match &here {
-        Point::Done { scalars, .. } => scalars.iter().map(|s| s.0).collect(),
-        Point::Failed(e) => {
-            return Err(SceneError::Physics(crate::physics::PhysicsError::Invalid(format!(
-                "the preset's own point fails: {e}"
-            ))));
-        }
-        Point::Refused => return Err(SceneError::Cancelled),
+    // The preset's own point: its error, if any, is the audit's.
+    let out = scene::compute(base, &progress.quiet_child())?;
+    let base_keys: Vec<&'static str> = out.scalars.iter().map(|s| s.key).collect();
+    let here = Point::Done {
+        scalars: out.scalars.iter().map(|s| (s.key, s.value, s.unit)).collect(),
+        figures: fingerprint(&out.figures),
     };
     let noise = spread(base, &base_keys, progress)?;
 

@@ -35,6 +35,12 @@ pub struct Params {
     pub cursor: f64,
 }
 
+/// Why the energy fractions of a sticking collision step (an audit finding
+/// declared as physics).
+const TWO_STICKING_REGIMES: &str = "sticking has two regimes: where the contact breaks but the spheres cannot \
+     escape, the run and its losses end at the break; where it never breaks, the run follows the spiral into \
+     equilibrium, which dissipates the rest";
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "hysteresis",
@@ -79,22 +85,8 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
             kind: Irregularity::Step,
             why: "a diagnostic at the level of the tolerance rtol (below 10⁻⁴ of the energy), not a result",
         },
-        Declared {
-            scalar: "crack_fraction",
-            parameter: "*",
-            kind: Irregularity::Step,
-            why: "sticking has two regimes: where the contact breaks but the spheres cannot escape, the run and its \
-                  losses end at the break; where it never breaks, the run follows the spiral into equilibrium, which \
-                  dissipates the rest",
-        },
-        Declared {
-            scalar: "bulk_fraction",
-            parameter: "*",
-            kind: Irregularity::Step,
-            why: "sticking has two regimes: where the contact breaks but the spheres cannot escape, the run and its \
-                  losses end at the break; where it never breaks, the run follows the spiral into equilibrium, which \
-                  dissipates the rest",
-        },
+        Declared { scalar: "crack_fraction", parameter: "*", kind: Irregularity::Step, why: TWO_STICKING_REGIMES },
+        Declared { scalar: "bulk_fraction", parameter: "*", kind: Irregularity::Step, why: TWO_STICKING_REGIMES },
     ];
 
     fn material_changed(&mut self) {

@@ -391,3 +391,27 @@ fn the_sticking_velocity_is_continuous_in_k_with_the_full_crack_relation() {
     let thesis = sticking_velocity(&ice().with_crack(CrackLaw::thesis(0.02)), &opts(), 1e-6).expect("v_s");
     assert!((thesis / 3.5661 - 1.0).abs() < 2e-4, "{thesis}");
 }
+
+#[test]
+fn a_crack_too_slow_to_follow_the_approach_stays_in_the_law_s_domain() {
+    // A 2 cm AF sphere on mica with T_vis up to the fit's 1e-6 s: early in the
+    // approach the crack cannot keep up, and β runs down to k, where the
+    // crack speed diverges. A step that lands beyond k is refused (it used to
+    // be accepted, and the next step could not start: "step size underflow").
+    use grainscope::scene::collisions::fit::Params;
+    let fit = Params { radius_1: 2e-2, wall: true, ..Params::default() };
+    for (gamma, t_vis, v) in
+        [(0.02, 1e-8, 120.0), (0.13, 1e-6, 20.0), (1.0, 1e-6, 5.0), (1.0, 1e-7, 20.0), (0.4, 1e-7, 120.0)]
+    {
+        let s = fit.setup(gamma, t_vis, None);
+        let coarse = collide(&s, v, &Options { rtol: 1e-4, ..opts() }).expect("collides at rtol 1e-4");
+        let fine = collide(&s, v, &Options { rtol: 1e-9, ..opts() }).expect("collides at rtol 1e-9");
+        assert_eq!(coarse.outcome, Outcome::Bounce, "γ={gamma} T_vis={t_vis} v={v}");
+        assert!(
+            (coarse.e_adhesive - fine.e_adhesive).abs() < 2e-5,
+            "γ={gamma} T_vis={t_vis} v={v}: {} vs {}",
+            coarse.e_adhesive,
+            fine.e_adhesive
+        );
+    }
+}

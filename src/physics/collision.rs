@@ -350,10 +350,13 @@ impl StiffSystem<5> for ContactOde {
     const DRIVING: usize = 3;
 
     /// β may at most double or halve in one step, so that a step cannot jump
-    /// across the thin quasi-static manifold unseen by the error estimate.
+    /// across the thin quasi-static manifold unseen by the error estimate,
+    /// and must stay inside the crack law's domain k < β < 1/k: the crack
+    /// speed diverges at its ends, so the true solution never leaves it, and
+    /// a step that does is too long (the next step could not start there).
     fn admissible(&self, from: &State<5>, to: &State<5>) -> bool {
         let (b0, b1) = (self.beta(from), self.beta(to));
-        b1 <= 2.0 * b0 && b1 >= 0.5 * b0
+        b1 <= 2.0 * b0 && b1 >= 0.5 * b0 && self.crack.defined_at(b1)
     }
 }
 

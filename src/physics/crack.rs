@@ -183,10 +183,14 @@ pub struct ResolvedLaw {
 }
 
 impl ResolvedLaw {
+    /// Whether β lies inside the law's domain k < β < 1/k.
+    pub fn defined_at(&self, beta: f64) -> bool {
+        beta > self.law.k && beta < 1.0 / self.law.k
+    }
+
     /// g(β) and dg/dβ as [`CrackLaw::speed`]; `None` outside k < β < 1/k.
     pub fn speed(&self, beta: f64) -> Option<(f64, f64)> {
-        let k = self.law.k;
-        if !(beta > k && beta < 1.0 / k) {
+        if !self.defined_at(beta) {
             return None;
         }
         match &self.table {

@@ -248,61 +248,18 @@ impl<'a> Control<'a> {
     /// Sets the value from text (SI units for numbers, `true`/`false`,
     /// a material name), then checks the range. On error the value is unchanged.
     pub fn set_text(&mut self, text: &str) -> Result<(), ParamError> {
-        self.set_text_checked(text).map_err(|e| match e {
-            // Name the value as the user wrote it, not as it reads back.
-            ParamError::OutOfRange { key, min, max, unit, .. } => {
-                ParamError::OutOfRange { key, value: text.trim().to_string(), min, max, unit }
-            }
-            other => other,
-        })
-    }
-
-    fn set_text_checked(&mut self, text: &str) -> Result<(), ParamError> {
-        let parse_err = |expected| ParamError::Parse { key: self.key.into(), value: text.into(), expected };
-        match &mut self.kind {
-            ControlKind::Number { value, .. } => {
-                let v: f64 = text.trim().parse().map_err(|_| parse_err("a number in SI units"))?;
-                let old = **value;
-                **value = v;
-                if let Err(e) = self.check() {
-                    if let ControlKind::Number { value, .. } = &mut self.kind {
-                        **value = old;
-                    }
-                    return Err(e);
-                }
-            }
-            ControlKind::Count { value, .. } => {
-                let v: usize = text.trim().parse().map_err(|_| parse_err("a whole number"))?;
-                let old = **value;
-                **value = v;
-                if let Err(e) = self.check() {
-                    if let ControlKind::Count { value, .. } = &mut self.kind {
-                        **value = old;
-                    }
-                    return Err(e);
-                }
-            }
-            ControlKind::Toggle(value) => {
-                **value = match text.trim() {
-                    "true" | "on" | "yes" | "1" => true,
-                    "false" | "off" | "no" | "0" => false,
-                    _ => return Err(parse_err("true or false")),
-                };
-            }
-            ControlKind::Material(value) => {
-                let m = Material::named(text.trim()).ok_or_else(|| parse_err("a material name of Table 2.2"))?;
-                **value = m.clone();
-            }
-            ControlKind::Choice { value, options } => {
-                let key = options
-                    .iter()
-                    .find(|(k, _)| *k == text.trim())
-                    .map(|(k, _)| *k)
-                    .ok_or_else(|| parse_err("one of the option keys (see `grainscope params`)"))?;
-                if !value.set_key(key) {
-                    return Err(parse_err("one of the option keys (see `grainscope params`)"));
-                }
-            }
+        let value = self.spec().parse_checked(text)?;
+        let old = self.value();
+        if !self.assign(&value) {
+            return Err(ParamError::Parse {
+                key: self.key.into(),
+                value: text.into(),
+                expected: "one of the option keys (see `grainscope params`)",
+            });
+        }
+        if let Err(e) = self.check() {
+            self.assign(&old);
+            return Err(e);
         }
         Ok(())
     }

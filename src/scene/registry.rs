@@ -279,13 +279,9 @@ impl SceneParams {
     /// Sets the parameter `key` from its textual value (as on the command
     /// line), checking its range. On error nothing changes.
     pub fn set(&mut self, key: &str, value: &str) -> Result<(), ParamError> {
+        let spec = self.spec(key).ok_or_else(|| ParamError::unknown(key, &self.keys()))?;
         let mut trial = self.clone();
-        {
-            let mut controls = trial.controls();
-            let known: Vec<&'static str> = controls.iter().map(|c| c.key).collect();
-            let c = controls.iter_mut().find(|c| c.key == key).ok_or_else(|| ParamError::unknown(key, &known))?;
-            c.set_text(value)?;
-        }
+        trial.set_value(key, &spec.parse_checked(value)?)?;
         trial.validate()?;
         *self = trial;
         Ok(())
@@ -310,16 +306,8 @@ impl SceneParams {
     /// scene has no card or a value is refused.
     pub fn set_monomer_card(&mut self, card: &monomer::Card) -> bool {
         let mut trial = self.clone();
-        {
-            let mut controls = trial.controls();
-            for (key, value) in monomer::MONOMER_KEYS.iter().zip(card) {
-                let taken = controls.iter_mut().find(|c| c.key == *key).is_some_and(|c| c.assign(value));
-                if !taken {
-                    return false;
-                }
-            }
-        }
-        if trial.validate().is_err() {
+        let taken = monomer::MONOMER_KEYS.iter().zip(card).all(|(key, value)| trial.set_value(key, value).is_ok());
+        if !taken || trial.validate().is_err() {
             return false;
         }
         *self = trial;

@@ -236,6 +236,44 @@ impl Spec {
         format!("{}: {} [{}{default}] — {}", self.key, self.label, range.trim(), self.doc)
     }
 
+    /// The value written as `text` (SI units for numbers, `true`/`false`,
+    /// `on`/`off`, `yes`/`no` or `1`/`0` for a switch, a material name of
+    /// Table 2.2, an option key), unchecked against the range.
+    pub fn parse(&self, text: &str) -> Result<Value, ParamError> {
+        let t = text.trim();
+        let parse_err = |expected| ParamError::Parse { key: self.key.into(), value: text.into(), expected };
+        match &self.kind {
+            SpecKind::Number { .. } => t.parse().map(Value::Number).map_err(|_| parse_err("a number in SI units")),
+            SpecKind::Count { .. } => t.parse().map(Value::Count).map_err(|_| parse_err("a whole number")),
+            SpecKind::Toggle => match t {
+                "true" | "on" | "yes" | "1" => Ok(Value::Toggle(true)),
+                "false" | "off" | "no" | "0" => Ok(Value::Toggle(false)),
+                _ => Err(parse_err("true or false")),
+            },
+            SpecKind::Material => match Material::named(t) {
+                Some(m) => Ok(Value::Text(m.name.clone())),
+                None => Err(parse_err("a material name of Table 2.2")),
+            },
+            SpecKind::Choice { options } => match options.iter().find(|(k, _)| *k == t) {
+                Some((k, _)) => Ok(Value::Text(k.to_string())),
+                None => Err(parse_err("one of the option keys (see `grainscope params`)")),
+            },
+        }
+    }
+
+    /// [`Spec::parse`] and [`Spec::check`]: an out-of-range value is named
+    /// as the user wrote it, not as it reads back.
+    pub fn parse_checked(&self, text: &str) -> Result<Value, ParamError> {
+        let value = self.parse(text)?;
+        self.check(&value).map_err(|e| match e {
+            ParamError::OutOfRange { key, min, max, unit, .. } => {
+                ParamError::OutOfRange { key, value: text.trim().to_string(), min, max, unit }
+            }
+            other => other,
+        })?;
+        Ok(value)
+    }
+
     /// Checks `value` against the spec.
     pub fn check(&self, value: &Value) -> Result<(), ParamError> {
         let out = |value: String, min: String, max: String| ParamError::OutOfRange {

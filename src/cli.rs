@@ -73,6 +73,59 @@ pub enum Command {
         #[arg(long, value_name = "DIR")]
         out: PathBuf,
     },
+    /// Global sensitivity of one scalar over parameter ranges: Morris's
+    /// elementary effects (μ, μ*, σ) or Sobol' indices (S1, ST, with
+    /// bootstrap intervals; S2 on request). The design's runs are a sweep
+    /// (sweep.csv, sweep.ron: resumable, shardable, mergeable with
+    /// `sweep-merge`); the analysis writes indices.csv, sensitivity.json and
+    /// sensitivity.png/svg. With `--analyse`, analyses a merged folder.
+    Sensitivity {
+        /// Preset file, shipped preset name or exported figure (not with `--analyse`).
+        #[arg(required_unless_present = "analyse")]
+        preset: Option<String>,
+        /// `morris` or `sobol`.
+        #[arg(long, default_value = "morris", value_name = "morris|sobol")]
+        method: String,
+        /// A varied parameter and its range, `NAME=lin|log:FROM:TO` (SI units); repeat.
+        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO")]
+        vary: Vec<String>,
+        /// A parameter that takes another's value at every point, e.g.
+        /// `--tie radius_2=radius_1` (equal spheres as one factor).
+        #[arg(long = "tie", value_name = "TIED=SOURCE")]
+        tie: Vec<String>,
+        /// The scalar analysed (a key of `run --json`).
+        #[arg(long, value_name = "KEY")]
+        output: Option<String>,
+        /// Morris: trajectories r (default 20); Sobol': base samples N, a power of two (default 256).
+        #[arg(long)]
+        samples: Option<usize>,
+        /// Morris: grid levels p (even).
+        #[arg(long, default_value_t = 4)]
+        levels: usize,
+        /// Sobol': second-order indices too (N(2d + 2) runs instead of N(d + 2)).
+        #[arg(long)]
+        second_order: bool,
+        /// Seed of the design (trajectories or scramble) and the bootstrap.
+        #[arg(long, default_value_t = 2015)]
+        seed: u64,
+        /// Override a parameter by its documented key, e.g. `--set velocity=4`.
+        #[arg(long = "set", value_name = "KEY=VALUE")]
+        set: Vec<String>,
+        /// Run one deterministic slice `K/N` of the runs, or `auto` for the
+        /// task of a Slurm job array; merge with `sweep-merge`, then `--analyse`.
+        #[arg(long, default_value = "1/1", value_name = "K/N|auto")]
+        shard: String,
+        /// Output folder.
+        #[arg(long, value_name = "DIR", required_unless_present = "analyse")]
+        out: Option<PathBuf>,
+        /// Analyse the finished (or merged) folder DIR instead of running.
+        #[arg(long, value_name = "DIR", conflicts_with_all = ["preset", "out"])]
+        analyse: Option<PathBuf>,
+        /// Analyse the natural logarithm of the output (effects become relative
+        /// changes; a non-positive output counts as undefined).
+        #[arg(long)]
+        log_output: bool,
+    },
     /// What matters for one scalar: every numeric parameter's elasticity
     /// ∂ln X/∂ln p at the preset's point and X over a factor around it, sorted.
     Matters {
@@ -400,6 +453,89 @@ pub fn run(command: Command) -> Result<()> {
                 .into());
             }
             Ok(())
+        }
+        Command::Sensitivity {
+            preset,
+            method,
+            vary,
+            tie,
+            output,
+            samples,
+            levels,
+            second_order,
+            seed,
+            set,
+            shard,
+            out,
+            analyse,
+            log_output,
+        } => {
+            use crate::global_sensitivity::{Design, Method, parse_factor};
+            let dir = match (analyse, preset, out) {
+                (Some(dir), _, _) => dir,
+                (None, Some(preset), Some(out)) => {
+                    let mut p = resolve(&preset)?;
+                    apply_sets(&mut p, &set)?;
+                    let factors = vary
+                        .iter()
+                        .map(|v| parse_factor(v))
+                        .collect::<Result<Vec<_>, _>>()
+                        .map_err(|e| anyhow::anyhow!(e))?;
+                    if factors.is_empty() {
+                        bail!("nothing to vary: give --vary NAME=lin|log:FROM:TO (one per parameter)");
+                    }
+                    let Some(output) = output else { bail!("--output KEY: which scalar to analyse") };
+                    let method = match method.as_str() {
+                        "morris" => Method::Morris { trajectories: samples.unwrap_or(20), levels },
+                        "sobol" => Method::Sobol { samples: samples.unwrap_or(256), second_order },
+                        other => bail!("--method {other}: expected morris or sobol"),
+                    };
+                    let design = Design { method, factors, seed };
+                    design.unit_points()?;
+                    let shard = crate::sweep::Shard::parse(&shard, |k| std::env::var(k).ok())?;
+                    let mine = (0..design.runs()).filter(|&i| shard.owns(i)).count();
+                    // One run at the preset's point, timed, for the estimate.
+                    let clock = std::time::Instant::now();
+                    crate::scene::compute(&p.scene, &Progress::default())?;
+                    let each = clock.elapsed().as_secs_f64();
+                    let threads = rayon::current_num_threads().max(1) as f64;
+                    tell(format_args!(
+                        "{} runs ({} in this shard); about {} s on {threads} threads",
+                        design.runs(),
+                        mine,
+                        crate::figure::human((each * mine as f64 / threads).max(0.1))
+                    ));
+                    let report = |done: usize, total: usize| {
+                        if done.is_multiple_of((total / 20).max(1)) || done == total {
+                            tell(format_args!("{done}/{total} runs"));
+                        }
+                    };
+                    let s = crate::sweep_files::run_design(p, design, &tie, &[output], shard, &out, &report)?;
+                    say(format_args!("{} runs ({} already done, {} failed)", s.points, s.reused, s.failed))?;
+                    if shard != crate::sweep::Shard::ALL {
+                        return say(format_args!(
+                            "shard {}/{} written to {}; merge the shards with `grainscope sweep-merge`, then analyse \
+                             with `grainscope sensitivity --analyse DIR`",
+                            shard.k,
+                            shard.n,
+                            out.display()
+                        ));
+                    }
+                    out
+                }
+                _ => bail!("give a preset and --out, or --analyse DIR"),
+            };
+            let (a, files) = crate::sweep_files::analyse(&dir, log_output)?;
+            say(crate::sweep_files::indices_csv(&a).trim_end())?;
+            say(format_args!(
+                "{} runs; {} undefined ({}); {} bounds ({}); wrote {}",
+                a.runs,
+                a.undefined,
+                crate::sweep_files::UNDEFINED_RULE,
+                a.bounded,
+                crate::sweep_files::BOUND_RULE,
+                files.iter().map(|f| f.display().to_string()).collect::<Vec<_>>().join(", ")
+            ))
         }
         Command::SweepMerge { shards, out } => {
             let files = crate::sweep_files::merge(&shards, &out)?;

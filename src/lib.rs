@@ -15,6 +15,7 @@ pub mod deck;
 pub mod export;
 pub mod figure;
 pub mod files;
+pub mod global_sensitivity;
 pub mod handout;
 pub mod links;
 pub mod measurements;

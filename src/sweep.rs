@@ -208,6 +208,24 @@ pub struct Plan {
     /// The SI unit of each varied parameter.
     pub units: Vec<String>,
     values: Vec<Vec<f64>>,
+    /// Explicit points (a sample design), SI, one per row in the order of
+    /// `vary`; empty for a grid.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    points: Vec<Vec<f64>>,
+    /// Parameters that take another's value at every point, (tied, source):
+    /// `radius_2 = radius_1` keeps the spheres equal.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ties: Vec<(String, String)>,
+}
+
+/// Reads a tie, `TIED=SOURCE` (both parameter keys).
+pub fn parse_tie(text: &str) -> Result<(String, String), SweepError> {
+    match text.split_once('=') {
+        Some((a, b)) if !a.trim().is_empty() && !b.trim().is_empty() => {
+            Ok((a.trim().to_string(), b.trim().to_string()))
+        }
+        _ => Err(SweepError::Syntax(format!("--tie {text}: expected TIED=SOURCE, e.g. radius_2=radius_1"))),
+    }
 }
 
 impl Plan {
@@ -248,12 +266,75 @@ impl Plan {
                 trial.set_number(&v.key, *x).map_err(|e| SweepError::Parameter(format!("--vary {}: {e}", v.text())))?;
             }
         }
-        Ok(Plan { base, vary, units, values })
+        Ok(Plan { base, vary, units, values, points: Vec::new(), ties: Vec::new() })
+    }
+
+    /// A plan of explicit points (a sample design): `points` holds one row
+    /// of SI values per point, a value for each of `vary` (whose ranges
+    /// bound them: each range's ends are checked, and every value must lie
+    /// between them).
+    pub fn of_points(base: SceneParams, vary: Vec<Vary>, points: Vec<Vec<f64>>) -> Result<Plan, SweepError> {
+        let mut plan = Plan::new(base, vary.iter().map(|v| Vary { n: 2, ..v.clone() }).collect())?;
+        plan.vary = vary;
+        plan.values = plan.vary.iter().map(|v| vec![v.from]).collect();
+        for (n, row) in points.iter().enumerate() {
+            let inside = row.len() == plan.vary.len()
+                && row.iter().zip(&plan.vary).all(|(x, v)| {
+                    let (lo, hi) = (v.from.min(v.to), v.from.max(v.to));
+                    x.is_finite() && *x >= lo * (1.0 - 1e-12) - f64::MIN_POSITIVE && *x <= hi * (1.0 + 1e-12)
+                });
+            if !inside {
+                return Err(SweepError::Parameter(format!("point {n}: {row:?} is outside the ranges")));
+            }
+        }
+        if points.is_empty() {
+            return Err(SweepError::Parameter("a design without points".into()));
+        }
+        plan.points = points;
+        Ok(plan)
+    }
+
+    /// The plan with `ties`: each tied parameter takes its source's value at
+    /// every point. A tied parameter must be a number the plan does not
+    /// vary; its source, a number of the scene.
+    pub fn with_ties(mut self, ties: Vec<(String, String)>) -> Result<Plan, SweepError> {
+        for (tied, source) in &ties {
+            for key in [tied, source] {
+                if !self.base.spec(key).is_some_and(|s| s.is_numeric()) {
+                    return Err(SweepError::Parameter(format!(
+                        "--tie {tied}={source}: {} has no number '{key}'",
+                        self.base.info().id
+                    )));
+                }
+            }
+            if self.vary.iter().any(|v| &v.key == tied) || tied == source {
+                return Err(SweepError::Parameter(format!(
+                    "--tie {tied}={source}: the tied parameter must be another, not varied"
+                )));
+            }
+        }
+        if ties.is_empty() {
+            return Ok(self);
+        }
+        self.ties = ties;
+        // Every point stays inside the tied parameters' ranges too.
+        for i in 0..self.len() {
+            self.params_at(i).map_err(|e| SweepError::Parameter(format!("--tie, at point {i}: {e}")))?;
+        }
+        Ok(self)
     }
 
     /// Number of points.
     pub fn len(&self) -> usize {
+        if !self.points.is_empty() {
+            return self.points.len();
+        }
         self.values.iter().map(Vec::len).product()
+    }
+
+    /// Whether the points are a sample design rather than a grid.
+    pub fn is_design(&self) -> bool {
+        !self.points.is_empty()
     }
 
     /// Whether the plan has no points (never, for a checked plan).
@@ -263,6 +344,9 @@ impl Plan {
 
     /// The varied values of point `index` (the last parameter fastest).
     pub fn point(&self, index: usize) -> Vec<f64> {
+        if let Some(p) = self.points.get(index) {
+            return p.clone();
+        }
         let mut rest = index;
         let mut out = vec![0.0; self.values.len()];
         for (k, vals) in self.values.iter().enumerate().rev() {
@@ -277,6 +361,13 @@ impl Plan {
         let mut p = self.base.clone();
         for (v, x) in self.vary.iter().zip(self.point(index)) {
             p.set_number(&v.key, x)?;
+        }
+        for (tied, source) in &self.ties {
+            if let Some(crate::scene::schema::Value::Number(x)) = p.get(source) {
+                p.set_number(tied, x)?;
+            } else if let Some(crate::scene::schema::Value::Count(n)) = p.get(source) {
+                p.set_number(tied, n as f64)?;
+            }
         }
         Ok(p)
     }
@@ -358,6 +449,17 @@ pub fn for_points<T: Send>(
     progress: &Progress,
     each: &(dyn Fn(usize, Result<SceneOutput, SceneError>) -> T + Sync),
 ) -> Result<Vec<T>, SceneError> {
+    for_each_point(plan, indices, progress, &scene::compute, each)
+}
+
+/// [`for_points`] with the computation `compute` of each point's parameters.
+fn for_each_point<R, T: Send>(
+    plan: &Plan,
+    indices: &[usize],
+    progress: &Progress,
+    compute: &(dyn Fn(&SceneParams, &Progress) -> Result<R, SceneError> + Sync),
+    each: &(dyn Fn(usize, Result<R, SceneError>) -> T + Sync),
+) -> Result<Vec<T>, SceneError> {
     let finished = AtomicUsize::new(0);
     let made: Vec<Option<T>> = indices
         .par_iter()
@@ -365,7 +467,7 @@ pub fn for_points<T: Send>(
             if progress.cancelled() {
                 return None;
             }
-            let result = plan.params_at(i).and_then(|p| scene::compute(&p, &progress.quiet_child()));
+            let result = plan.params_at(i).and_then(|p| compute(&p, &progress.quiet_child()));
             if matches!(result, Err(SceneError::Cancelled)) {
                 return None;
             }
@@ -381,15 +483,21 @@ pub fn for_points<T: Send>(
 
 /// The row of point `index` from its result.
 fn row_of(plan: &Plan, columns: &Columns, index: usize, result: Result<SceneOutput, SceneError>) -> Row {
+    row_from(plan, columns, index, result.map(|out| columns.keys.iter().map(|k| out.scalar(k)).collect()))
+}
+
+/// The row of point `index` from its scalars in column order.
+fn row_from(plan: &Plan, columns: &Columns, index: usize, result: Result<Vec<Option<f64>>, SceneError>) -> Row {
     let values = plan.point(index);
     let n = columns.keys.len();
     match result {
-        Ok(out) => {
+        Ok(found) => {
             let declared = plan.base.censored();
             let (scalars, status) = columns
                 .keys
                 .iter()
-                .map(|k| match out.scalar(k) {
+                .zip(found)
+                .map(|(k, found)| match found {
                     Some(v) => match scene::status(declared, k, v) {
                         Status::Value => (Some(v), String::new()),
                         Status::Above { bound, why } => (Some(bound), format!("above: {why}")),
@@ -415,11 +523,26 @@ pub fn run(
     progress: &Progress,
     done: &(dyn Fn(&Row) + Sync),
 ) -> Result<Vec<Row>, SceneError> {
-    let mut rows = for_points(plan, indices, progress, &|i, result| {
-        let row = row_of(plan, columns, i, result);
-        done(&row);
-        row
-    })?;
+    let mut rows = match &columns.keys[..] {
+        // One scalar: through the scene's quick path where it has one (the
+        // same value as the whole computation, without the figures).
+        [key] => for_each_point(
+            plan,
+            indices,
+            progress,
+            &|p, progress| scene::scalar(p, key, progress).map(|v| vec![v]),
+            &|i, result| {
+                let row = row_from(plan, columns, i, result);
+                done(&row);
+                row
+            },
+        )?,
+        _ => for_points(plan, indices, progress, &|i, result| {
+            let row = row_of(plan, columns, i, result);
+            done(&row);
+            row
+        })?,
+    };
     rows.sort_by_key(|r| r.index);
     Ok(rows)
 }

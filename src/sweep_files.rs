@@ -34,6 +34,13 @@ pub struct SweepFile {
     /// builds. Empty in folders written before builds were recorded.
     #[serde(default)]
     pub program: String,
+    /// Parameters tied to another's value, as `TIED=SOURCE`.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub tie: Vec<String>,
+    /// The sample design of a global sensitivity analysis, whose points the
+    /// rows are (instead of the grid of `vary`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub design: Option<crate::global_sensitivity::Design>,
 }
 
 /// `earlier` and `now` as one record of builds: `now` alone where they agree.
@@ -48,14 +55,23 @@ fn builds(earlier: &str, now: &str) -> String {
 }
 
 impl SweepFile {
-    fn plan(&self) -> Result<(Plan, Columns)> {
-        let vary = self.vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>()?;
-        let plan = Plan::new(self.preset.scene.clone(), vary)?;
+    /// The plan the file describes, and its columns.
+    pub fn plan(&self) -> Result<(Plan, Columns)> {
+        let ties = self.tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
+        let plan = match &self.design {
+            Some(design) => Plan::of_points(self.preset.scene.clone(), design.vary(), design.points()?)?,
+            None => {
+                let vary = self.vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>()?;
+                Plan::new(self.preset.scene.clone(), vary)?
+            }
+        };
+        let plan = plan.with_ties(ties)?;
         let columns = Columns::new(self.scalars.clone(), self.units.clone(), &plan.base);
         Ok((plan, columns))
     }
 
-    fn read(dir: &Path) -> Result<SweepFile> {
+    /// Reads `sweep.ron` of folder `dir`.
+    pub fn read(dir: &Path) -> Result<SweepFile> {
         let path = dir.join("sweep.ron");
         let text = std::fs::read_to_string(&path).with_context(|| format!("{} is no sweep folder", dir.display()))?;
         ron::from_str(&text).with_context(|| format!("{} is malformed", path.display()))
@@ -89,18 +105,75 @@ pub fn run(
     out: &Path,
     report: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Summary> {
+    run_tied(preset, vary, &[], scalars, shard, out, report)
+}
+
+/// [`run`] with parameters tied to others (`TIED=SOURCE`).
+pub fn run_tied(
+    preset: Preset,
+    vary: &[String],
+    tie: &[String],
+    scalars: &[String],
+    shard: Shard,
+    out: &Path,
+    report: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Summary> {
     let parsed = vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>()?;
-    let plan = Plan::new(preset.scene.clone(), parsed)?;
-    let progress = Progress::default();
-    let columns = Columns::of(&plan, scalars, &progress)?;
-    let mut file = SweepFile {
+    let ties = tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
+    let plan = Plan::new(preset.scene.clone(), parsed)?.with_ties(ties)?;
+    let file = SweepFile {
         preset,
         vary: plan.vary.iter().map(Vary::text).collect(),
-        scalars: columns.keys.clone(),
-        units: columns.units.clone(),
+        scalars: Vec::new(),
+        units: Vec::new(),
         shard: format!("{}/{}", shard.k, shard.n),
         program: crate::provenance::program(),
+        tie: tie.to_vec(),
+        design: None,
     };
+    run_plan(file, plan, scalars, shard, out, report)
+}
+
+/// Runs the points of the sample design `design` over `preset` (shard
+/// `shard`) into `out`, as [`run`] does a grid: resumable, shardable and
+/// mergeable alike.
+pub fn run_design(
+    preset: Preset,
+    design: crate::global_sensitivity::Design,
+    tie: &[String],
+    scalars: &[String],
+    shard: Shard,
+    out: &Path,
+    report: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Summary> {
+    let ties = tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
+    let plan = Plan::of_points(preset.scene.clone(), design.vary(), design.points()?)?.with_ties(ties)?;
+    let file = SweepFile {
+        preset,
+        vary: Vec::new(),
+        scalars: Vec::new(),
+        units: Vec::new(),
+        shard: format!("{}/{}", shard.k, shard.n),
+        program: crate::provenance::program(),
+        tie: tie.to_vec(),
+        design: Some(design),
+    };
+    run_plan(file, plan, scalars, shard, out, report)
+}
+
+/// Runs `plan`'s points of `shard` into `out` as `file` describes them.
+fn run_plan(
+    mut file: SweepFile,
+    plan: Plan,
+    scalars: &[String],
+    shard: Shard,
+    out: &Path,
+    report: &(dyn Fn(usize, usize) + Sync),
+) -> Result<Summary> {
+    let progress = Progress::default();
+    let columns = Columns::of(&plan, scalars, &progress)?;
+    file.scalars = columns.keys.clone();
+    file.units = columns.units.clone();
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let ron_path = out.join("sweep.ron");
     if ron_path.exists() {
@@ -163,6 +236,231 @@ pub fn run(
     Ok(Summary { points: total, reused, failed, files })
 }
 
+/// The rows of a finished, whole sweep folder (one run unsharded, or merged).
+pub fn read_whole(dir: &Path) -> Result<(SweepFile, Plan, Columns, Vec<Row>)> {
+    let file = SweepFile::read(dir)?;
+    let (plan, columns) = file.plan()?;
+    let path = dir.join("sweep.csv");
+    let text = std::fs::read_to_string(&path).with_context(|| format!("{} has no sweep.csv", dir.display()))?;
+    let rows = sweep::read_rows(&text, &plan, &columns).with_context(|| format!("{}", path.display()))?;
+    if rows.len() != plan.len() {
+        bail!(
+            "{} holds {} of the {} points: finish the run or merge its shards first",
+            dir.display(),
+            rows.len(),
+            plan.len()
+        );
+    }
+    Ok((file, plan, columns, rows))
+}
+
+/// A global sensitivity analysis of a finished design folder.
+#[derive(Debug, Clone, serde::Serialize)]
+pub struct Analysis {
+    /// The program that analysed it.
+    pub program: String,
+    /// The builds that computed the runs.
+    pub computed_by: String,
+    /// The preset's title.
+    pub preset: String,
+    /// The output analysed and its unit.
+    pub output: String,
+    /// Its SI unit (empty when its logarithm is analysed).
+    pub unit: String,
+    /// The natural logarithm of the output is analysed (its effects are
+    /// relative changes).
+    pub log_output: bool,
+    /// The design.
+    pub design: crate::global_sensitivity::Design,
+    /// Parameters tied to others (`TIED=SOURCE`).
+    pub tie: Vec<String>,
+    /// Runs in the design.
+    pub runs: usize,
+    /// Runs whose output is undefined or whose computation failed: left out
+    /// by [`UNDEFINED_RULE`].
+    pub undefined: usize,
+    /// Runs whose output is only a bound: they enter at the bound
+    /// ([`BOUND_RULE`]).
+    pub bounded: usize,
+    /// Morris's measures, per factor.
+    pub morris: Option<Vec<crate::global_sensitivity::MorrisIndex>>,
+    /// Sobol' indices.
+    pub sobol: Option<crate::global_sensitivity::SobolResult>,
+}
+
+/// How undefined outputs are handled (stated in every analysis).
+pub const UNDEFINED_RULE: &str = "an undefined output (or a failed run) is left out: an elementary effect that needs it \
+     is dropped; a Sobol' base sample with one among its runs is dropped whole";
+
+/// How bounds are handled (stated in every analysis).
+pub const BOUND_RULE: &str =
+    "an output known only as a bound (\"> 10⁴ m/s\") enters at the bound, a conservative value, and is counted";
+
+/// Bootstrap resamples of the confidence intervals (as SALib's default).
+const RESAMPLES: usize = 1000;
+
+/// Analyses the finished design folder `dir` (one run unsharded, or its
+/// shards merged): the design's outputs by its method, into
+/// `indices.csv` (and `second_order.csv`), `sensitivity.json` and a
+/// figure (PNG, SVG). Returns the analysis and the files written.
+pub fn analyse(dir: &Path, log_output: bool) -> Result<(Analysis, Vec<PathBuf>)> {
+    use crate::global_sensitivity::{self as gsa, Method};
+    let (file, _plan, columns, rows) = read_whole(dir)?;
+    let Some(design) = file.design.clone() else {
+        bail!("{} holds a grid sweep, not a sensitivity design", dir.display())
+    };
+    let (output, unit) = (columns.keys[0].clone(), columns.units[0].clone());
+    let (mut undefined, mut bounded) = (0, 0);
+    let y: Vec<f64> = rows
+        .iter()
+        .map(|r| match (&r.error, r.scalars[0]) {
+            (None, Some(v)) if v.is_finite() && (v > 0.0 || !log_output) => {
+                bounded += usize::from(r.status[0].starts_with("above"));
+                if log_output { v.ln() } else { v }
+            }
+            _ => {
+                undefined += 1;
+                f64::NAN
+            }
+        })
+        .collect();
+    let d = design.factors.len();
+    let unit_points = design.unit_points()?;
+    let (morris, sobol) = match design.method {
+        Method::Morris { .. } => (Some(gsa::morris(&unit_points, &y, d, RESAMPLES, design.seed)), None),
+        Method::Sobol { second_order, .. } => (None, Some(gsa::sobol(&y, d, second_order, RESAMPLES, design.seed))),
+    };
+    let analysis = Analysis {
+        program: crate::provenance::program(),
+        computed_by: file.program.clone(),
+        preset: file.preset.title.clone(),
+        output: if log_output { format!("ln {output}") } else { output },
+        unit: if log_output { String::new() } else { unit },
+        log_output,
+        design,
+        tie: file.tie.clone(),
+        runs: rows.len(),
+        undefined,
+        bounded,
+        morris,
+        sobol,
+    };
+    let mut files = Vec::new();
+    let mut write = |name: &str, bytes: &[u8]| -> Result<()> {
+        let path = dir.join(name);
+        write_atomically(&path, bytes)?;
+        files.push(path);
+        Ok(())
+    };
+    write("indices.csv", indices_csv(&analysis).as_bytes())?;
+    if let Some(text) = second_order_csv(&analysis) {
+        write("second_order.csv", text.as_bytes())?;
+    }
+    let json = serde_json::json!({
+        "analysis": analysis,
+        "rules": { "undefined": UNDEFINED_RULE, "bound": BOUND_RULE },
+        "preset": file.preset,
+    });
+    write("sensitivity.json", serde_json::to_string_pretty(&json)?.as_bytes())?;
+    let fig = analysis_figure(&analysis);
+    for ext in ["png", "svg"] {
+        let bytes = crate::provenance::figure_bytes(&fig, ext, figure::EXPORT_SIZE, None)?;
+        write(&format!("sensitivity.{ext}"), &bytes)?;
+    }
+    Ok((analysis, files))
+}
+
+/// The indices as a table, a row per factor (SALib's `to_df()` columns).
+pub fn indices_csv(a: &Analysis) -> String {
+    let mut s = String::new();
+    let u = |k: &str| if a.unit.is_empty() { k.to_string() } else { format!("{k} [{}]", a.unit) };
+    if let Some(m) = &a.morris {
+        s += &format!("parameter,{},{},{},{},effects,dropped\n", u("mu"), u("mu_star"), u("sigma"), u("mu_star_conf"));
+        for (f, i) in a.design.factors.iter().zip(m) {
+            s += &format!(
+                "{},{},{},{},{},{},{}\n",
+                f.key, i.mu, i.mu_star, i.sigma, i.mu_star_conf, i.effects, i.dropped
+            );
+        }
+    }
+    if let Some(r) = &a.sobol {
+        s += "parameter,S1,S1_conf,ST,ST_conf\n";
+        for (f, i) in a.design.factors.iter().zip(&r.indices) {
+            s += &format!("{},{},{},{},{}\n", f.key, i.first, i.first_conf, i.total, i.total_conf);
+        }
+    }
+    s
+}
+
+/// Second-order indices, a row per pair, when the design has them.
+fn second_order_csv(a: &Analysis) -> Option<String> {
+    let (s2, conf) = a.sobol.as_ref()?.second.as_ref()?;
+    let mut s = "parameter 1,parameter 2,S2,S2_conf\n".to_string();
+    let f = &a.design.factors;
+    for j in 0..f.len() {
+        for k in j + 1..f.len() {
+            s += &format!("{},{},{},{}\n", f[j].key, f[k].key, s2[j][k], conf[j][k]);
+        }
+    }
+    Some(s)
+}
+
+/// Morris: σ against μ* per factor. Sobol': S1 (filled) and ST (open) per
+/// factor, at its number along the axis, with their intervals.
+fn analysis_figure(a: &Analysis) -> Figure {
+    use crate::figure::{Fill, Shape};
+    let names: Vec<String> = a.design.factors.iter().enumerate().map(|(i, f)| format!("{} {}", i + 1, f.key)).collect();
+    if let Some(m) = &a.morris {
+        let mut fig = Figure::new(
+            "sensitivity",
+            &format!("Morris: σ against μ* of {} ({} trajectories)", a.output, a.runs / (names.len() + 1)),
+            Axis::linear("μ*", &crate::units::pretty(&a.unit)),
+            Axis::linear("σ", &crate::units::pretty(&a.unit)),
+        );
+        for (k, (i, name)) in m.iter().zip(&names).enumerate() {
+            if i.mu_star.is_finite() && i.sigma.is_finite() {
+                fig = fig.with(Series::new(
+                    name,
+                    vec![[i.mu_star, i.sigma]],
+                    Style::Symbol(Shape::Circle, Fill::Filled),
+                    k,
+                ));
+                let lo = (i.mu_star - i.mu_star_conf).max(0.0);
+                fig = fig.with(Series::new(
+                    "",
+                    vec![[lo, i.sigma], [i.mu_star + i.mu_star_conf, i.sigma]],
+                    Style::Line,
+                    k,
+                ));
+            }
+        }
+        return fig;
+    }
+    let mut fig = Figure::new(
+        "sensitivity",
+        &format!("Sobol': S1 (filled) and ST (open) of {} ({} runs)", a.output, a.runs),
+        Axis::linear("factor", ""),
+        Axis::linear("index", ""),
+    );
+    if let Some(r) = &a.sobol {
+        for (k, (i, name)) in r.indices.iter().zip(&names).enumerate() {
+            let x = (k + 1) as f64;
+            for (dx, v, c, fill, label) in [
+                (-0.12, i.first, i.first_conf, Fill::Filled, name.as_str()),
+                (0.12, i.total, i.total_conf, Fill::Open, ""),
+            ] {
+                if v.is_finite() {
+                    fig = fig.with(Series::new(label, vec![[x + dx, v]], Style::Symbol(Shape::Circle, fill), k));
+                    if c.is_finite() {
+                        fig = fig.with(Series::new("", vec![[x + dx, v - c], [x + dx, v + c]], Style::Line, k));
+                    }
+                }
+            }
+        }
+    }
+    fig
+}
+
 /// Writes the table (and, for a whole plan, its figure).
 fn finish(plan: &Plan, columns: &Columns, rows: &[Row], out: &Path, whole: bool) -> Result<Vec<PathBuf>> {
     let mut files = Vec::new();
@@ -223,6 +521,9 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Vec<PathBuf>> {
 /// parameter, one line per value of it (up to 12), or a map over both with
 /// more values. None without a scalar or with more than two parameters.
 fn figure_of(plan: &Plan, columns: &Columns, rows: &[Row]) -> Option<Figure> {
+    if plan.is_design() {
+        return None;
+    }
     if plan.vary.len() == 2 && plan.vary[1].n > 12 {
         return map_of(plan, columns, rows);
     }

@@ -388,3 +388,85 @@ fn audit_passes_a_light_preset_and_fails_the_thesis_crack_law_with_status_1() {
     assert_eq!(out.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&out.stderr).contains("'kk'"));
 }
+
+#[test]
+fn a_sensitivity_design_runs_in_shards_merges_and_analyses_to_the_same_indices() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = |name: &str| dir.path().join(name).to_str().expect("utf8").to_string();
+    let design = |out: &str, shard: &str| {
+        grainscope(&[
+            "sensitivity",
+            "ice-bounce-8ms",
+            "--method",
+            "sobol",
+            "--samples",
+            "16",
+            "--vary",
+            "velocity=log:3:30",
+            "--vary",
+            "radius_1=log:1e-6:4e-6",
+            "--tie",
+            "radius_2=radius_1",
+            "--output",
+            "e",
+            "--shard",
+            shard,
+            "--out",
+            out,
+        ])
+    };
+    let whole = design(&d("whole"), "1/1");
+    assert!(whole.status.success(), "{}", String::from_utf8_lossy(&whole.stderr));
+    let text = String::from_utf8_lossy(&whole.stdout).to_string();
+    assert!(text.contains("parameter,S1,S1_conf,ST,ST_conf"), "{text}");
+    assert!(String::from_utf8_lossy(&whole.stderr).contains("64 runs"));
+    for k in ["1", "2"] {
+        let out = design(&d(&format!("shard{k}")), &format!("{k}/2"));
+        assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+        assert!(!dir.path().join(format!("shard{k}/indices.csv")).exists(), "a shard is not analysed alone");
+    }
+    let merged = grainscope(&["sweep-merge", &d("shard1"), &d("shard2"), "--out", &d("merged")]);
+    assert!(merged.status.success(), "{}", String::from_utf8_lossy(&merged.stderr));
+    let analysed = grainscope(&["sensitivity", "--analyse", &d("merged")]);
+    assert!(analysed.status.success(), "{}", String::from_utf8_lossy(&analysed.stderr));
+    for f in ["sweep.csv", "sweep.ron", "indices.csv"] {
+        assert_eq!(
+            std::fs::read(dir.path().join("merged").join(f)).ok(),
+            std::fs::read(dir.path().join("whole").join(f)).ok(),
+            "{f}"
+        );
+    }
+    // The tie holds: every run's spheres are equal (radius_2 is not a
+    // column, and the restitution of equal spheres is what was computed).
+    let ron = std::fs::read_to_string(dir.path().join("whole/sweep.ron")).expect("sweep.ron");
+    assert!(ron.contains("radius_2=radius_1") && ron.contains("Sobol"), "{ron}");
+    let json: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(dir.path().join("whole/sensitivity.json")).expect("json"))
+            .expect("json");
+    assert!(json["analysis"]["program"].as_str().is_some_and(|p| p.starts_with("grainscope")), "{json}");
+    assert_eq!(json["analysis"]["runs"].as_u64(), Some(64));
+    // The impact velocity decides e here more than the size does.
+    let st = |i: usize| json["analysis"]["sobol"]["indices"][i]["total"].as_f64().expect("ST");
+    assert!(st(0) > st(1), "{json}");
+    // Bad input is named.
+    let bad =
+        grainscope(&["sensitivity", "ice-bounce-8ms", "--vary", "velocity=log:3", "--output", "e", "--out", &d("x")]);
+    assert!(!bad.status.success() && String::from_utf8_lossy(&bad.stderr).contains("NAME=lin|log:FROM:TO"));
+    let bad = grainscope(&[
+        "sensitivity",
+        "ice-bounce-8ms",
+        "--method",
+        "sobol",
+        "--samples",
+        "100",
+        "--vary",
+        "velocity=log:3:30",
+        "--output",
+        "e",
+        "--out",
+        &d("y"),
+    ]);
+    assert!(!bad.status.success() && String::from_utf8_lossy(&bad.stderr).contains("power of two"));
+    let grid = grainscope(&["sensitivity", "--analyse", &d("nothing")]);
+    assert!(!grid.status.success());
+}

@@ -146,3 +146,35 @@ fn a_design_maps_onto_its_ranges_and_reads_back_its_factors() {
     assert!(Design { method: Method::Sobol { samples: 100, second_order: false }, ..design.clone() }.points().is_err());
     assert!(Design { method: Method::Morris { trajectories: 10, levels: 3 }, ..design }.points().is_err());
 }
+
+#[test]
+fn the_same_samples_give_salib_s_indices() {
+    // The outputs of these designs analysed by SALib 1.5 (`sobol.analyze` with
+    // calc_second_order=True; `morris.analyze` with num_levels=4): its point
+    // estimates, to rounding. (The intervals are bootstraps of other draws.)
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-12 * (1.0 + b.abs());
+    let design = sobol_design(3, 64, true, 1).expect("a design");
+    let y: Vec<f64> = design.iter().map(|x| ishigami(&unit_to(x, -PI, PI))).collect();
+    let r = sobol(&y, 3, true, 10, 1);
+    let s1 = [0.2685750029954696, 0.40144476130634416, -0.012803292151551791];
+    let st = [0.48599901487409225, 0.46777470078768196, 0.29083645917221307];
+    for i in 0..3 {
+        assert!(close(r.indices[i].first, s1[i]), "S1[{i}] = {}", r.indices[i].first);
+        assert!(close(r.indices[i].total, st[i]), "ST[{i}] = {}", r.indices[i].total);
+    }
+    let (s2, _) = r.second.expect("S2");
+    for (j, k, v) in [(0, 1, 0.14883287173440513), (0, 2, 0.30182026499390324), (1, 2, 0.03230649470222313)] {
+        assert!(close(s2[j][k], v), "S2[{j}][{k}] = {}", s2[j][k]);
+    }
+    let design = morris_design(3, 10, 4, 3).expect("a design");
+    let y: Vec<f64> = design.iter().map(|x| ishigami(&unit_to(x, -PI, PI))).collect();
+    let m = morris(&design, &y, 3, 10, 1);
+    let (mu_star, sigma) = (
+        [7.7040541115931065, 7.874999999999998, 4.999036882666495],
+        [6.586809440172515, 8.300978857941995, 8.33172813777749],
+    );
+    for i in 0..3 {
+        assert!(close(m[i].mu_star, mu_star[i]) && close(m[i].sigma, sigma[i]), "{i}: {:?}", m[i]);
+    }
+    assert!(close(m[0].mu, 7.7040541115931065) && m[1].mu.abs() < 1e-12 && m[2].mu.abs() < 1e-12, "{m:?}");
+}

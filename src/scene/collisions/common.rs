@@ -8,7 +8,7 @@ use crate::physics::crack::{CrackLaw, Relation};
 use crate::physics::experiments::Bounded;
 use crate::physics::material::{Bodies, Material, TwoBodies};
 use crate::scene::quantities;
-use crate::scene::schema::ParamSet;
+use crate::scene::schema::{Choice, ParamSet};
 use serde::{Deserialize, Serialize};
 
 /// A head-on collision between a sphere and a sphere or a wall. SI units.
@@ -51,8 +51,8 @@ pub struct CollisionParams {
     /// Files written before the choice existed say `low_speed_fit: true`
     /// (the thesis's law) or `false` ((2.16) alone), and keep their law.
     #[serde(alias = "low_speed_fit", deserialize_with = "crack_law_or_legacy_switch")]
-    #[param(label = "crack law", choices = Relation::CHOICES.to_vec(), default = "full".into())]
-    pub crack_law: String,
+    #[param(label = "crack law")]
+    pub crack_law: CrackLawChoice,
     /// Thornton–Ning plastic yield (2.29)
     #[param(label = "plasticity", default = false)]
     pub plasticity: bool,
@@ -117,7 +117,7 @@ impl CollisionParams {
 
     /// The crack law (the full relation for an unknown key, which validation rejects).
     pub fn crack_law(&self) -> CrackLaw {
-        CrackLaw { k: self.k, relation: Relation::from_key(&self.crack_law).unwrap_or_default() }
+        CrackLaw { k: self.k, relation: self.crack_law.relation() }
     }
 
     /// Integrator options at the chosen tolerance.
@@ -169,7 +169,7 @@ pub fn describe(b: &Bounded, unit: &str, scale: f64) -> String {
 
 /// Reads `crack_law`: a key, or the switch `low_speed_fit` of older files
 /// (true: the thesis's law; false: (2.16) alone).
-fn crack_law_or_legacy_switch<'de, D: serde::Deserializer<'de>>(d: D) -> Result<String, D::Error> {
+fn crack_law_or_legacy_switch<'de, D: serde::Deserializer<'de>>(d: D) -> Result<CrackLawChoice, D::Error> {
     #[derive(Deserialize)]
     #[serde(untagged)]
     enum KeyOrSwitch {
@@ -177,8 +177,37 @@ fn crack_law_or_legacy_switch<'de, D: serde::Deserializer<'de>>(d: D) -> Result<
         Key(String),
     }
     Ok(match KeyOrSwitch::deserialize(d)? {
-        KeyOrSwitch::Switch(true) => Relation::Thesis.key().into(),
-        KeyOrSwitch::Switch(false) => Relation::General.key().into(),
-        KeyOrSwitch::Key(k) => k,
+        KeyOrSwitch::Switch(true) => CrackLawChoice::Thesis,
+        KeyOrSwitch::Switch(false) => CrackLawChoice::General,
+        KeyOrSwitch::Key(k) => CrackLawChoice::from_key(&k).ok_or_else(|| {
+            <D::Error as serde::de::Error>::custom(crate::scene::schema::unknown_option(&k, CrackLawChoice::OPTIONS))
+        })?,
     })
+}
+
+/// The crack-speed relation of a collision, as the schema's choice (files
+/// and links keep its key: "full", "thesis", "2.16").
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Choice)]
+pub enum CrackLawChoice {
+    /// [`Relation::Full`].
+    #[default]
+    #[choice(key = "full", label = "full relation (Dugdale zone, any k)")]
+    Full,
+    /// [`Relation::Thesis`].
+    #[choice(key = "thesis", label = "thesis: (2.16) with (2.17) at k = 0.02")]
+    Thesis,
+    /// [`Relation::General`].
+    #[choice(key = "2.16", label = "(2.16) alone")]
+    General,
+}
+
+impl CrackLawChoice {
+    /// The physics' relation.
+    pub fn relation(self) -> Relation {
+        match self {
+            CrackLawChoice::Full => Relation::Full,
+            CrackLawChoice::Thesis => Relation::Thesis,
+            CrackLawChoice::General => Relation::General,
+        }
+    }
 }

@@ -241,7 +241,7 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
                 run.e_adhesive, e_p
             ));
         }
-        if (c.k - 0.02).abs() > 1e-12 && c.crack_law == "thesis" {
+        if (c.k - 0.02).abs() > 1e-12 && c.crack_law == super::common::CrackLawChoice::Thesis {
             notes.push(
                 "Greenwood's low-speed fits (2.17) were made for k = 0.02; at this k the thesis's law is (2.16) alone."
                     .into(),

@@ -57,8 +57,16 @@ pub enum Command {
         /// A varied parameter, `NAME=lin|log:FROM:TO:N` or the values
         /// themselves, `NAME=list:V1:V2:…` (SI units); repeat for a grid (the
         /// last one varies fastest).
-        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO:N|list:V1:V2:…", required = true)]
+        #[arg(long = "vary", value_name = "NAME=lin|log:FROM:TO:N|list:V1:V2:…", required_unless_present = "points")]
         vary: Vec<String>,
+        /// The points themselves, from a CSV table instead of a grid: a header
+        /// of parameter keys, a row of SI values per point.
+        #[arg(long, value_name = "TABLE.csv", conflicts_with = "vary")]
+        points: Option<PathBuf>,
+        /// A parameter that takes another's value at every point, e.g.
+        /// `--tie radius_2=radius_1` (equal spheres).
+        #[arg(long = "tie", value_name = "TIED=SOURCE")]
+        tie: Vec<String>,
         /// Override a parameter by its documented key, e.g. `--set velocity=4`.
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
@@ -366,7 +374,7 @@ pub fn run(command: Command) -> Result<()> {
                 print_scalars(&result, censored)
             }
         }
-        Command::Sweep { preset, vary, set, scalars, shard, out } => {
+        Command::Sweep { preset, vary, points, tie, set, scalars, shard, out } => {
             let mut p = resolve(&preset)?;
             apply_sets(&mut p, &set)?;
             let shard = crate::sweep::Shard::parse(&shard, |k| std::env::var(k).ok())?;
@@ -376,7 +384,16 @@ pub fn run(command: Command) -> Result<()> {
                     tell(format_args!("{done}/{total} points"));
                 }
             };
-            let s = crate::sweep_files::run(p, &vary, &scalars, shard, &out, &report)?;
+            let s = match points {
+                Some(table) => {
+                    let text =
+                        std::fs::read_to_string(&table).with_context(|| format!("cannot read {}", table.display()))?;
+                    let design = crate::global_sensitivity::Design::given(&text)
+                        .map_err(|e| anyhow::anyhow!("{}: {e}", table.display()))?;
+                    crate::sweep_files::run_design(p, design, &tie, &scalars, shard, &out, &report)?
+                }
+                None => crate::sweep_files::run_tied(p, &vary, &tie, &scalars, shard, &out, &report)?,
+            };
             say(format_args!(
                 "{} points ({} already done, {} failed); wrote {}",
                 s.points,

@@ -369,7 +369,7 @@ pub fn sobol(y: &[f64], d: usize, second_order_too: bool, resamples: usize, seed
 }
 
 /// The method of a design and its size.
-#[derive(Debug, Clone, Copy, PartialEq, serde::Serialize, serde::Deserialize)]
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub enum Method {
     /// Morris's elementary effects: `trajectories` of d + 1 points on a
     /// `levels`-level grid.
@@ -378,6 +378,12 @@ pub enum Method {
         trajectories: usize,
         /// Grid levels p (even).
         levels: usize,
+    },
+    /// Points given as they are (`sweep --points`), SI, a row per point in
+    /// the order of the factors: run, not analysed.
+    Given {
+        /// The points.
+        points: Vec<Vec<f64>>,
     },
     /// Sobol' indices from a Saltelli design of `samples` base samples.
     Sobol {
@@ -411,11 +417,23 @@ impl Design {
                 // The scramble's seed is 32 bits: both halves of the seed fold into it.
                 sobol_design(d, samples, second_order, (self.seed ^ (self.seed >> 32)) as u32)
             }
+            Method::Given { ref points } => Ok(points
+                .iter()
+                .map(|row| {
+                    row.iter()
+                        .zip(&self.factors)
+                        .map(|(x, f)| if f.to > f.from { (x - f.from) / (f.to - f.from) } else { 0.0 })
+                        .collect()
+                })
+                .collect()),
         }
     }
 
     /// The points in the factors' own values (SI).
     pub fn points(&self) -> Result<Vec<Vec<f64>>, DesignError> {
+        if let Method::Given { points } = &self.method {
+            return Ok(points.clone());
+        }
         Ok(self
             .unit_points()?
             .into_iter()
@@ -429,7 +447,50 @@ impl Design {
         match self.method {
             Method::Morris { trajectories, .. } => trajectories * (d + 1),
             Method::Sobol { samples, second_order } => samples * sobol_runs_per_sample(d, second_order),
+            Method::Given { ref points } => points.len(),
         }
+    }
+
+    /// A design of the points of a table: a header of parameter keys (a
+    /// unit in brackets after a key is allowed and ignored: values are SI),
+    /// then a row of numbers per point. The factors' ranges are the
+    /// columns' smallest and largest values.
+    pub fn given(text: &str) -> Result<Design, String> {
+        let mut reader =
+            csv::ReaderBuilder::new().trim(csv::Trim::All).comment(Some(b'#')).from_reader(text.as_bytes());
+        let keys: Vec<String> = reader
+            .headers()
+            .map_err(|e| format!("no header: {e}"))?
+            .iter()
+            .map(|h| h.split(" [").next().unwrap_or(h).trim().to_string())
+            .collect();
+        if keys.is_empty() || keys.iter().any(String::is_empty) {
+            return Err("the header must name a parameter in every column".into());
+        }
+        let mut points = Vec::new();
+        for (n, record) in reader.records().enumerate() {
+            let record = record.map_err(|e| format!("row {}: {e}", n + 1))?;
+            let row = record
+                .iter()
+                .map(|v| v.parse::<f64>().ok().filter(|x| x.is_finite()))
+                .collect::<Option<Vec<f64>>>()
+                .filter(|r| r.len() == keys.len())
+                .ok_or_else(|| format!("row {}: expected {} numbers", n + 1, keys.len()))?;
+            points.push(row);
+        }
+        if points.is_empty() {
+            return Err("no points".into());
+        }
+        let factors = keys
+            .iter()
+            .enumerate()
+            .map(|(k, key)| {
+                let (lo, hi) =
+                    points.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), r| (lo.min(r[k]), hi.max(r[k])));
+                Factor { key: key.clone(), log: false, from: lo, to: hi }
+            })
+            .collect();
+        Ok(Design { method: Method::Given { points }, factors, seed: 0 })
     }
 
     /// The factors as the varied parameters of a sweep (their ranges).

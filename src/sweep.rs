@@ -100,8 +100,11 @@ impl Vary {
         Ok(Vary::range(&key, spacing, from, to, n))
     }
 
-    /// The values, `from` first and `to` last.
+    /// The values, `from` first and `to` last. Values between are rounded to
+    /// 15 significant digits, so that a log grid from 1e-6 to 4e-6 holds
+    /// 2e-6 (not 2.000000000000001e-6) and tables print them as written.
     pub fn values(&self) -> Vec<f64> {
+        let round = |x: f64| format!("{x:.14e}").parse().unwrap_or(x);
         if self.spacing == Spacing::List {
             return self.given.clone();
         }
@@ -114,8 +117,8 @@ impl Vary {
                 (0, _) => self.from,
                 (i, _) if i == self.n - 1 => self.to,
                 (_, Spacing::List) => self.given[i],
-                (i, Spacing::Lin) => self.from + (self.to - self.from) * i as f64 / last,
-                (i, Spacing::Log) => (self.from.ln() + (self.to / self.from).ln() * i as f64 / last).exp(),
+                (i, Spacing::Lin) => round(self.from + (self.to - self.from) * i as f64 / last),
+                (i, Spacing::Log) => round((self.from.ln() + (self.to / self.from).ln() * i as f64 / last).exp()),
             })
             .collect()
     }
@@ -274,6 +277,12 @@ impl Plan {
     /// bound them: each range's ends are checked, and every value must lie
     /// between them).
     pub fn of_points(base: SceneParams, vary: Vec<Vary>, points: Vec<Vec<f64>>) -> Result<Plan, SweepError> {
+        for v in &vary {
+            for x in [v.from, v.to] {
+                let mut trial = base.clone();
+                trial.set_number(&v.key, x).map_err(|e| SweepError::Parameter(format!("a point's {e}")))?;
+            }
+        }
         let mut plan = Plan::new(base, vary.iter().map(|v| Vary { n: 2, ..v.clone() }).collect())?;
         plan.vary = vary;
         plan.values = plan.vary.iter().map(|v| vec![v.from]).collect();
@@ -281,7 +290,7 @@ impl Plan {
             let inside = row.len() == plan.vary.len()
                 && row.iter().zip(&plan.vary).all(|(x, v)| {
                     let (lo, hi) = (v.from.min(v.to), v.from.max(v.to));
-                    x.is_finite() && *x >= lo * (1.0 - 1e-12) - f64::MIN_POSITIVE && *x <= hi * (1.0 + 1e-12)
+                    x.is_finite() && *x >= lo - 1e-12 * lo.abs() && *x <= hi + 1e-12 * hi.abs()
                 });
             if !inside {
                 return Err(SweepError::Parameter(format!("point {n}: {row:?} is outside the ranges")));
@@ -683,7 +692,7 @@ mod tests {
     #[test]
     fn values_hit_both_ends_and_space_as_asked() {
         let v = Vary::parse("velocity=log:1:100:3").expect("vary");
-        assert_eq!(v.values(), vec![1.0, 10.000000000000002, 100.0]);
+        assert_eq!(v.values(), vec![1.0, 10.0, 100.0]);
         let l = Vary::parse("alpha=lin:3.2:3.8:4").expect("vary");
         let x = l.values();
         assert_eq!((x[0], x[3]), (3.2, 3.8));

@@ -329,6 +329,9 @@ pub fn analyse(dir: &Path, log_output: bool) -> Result<(Analysis, Vec<PathBuf>)>
     let (morris, sobol) = match design.method {
         Method::Morris { .. } => (Some(gsa::morris(&unit_points, &y, d, RESAMPLES, design.seed)), None),
         Method::Sobol { second_order, .. } => (None, Some(gsa::sobol(&y, d, second_order, RESAMPLES, design.seed))),
+        Method::Given { .. } => {
+            bail!("{} holds points given by a table: there is no estimator to apply", dir.display())
+        }
     };
     let analysis = Analysis {
         program: crate::provenance::program(),

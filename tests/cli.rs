@@ -470,3 +470,76 @@ fn a_sensitivity_design_runs_in_shards_merges_and_analyses_to_the_same_indices()
     let grid = grainscope(&["sensitivity", "--analyse", &d("nothing")]);
     assert!(!grid.status.success());
 }
+
+#[test]
+fn a_sweep_runs_the_points_of_a_table_and_ties_a_parameter_to_another() {
+    let dir = tempfile::tempdir().expect("tempdir");
+    let d = |name: &str| dir.path().join(name).to_str().expect("utf8").to_string();
+    std::fs::write(dir.path().join("points.csv"), "velocity [m/s],surface_energy\n2,0.74\n8,0.74\n1e-3,0.5\n30,1.2\n")
+        .expect("write");
+    let out =
+        grainscope(&["sweep", "ice-bounce-8ms", "--points", &d("points.csv"), "--scalars", "sticks", "--out", &d("t")]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let table = std::fs::read_to_string(dir.path().join("t/sweep.csv")).expect("table");
+    // The values as written (1e-3 reads back as 0.001), in the table's order.
+    assert_eq!(
+        table,
+        "point,velocity [m s^-1],surface_energy [J m^-2],sticks,error\n0,2,0.74,1,\n1,8,0.74,0,\n2,0.001,0.5,1,\n3,30,1.2,0,\n"
+    );
+    // Resumed: nothing computed again.
+    let again =
+        grainscope(&["sweep", "ice-bounce-8ms", "--points", &d("points.csv"), "--scalars", "sticks", "--out", &d("t")]);
+    assert!(String::from_utf8_lossy(&again.stdout).contains("(4 already done, 0 failed)"));
+    // A point outside a range, and a malformed row, are named.
+    std::fs::write(dir.path().join("bad.csv"), "velocity\n1e9\n").expect("write");
+    let bad = grainscope(&["sweep", "ice-bounce-8ms", "--points", &d("bad.csv"), "--out", &d("b")]);
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("velocity = 1e9 is outside"), "{bad:?}");
+    std::fs::write(dir.path().join("bad.csv"), "velocity\n1\nfast\n").expect("write");
+    let bad = grainscope(&["sweep", "ice-bounce-8ms", "--points", &d("bad.csv"), "--out", &d("b")]);
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("row 2"), "{bad:?}");
+
+    // Equal spheres: radius_2 follows radius_1, so v_stick falls as R^(-5/6)
+    // or so; a log grid's middle value is printed as written.
+    let out = grainscope(&[
+        "sweep",
+        "restitution-ice",
+        "--vary",
+        "radius_1=log:1e-6:4e-6:3",
+        "--tie",
+        "radius_2=radius_1",
+        "--scalars",
+        "v_stick",
+        "--out",
+        &d("tied"),
+    ]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let table = std::fs::read_to_string(dir.path().join("tied/sweep.csv")).expect("table");
+    let rows: Vec<Vec<&str>> = table.lines().skip(1).map(|l| l.split(',').collect()).collect();
+    assert_eq!(rows[1][1], "0.000002", "{table}");
+    let v: Vec<f64> = rows.iter().map(|r| r[2].parse().expect("v_stick")).collect();
+    let slope = (v[2] / v[0]).ln() / 4f64.ln();
+    assert!((-1.3..-0.8).contains(&slope), "{slope}: {table}");
+    let untied = grainscope(&[
+        "sweep",
+        "restitution-ice",
+        "--vary",
+        "radius_1=log:1e-6:4e-6:3",
+        "--scalars",
+        "v_stick",
+        "--out",
+        &d("untied"),
+    ]);
+    assert!(untied.status.success());
+    assert_ne!(std::fs::read_to_string(dir.path().join("untied/sweep.csv")).expect("table"), table);
+    let bad = grainscope(&[
+        "sweep",
+        "restitution-ice",
+        "--vary",
+        "radius_1=log:1e-6:4e-6:3",
+        "--tie",
+        "radius_1=radius_2",
+        "--out",
+        &d("c"),
+    ]);
+    assert!(String::from_utf8_lossy(&bad.stderr).contains("must be another, not varied"), "{bad:?}");
+}

@@ -46,9 +46,11 @@ __all__ = [
     "Series",
     "lin",
     "log",
+    "morris",
     "presets",
     "run",
     "scenes",
+    "sobol",
     "sweep",
 ]
 
@@ -472,18 +474,22 @@ class Range:
         return np.linspace(self.start, self.stop, self.num)
 
 
-def lin(start: float, stop: float, num: int) -> Range:
-    """`num` values evenly spaced from `start` to `stop`."""
+def lin(start: float, stop: float, num: int = 0) -> Range:
+    """`num` values evenly spaced from `start` to `stop` (for a sweep; a
+    sensitivity range needs no count)."""
     return Range("lin", float(start), float(stop), int(num))
 
 
-def log(start: float, stop: float, num: int) -> Range:
-    """`num` values evenly spaced in the logarithm from `start` to `stop` (both > 0)."""
+def log(start: float, stop: float, num: int = 0) -> Range:
+    """`num` values evenly spaced in the logarithm from `start` to `stop` (both
+    > 0; for a sweep; a sensitivity range needs no count)."""
     return Range("log", float(start), float(stop), int(num))
 
 
 def _vary_text(name: str, values: Union[Range, Sequence[float], np.ndarray]) -> str:
     if isinstance(values, Range):
+        if values.num < 1:
+            raise ValueError(f"vary[{name!r}]: a sweep needs a count, e.g. gs.{values.spacing}({values.start!r}, {values.stop!r}, 10)")
         return values.text(name)
     if isinstance(values, (str, bytes)):
         raise TypeError(f"vary[{name!r}]: gs.lin(...), gs.log(...) or a list of numbers")
@@ -566,6 +572,163 @@ def sweep(
         t.attrs["program"] = _native.program()
         t.attrs["preset"] = preset_ron
     return t
+
+
+def _factor_text(name: str, values: Any) -> str:
+    """A factor of a sensitivity design: `gs.lin(a, b)`, `gs.log(a, b)` (the
+    count is ignored) or a pair (a, b), uniform in the value."""
+    if isinstance(values, Range):
+        return f"{name}={values.spacing}:{values.start!r}:{values.stop!r}"
+    if isinstance(values, (tuple, list)) and len(values) == 2 and all(isinstance(v, (int, float)) and not isinstance(v, bool) for v in values):
+        return f"{name}=lin:{float(values[0])!r}:{float(values[1])!r}"
+    raise TypeError(f"vary[{name!r}] takes gs.lin(a, b), gs.log(a, b) or a pair (a, b), not {values!r}")
+
+
+def _sensitivity(
+    method: str,
+    preset: Optional[str],
+    vary: Any,
+    output: Any,
+    scene: Optional[str],
+    tie: Any,
+    samples: int,
+    levels: int,
+    second_order: bool,
+    seed: int,
+    log_output: bool,
+    out: Any,
+    params: Mapping[str, Any],
+) -> Dict[str, Any]:
+    if not isinstance(vary, Mapping) or not vary:
+        raise TypeError("vary takes a mapping of parameter names to ranges, e.g. vary={'velocity': gs.log(1, 10)}")
+    if not isinstance(output, str):
+        raise TypeError(f"output takes a scalar's key (a text), not {type(output).__name__}")
+    ties = dict(tie or {})
+    for k, v in ties.items():
+        if not isinstance(k, str) or not isinstance(v, str):
+            raise TypeError("tie takes a mapping of parameter names to parameter names, e.g. tie={'radius_2': 'radius_1'}")
+    for name, value in (("samples", samples), ("levels", levels), ("seed", seed)):
+        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
+            raise TypeError(f"{name} takes a whole number, not {value!r}")
+    preset_ron = _native.preset_ron(preset, scene, _sets(params, None, preset, scene))
+    factors = [_factor_text(k, v) for k, v in vary.items()]
+    import tempfile
+
+    def go(folder: str) -> Dict[str, Any]:
+        text = _native.sensitivity_folder(
+            preset_ron, method, factors, [f"{k}={v}" for k, v in ties.items()], output,
+            int(samples), int(levels), bool(second_order), int(seed), bool(log_output), folder,
+        )
+        return json.loads(text)
+
+    if out is not None:
+        return go(str(out))
+    with tempfile.TemporaryDirectory() as folder:
+        return go(folder)
+
+
+def _attrs(frame: Any, analysis: Mapping[str, Any]) -> Any:
+    if hasattr(frame, "attrs"):
+        frame.attrs["program"] = analysis["program"]
+        frame.attrs["computed_by"] = analysis["computed_by"]
+        frame.attrs["runs"] = analysis["runs"]
+        frame.attrs["undefined"] = analysis["undefined"]
+        frame.attrs["bounded"] = analysis["bounded"]
+        frame.attrs["output"] = analysis["output"]
+    return frame
+
+
+def _frame(rows: Dict[str, List[float]], index: List[str]) -> Any:
+    try:
+        import pandas as pd
+    except ImportError:
+        return {"parameter": index, **{k: np.array(v, dtype=float) for k, v in rows.items()}}
+    return pd.DataFrame(rows, index=index)
+
+
+def _number(v: Any) -> float:
+    return math.nan if v is None else float(v)
+
+
+def morris(
+    preset: Optional[str] = None,
+    /,
+    *,
+    vary: Mapping[str, Any],
+    output: str,
+    scene: Optional[str] = None,
+    tie: Optional[Mapping[str, str]] = None,
+    trajectories: int = 20,
+    levels: int = 4,
+    seed: int = 2015,
+    log_output: bool = False,
+    out: Any = None,
+    **params: Any,
+) -> Any:
+    """Morris's elementary effects of scalar `output` over the ranges in
+    `vary` (`gs.lin(a, b)`, `gs.log(a, b)` or a pair): μ, μ*, σ and μ*'s
+    interval per parameter, as `grainscope sensitivity --method morris`.
+
+    `tie` maps a parameter to the one whose value it takes ({'radius_2':
+    'radius_1'}: equal spheres); `log_output` analyses ln of the output.
+    `out` keeps the runs in a folder (resumed when called again). Returns a
+    DataFrame shaped like SALib's `to_df()` (a row per parameter; `attrs`
+    name the build, the runs and how many were undefined or bounds), or a
+    dict of arrays without pandas.
+    """
+    a = _sensitivity("morris", preset, vary, output, scene, tie, trajectories, levels, False, seed, log_output, out, params)
+    names = [f["key"] for f in a["design"]["factors"]]
+    m = a["morris"]
+    rows = {k: [_number(i[k]) for i in m] for k in ("mu", "mu_star", "sigma", "mu_star_conf")}
+    return _attrs(_frame(rows, names), a)
+
+
+def sobol(
+    preset: Optional[str] = None,
+    /,
+    *,
+    vary: Mapping[str, Any],
+    output: str,
+    scene: Optional[str] = None,
+    tie: Optional[Mapping[str, str]] = None,
+    samples: int = 256,
+    second_order: bool = False,
+    seed: int = 2015,
+    log_output: bool = False,
+    out: Any = None,
+    **params: Any,
+) -> Any:
+    """Sobol' indices of scalar `output` over the ranges in `vary`, as
+    `grainscope sensitivity --method sobol`: `samples` base samples (a power
+    of two), N(d + 2) runs (N(2d + 2) with `second_order`).
+
+    Returns a list of frames shaped like SALib's `to_df()`: total indices
+    (ST, ST_conf), first-order (S1, S1_conf) and, with `second_order`, S2
+    and S2_conf indexed by parameter pairs. `tie`, `log_output` and `out`
+    as for `morris`.
+    """
+    a = _sensitivity("sobol", preset, vary, output, scene, tie, samples, 4, second_order, seed, log_output, out, params)
+    names = [f["key"] for f in a["design"]["factors"]]
+    r = a["sobol"]
+    idx = r["indices"]
+    total = _frame({"ST": [_number(i["total"]) for i in idx], "ST_conf": [_number(i["total_conf"]) for i in idx]}, names)
+    first = _frame({"S1": [_number(i["first"]) for i in idx], "S1_conf": [_number(i["first_conf"]) for i in idx]}, names)
+    frames = [_attrs(total, a), _attrs(first, a)]
+    if r.get("second"):
+        s2, conf = r["second"]
+        pairs = [(names[j], names[k]) for j in range(len(names)) for k in range(j + 1, len(names))]
+        rows = {
+            "S2": [_number(s2[j][k]) for j in range(len(names)) for k in range(j + 1, len(names))],
+            "S2_conf": [_number(conf[j][k]) for j in range(len(names)) for k in range(j + 1, len(names))],
+        }
+        try:
+            import pandas as pd
+
+            second = pd.DataFrame(rows, index=pd.MultiIndex.from_tuples(pairs))
+        except ImportError:
+            second = {"pair": pairs, **{k: np.array(v) for k, v in rows.items()}}
+        frames.append(_attrs(second, a))
+    return frames
 
 
 def _table(text: str) -> Any:

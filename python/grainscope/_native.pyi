@@ -31,3 +31,16 @@ def sweep_points(preset_ron: str, vary: Sequence[str]) -> int: ...
 def sweep_table(preset_ron: str, vary: Sequence[str], scalars: Sequence[str], k: int = 1, n: int = 1) -> str: ...
 def merge_tables(preset_ron: str, vary: Sequence[str], scalars: Sequence[str], tables: Sequence[str]) -> str: ...
 def sweep_folder(preset_ron: str, vary: Sequence[str], scalars: Sequence[str], out: str) -> str: ...
+def sensitivity_folder(
+    preset_ron: str,
+    method: str,
+    factors: Sequence[str],
+    tie: Sequence[str],
+    output: str,
+    samples: int,
+    levels: int,
+    second_order: bool,
+    seed: int,
+    log_output: bool,
+    out: str,
+) -> str: ...

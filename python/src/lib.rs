@@ -440,6 +440,46 @@ fn sweep_folder(
         .map_err(|e| PyValueError::new_err(format!("{}: {e}", out.join("sweep.csv").display())))
 }
 
+/// Runs a global sensitivity design into folder `out` as the command
+/// line's `sensitivity --out` does (resuming from the runs already there)
+/// and analyses it; returns the analysis as JSON (`sensitivity.json`'s
+/// "analysis").
+#[pyfunction]
+#[allow(clippy::too_many_arguments)]
+#[pyo3(signature = (preset_ron, method, factors, tie, output, samples, levels, second_order, seed, log_output, out))]
+fn sensitivity_folder(
+    py: Python<'_>,
+    preset_ron: &str,
+    method: &str,
+    factors: Vec<String>,
+    tie: Vec<String>,
+    output: String,
+    samples: usize,
+    levels: usize,
+    second_order: bool,
+    seed: u64,
+    log_output: bool,
+    out: PathBuf,
+) -> PyResult<String> {
+    use grainscope::global_sensitivity::{Design, Method, parse_factor};
+    let preset = from_ron(preset_ron)?;
+    let factors = factors.iter().map(|f| parse_factor(f)).collect::<Result<Vec<_>, _>>().map_err(PyValueError::new_err)?;
+    let method = match method {
+        "morris" => Method::Morris { trajectories: samples, levels },
+        "sobol" => Method::Sobol { samples, second_order },
+        other => return Err(PyValueError::new_err(format!("method {other:?}: morris or sobol"))),
+    };
+    let design = Design { method, factors, seed };
+    design.unit_points().map_err(|e| PyValueError::new_err(e.to_string()))?;
+    let folder = out.clone();
+    let analysis = interruptible(py, &Progress::default(), move |_| {
+        grainscope::sweep_files::run_design(preset, design, &tie, &[output], Shard::ALL, &folder, &|_, _| {})
+            .and_then(|_| grainscope::sweep_files::analyse(&folder, log_output))
+    })?
+    .map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
+    serde_json::to_string(&analysis.0).map_err(|e| PyValueError::new_err(e.to_string()))
+}
+
 /// The module.
 #[pymodule]
 fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
@@ -455,5 +495,6 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(sweep_table, m)?)?;
     m.add_function(wrap_pyfunction!(merge_tables, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_folder, m)?)?;
+    m.add_function(wrap_pyfunction!(sensitivity_folder, m)?)?;
     Ok(())
 }

@@ -325,3 +325,44 @@ def test_results_and_tables_name_the_build_and_preset():
     assert df.attrs["program"] == r.program and "Hysteresis" in df.attrs["preset"]
     t = gs.sweep("ice-bounce-8ms", vary={"velocity": [2.0, 8.0]}, scalars=["e"])
     assert t.attrs["program"] == r.program and "velocity" in t.attrs["preset"]
+
+
+def test_morris_and_sobol_equal_the_command_lines_indices(cli, tmp_path):
+    vary = {"velocity": gs.log(3, 30), "radius_1": gs.log(1e-6, 4e-6)}
+    m = gs.morris("ice-bounce-8ms", vary=vary, output="e", tie={"radius_2": "radius_1"}, trajectories=6, out=tmp_path / "m")
+    assert list(m.index) == ["velocity", "radius_1"]
+    assert list(m.columns) == ["mu", "mu_star", "sigma", "mu_star_conf"]
+    assert m.attrs["program"].startswith("grainscope") and m.attrs["runs"] == 18
+    args = [
+        str(cli), "sensitivity", "ice-bounce-8ms", "--method", "morris", "--samples", "6", "--vary", "velocity=log:3.0:30.0",
+        "--vary", "radius_1=log:1e-06:4e-06", "--tie", "radius_2=radius_1", "--output", "e", "--out", str(tmp_path / "cli"),
+    ]
+    subprocess.run(args, check=True, capture_output=True)
+    expected = pd.read_csv(tmp_path / "cli" / "indices.csv", index_col=0)
+    # The same runs, the same indices (μ*'s interval is a bootstrap of the same seed too).
+    assert np.allclose(m.to_numpy(), expected[["mu", "mu_star", "sigma", "mu_star_conf"]].to_numpy(), rtol=0, atol=0)
+    assert (tmp_path / "m" / "sweep.csv").read_bytes() == (tmp_path / "cli" / "sweep.csv").read_bytes()
+    # Called again on its folder, it resumes: the same frame.
+    again = gs.morris("ice-bounce-8ms", vary=vary, output="e", tie={"radius_2": "radius_1"}, trajectories=6, out=tmp_path / "m")
+    pd.testing.assert_frame_equal(again, m)
+
+    total, first, second = gs.sobol("ice-bounce-8ms", vary=vary, output="e", samples=16, second_order=True, log_output=True)
+    assert list(total.columns) == ["ST", "ST_conf"] and list(first.columns) == ["S1", "S1_conf"]
+    assert list(second.index) == [("velocity", "radius_1")] and list(second.columns) == ["S2", "S2_conf"]
+    assert total.attrs["runs"] == 16 * 6 and total.attrs["output"] == "ln e"
+    assert total["ST"]["velocity"] > total["ST"]["radius_1"]
+
+
+def test_sensitivity_arguments_are_checked():
+    with pytest.raises(TypeError, match="vary takes a mapping"):
+        gs.morris("ice-bounce-8ms", vary=[("velocity", (1, 2))], output="e")
+    with pytest.raises(TypeError, match=r"vary\['velocity'\] takes"):
+        gs.morris("ice-bounce-8ms", vary={"velocity": "fast"}, output="e")
+    with pytest.raises(TypeError, match="output takes"):
+        gs.sobol("ice-bounce-8ms", vary={"velocity": (1, 10)}, output=3)
+    with pytest.raises(ValueError, match="power of two"):
+        gs.sobol("ice-bounce-8ms", vary={"velocity": (1, 10)}, output="e", samples=100)
+    with pytest.raises(ValueError, match="no scalar 'speed'"):
+        gs.morris("ice-bounce-8ms", vary={"velocity": (1, 10)}, output="speed")
+    with pytest.raises(ValueError, match="a sweep needs a count"):
+        gs.sweep("ice-bounce-8ms", vary={"velocity": gs.log(1, 10)})

@@ -463,7 +463,8 @@ fn sensitivity_folder(
 ) -> PyResult<String> {
     use grainscope::global_sensitivity::{Design, Method, parse_factor};
     let preset = from_ron(preset_ron)?;
-    let factors = factors.iter().map(|f| parse_factor(f)).collect::<Result<Vec<_>, _>>().map_err(PyValueError::new_err)?;
+    let factors =
+        factors.iter().map(|f| parse_factor(f)).collect::<Result<Vec<_>, _>>().map_err(PyValueError::new_err)?;
     let method = match method {
         "morris" => Method::Morris { trajectories: samples, levels },
         "sobol" => Method::Sobol { samples, second_order },

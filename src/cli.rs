@@ -392,7 +392,7 @@ pub fn run(command: Command) -> Result<()> {
                         .map_err(|e| anyhow::anyhow!("{}: {e}", table.display()))?;
                     crate::sweep_files::run_design(p, design, &tie, &scalars, shard, &out, &report)?
                 }
-                None => crate::sweep_files::run_tied(p, &vary, &tie, &scalars, shard, &out, &report)?,
+                None => crate::sweep_files::run(p, &vary, &tie, &scalars, shard, &out, &report)?,
             };
             say(format_args!(
                 "{} points ({} already done, {} failed); wrote {}",

@@ -55,6 +55,28 @@ fn builds(earlier: &str, now: &str) -> String {
 }
 
 impl SweepFile {
+    /// The record of a sweep of `preset` over `vary` (or the points of
+    /// `design`) with `tie`, shard `shard`, by this build; its scalars are
+    /// filled in when the columns are known.
+    fn new(
+        preset: Preset,
+        vary: Vec<String>,
+        tie: &[String],
+        design: Option<crate::global_sensitivity::Design>,
+        shard: Shard,
+    ) -> SweepFile {
+        SweepFile {
+            preset,
+            vary,
+            scalars: Vec::new(),
+            units: Vec::new(),
+            shard: format!("{}/{}", shard.k, shard.n),
+            program: crate::provenance::program(),
+            tie: tie.to_vec(),
+            design,
+        }
+    }
+
     /// The plan the file describes, and its columns.
     pub fn plan(&self) -> Result<(Plan, Columns)> {
         let ties = self.tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
@@ -95,21 +117,10 @@ pub struct Summary {
     pub files: Vec<PathBuf>,
 }
 
-/// Runs `preset` over `vary` (shard `shard`) into `out`, resuming from rows
-/// already there; `report` hears each finished point (done, of total).
+/// Runs `preset` over `vary` with `tie` (`TIED=SOURCE`, none for a plain
+/// grid; shard `shard`) into `out`, resuming from rows already there;
+/// `report` hears each finished point (done, of total).
 pub fn run(
-    preset: Preset,
-    vary: &[String],
-    scalars: &[String],
-    shard: Shard,
-    out: &Path,
-    report: &(dyn Fn(usize, usize) + Sync),
-) -> Result<Summary> {
-    run_tied(preset, vary, &[], scalars, shard, out, report)
-}
-
-/// [`run`] with parameters tied to others (`TIED=SOURCE`).
-pub fn run_tied(
     preset: Preset,
     vary: &[String],
     tie: &[String],
@@ -118,20 +129,9 @@ pub fn run_tied(
     out: &Path,
     report: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Summary> {
-    let parsed = vary.iter().map(|v| Vary::parse(v)).collect::<Result<Vec<_>, _>>()?;
-    let ties = tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
-    let plan = Plan::new(preset.scene.clone(), parsed)?.with_ties(ties)?;
-    let file = SweepFile {
-        preset,
-        vary: plan.vary.iter().map(Vary::text).collect(),
-        scalars: Vec::new(),
-        units: Vec::new(),
-        shard: format!("{}/{}", shard.k, shard.n),
-        program: crate::provenance::program(),
-        tie: tie.to_vec(),
-        design: None,
-    };
-    run_plan(file, plan, scalars, shard, out, report)
+    // Recorded in canonical form.
+    let vary = vary.iter().map(|v| Vary::parse(v).map(|v| v.text())).collect::<Result<Vec<_>, _>>()?;
+    run_plan(SweepFile::new(preset, vary, tie, None, shard), scalars, shard, out, report)
 }
 
 /// Runs the points of the sample design `design` over `preset` (shard
@@ -146,30 +146,18 @@ pub fn run_design(
     out: &Path,
     report: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Summary> {
-    let ties = tie.iter().map(|t| sweep::parse_tie(t)).collect::<Result<Vec<_>, _>>()?;
-    let plan = Plan::of_points(preset.scene.clone(), design.vary(), design.points()?)?.with_ties(ties)?;
-    let file = SweepFile {
-        preset,
-        vary: Vec::new(),
-        scalars: Vec::new(),
-        units: Vec::new(),
-        shard: format!("{}/{}", shard.k, shard.n),
-        program: crate::provenance::program(),
-        tie: tie.to_vec(),
-        design: Some(design),
-    };
-    run_plan(file, plan, scalars, shard, out, report)
+    run_plan(SweepFile::new(preset, Vec::new(), tie, Some(design), shard), scalars, shard, out, report)
 }
 
-/// Runs `plan`'s points of `shard` into `out` as `file` describes them.
+/// Runs the points of `shard` of the plan `file` describes into `out`.
 fn run_plan(
     mut file: SweepFile,
-    plan: Plan,
     scalars: &[String],
     shard: Shard,
     out: &Path,
     report: &(dyn Fn(usize, usize) + Sync),
 ) -> Result<Summary> {
+    let (plan, _) = file.plan()?;
     let progress = Progress::default();
     let columns = Columns::of(&plan, scalars, &progress)?;
     file.scalars = columns.keys.clone();

@@ -433,7 +433,7 @@ fn sweep_folder(
     checked_plan(preset_ron, &vary)?;
     let folder = out.clone();
     interruptible(py, &Progress::default(), move |_| {
-        grainscope::sweep_files::run(preset, &vary, &scalars, Shard::ALL, &folder, &|_, _| {})
+        grainscope::sweep_files::run(preset, &vary, &[], &scalars, Shard::ALL, &folder, &|_, _| {})
     })?
     .map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
     std::fs::read_to_string(out.join("sweep.csv"))

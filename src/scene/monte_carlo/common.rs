@@ -181,6 +181,19 @@ pub fn live_view<'a>(
     }
 }
 
+/// The runs of `p` from the scene's cache (computed only if not cached),
+/// each run's progress drawn live by `output` as it computes.
+pub fn runs_shown_live(
+    p: &ColumnParams,
+    ctx: &mut crate::scene::core::Context<'_>,
+    output: impl Fn(&[Run]) -> crate::scene::core::SceneOutput + Sync,
+) -> Result<Arc<Vec<Run>>, SceneError> {
+    let progress = ctx.progress;
+    let live = live_view(progress, output);
+    let cache: &mut RunCache = ctx.caches.get();
+    cache.get_observed(p, progress, &live)
+}
+
 /// The last Monte Carlo runs, shared by the Monte Carlo scenes: up to four
 /// parameter sets are kept (the erosion scene runs three thresholds).
 #[derive(Debug, Default)]

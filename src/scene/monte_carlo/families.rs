@@ -2,7 +2,7 @@
 //! family as a dot in mass–filling-factor space at the snapshot times, with
 //! the peak track φ_p(m_p) and the semi-analytical track for comparison.
 
-use super::common::{ColumnCompaction, ColumnParams, RunCache};
+use super::common::{ColumnCompaction, ColumnParams};
 use crate::figure::{Axis, Figure, Series, Style};
 use crate::physics::aggregate::Aggregate;
 use crate::physics::coagulation::{FamilyPoint, Run};
@@ -117,10 +117,8 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
 
     /// Computes the scene.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        let (p, progress) = (self, ctx.progress);
-        let cache: &mut RunCache = ctx.caches.get();
-        let live = super::common::live_view(progress, |runs| output(p, runs));
-        let runs = cache.get_observed(&p.run, progress, &live)?;
+        let p = self;
+        let runs = super::common::runs_shown_live(&p.run, ctx, |runs| output(p, runs))?;
         let mut out = output(p, &runs);
         out.extra = crate::scene::core::Extra::Model(crate::scene::core::ModelData(runs));
         Ok(out)

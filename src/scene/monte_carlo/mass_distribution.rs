@@ -2,7 +2,7 @@
 //! mass distribution m²f(m)/ρ_d of a disk column at chosen times, mean ± 1σ
 //! over runs, with the growth and drift timescales of the peak mass.
 
-use super::common::{ColumnParams, RunCache, endings, summary};
+use super::common::{ColumnParams, endings, summary};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::coagulation::{Run, Sample, mass_distribution};
 use crate::physics::constants::YEAR;
@@ -90,10 +90,8 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
 
     /// Computes the scene.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
-        let (p, progress) = (self, ctx.progress);
-        let cache: &mut RunCache = ctx.caches.get();
-        let live = super::common::live_view(progress, |runs| output(p, runs));
-        let runs = cache.get_observed(&p.run, progress, &live)?;
+        let p = self;
+        let runs = super::common::runs_shown_live(&p.run, ctx, |runs| output(p, runs))?;
         Ok(output(p, &runs))
     }
 }

@@ -7,7 +7,7 @@ use grainscope::physics::coagulation::{Column, Compaction, RunConfig};
 use grainscope::physics::constants::{AU, YEAR};
 use grainscope::physics::disk::GasDisk;
 use grainscope::physics::growth::{GrowthModel, Porosity};
-use grainscope::physics::monte_carlo::{Analytic, Body, Engine, Family, Model, Settings};
+use grainscope::physics::monte_carlo::{Analytic, Body, Effect, Engine, Family, Model, Settings};
 
 const PARTICLES: f64 = 1e20;
 
@@ -251,6 +251,39 @@ fn the_smooth_exact_curve_integrates_to_the_exact_bin_masses() {
         let integral: f64 = (0..n).map(|i| kernel.exact_mass_per_ln((a + (i as f64 + 0.5) * h).exp(), t) * h).sum();
         let binned = kernel.exact_mass_between(k, 2.0 * k, t);
         assert!((integral / binned - 1.0).abs() < 1e-3, "{kernel:?}: {integral} vs {binned}");
+    }
+}
+
+#[test]
+fn pair_data_follow_the_families_as_they_are_now() {
+    // A merge that moves a family by less than 10⁻³ keeps its cached
+    // properties. The change of φ in one sticking collision, which sets N_ε,
+    // is a small difference of filling factors, so it must come from the
+    // family's mass and φ now, not from the cached properties (which would
+    // make it up to 10⁻³ φ and shrink every group event of a large target).
+    // A row of pairs gives the same data as one pair at a time.
+    let cfg = column(20.0, Compaction::Full);
+    let col = cfg.column;
+    let m0 = Monomer::ice().mass();
+    let family = |n: f64, phi: f64| {
+        let body = Body { mass: n * m0, filling: phi };
+        Family { mass: body.mass, filling: phi, groups: 1.0, zoom: 0, props: col.props(body) }
+    };
+    let mut target = family(1e12, 1e-3);
+    target.mass *= 1.0 + 5e-4;
+    target.filling *= 1.0 - 5e-4;
+    let others: Vec<_> =
+        [(1.0, 1.0), (30.0, 0.2), (1e4, 0.02), (1e6, 1e-3)].iter().map(|&(n, phi)| family(n, phi)).collect();
+    let mut row = vec![(0.0, Effect::Bounce); others.len()];
+    let which: Vec<usize> = (0..others.len()).collect();
+    col.pair_row(&target, &others, &which, &mut row);
+    for (p, from_row) in others.iter().zip(&row) {
+        let (rate, effect) = col.pair(&target, p);
+        assert_eq!((rate, effect), *from_row);
+        let v = col.velocity(&target, p);
+        let filling = col.filling_after(target.body(), p.body(), v);
+        assert_eq!(effect, Effect::Stick { filling }, "projectile of {} kg", p.mass);
+        assert!((filling / target.filling - 1.0).abs() < 1e-3, "φ {filling} from {}", target.filling);
     }
 }
 

@@ -324,15 +324,43 @@ impl DriftTerms {
 /// number's terms `d1`, the effective smaller Stokes number `s2_eff` and the
 /// effective difference `diff`, m s⁻¹.
 pub fn thesis_turbulence(env: &Local, d1: &DriftTerms, s2_eff: f64, diff: f64) -> f64 {
-    let vg = env.alpha.sqrt() * env.sound_speed;
-    let re = env.reynolds;
-    let s1 = d1.stokes;
-    if s1 < 1.0 / re.sqrt() {
-        vg * re.sqrt().sqrt() * diff
-    } else if s1 < 1.0 {
-        vg * 1.55 * d1.sqrt_stokes
-    } else {
-        vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2_eff)).sqrt()
+    TurbulenceConstants::of(env).velocity(d1, s2_eff, diff)
+}
+
+/// The constants of the gas that [`thesis_turbulence`] needs, computed once
+/// for many pairs of particles.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct TurbulenceConstants {
+    /// Largest eddy speed α^{1/2} c_s, m s⁻¹.
+    vg: f64,
+    /// Stokes number of the smallest eddies, Re^{-1/2}.
+    st_eta: f64,
+    /// Re^{1/4}.
+    re_quarter: f64,
+}
+
+impl TurbulenceConstants {
+    /// The constants at the midplane of `env`.
+    pub fn of(env: &Local) -> TurbulenceConstants {
+        let re = env.reynolds;
+        TurbulenceConstants {
+            vg: env.alpha.sqrt() * env.sound_speed,
+            st_eta: 1.0 / re.sqrt(),
+            re_quarter: re.sqrt().sqrt(),
+        }
+    }
+
+    /// [`thesis_turbulence`] with these constants.
+    pub fn velocity(&self, d1: &DriftTerms, s2_eff: f64, diff: f64) -> f64 {
+        let vg = self.vg;
+        let s1 = d1.stokes;
+        if s1 < self.st_eta {
+            vg * self.re_quarter * diff
+        } else if s1 < 1.0 {
+            vg * 1.55 * d1.sqrt_stokes
+        } else {
+            vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2_eff)).sqrt()
+        }
     }
 }
 

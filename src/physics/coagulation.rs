@@ -27,10 +27,11 @@
 
 use super::PhysicsError;
 use super::aggregate::{
-    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceModel, brownian_squared,
+    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants, TurbulenceModel,
     dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
-    hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time, thesis_turbulence,
+    hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
 };
+use super::constants::K_B;
 use super::disk::Local;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Settings};
 use rayon::prelude::*;
@@ -78,6 +79,8 @@ pub struct Props {
     /// The terms of the relative velocity that depend on this family alone,
     /// for the pairs in which it has the larger Stokes number.
     drift: DriftTerms,
+    /// Scale height squared, m².
+    scale_height2: f64,
 }
 
 /// The column's constants that every pair needs, computed once per row of pairs.
@@ -89,12 +92,25 @@ struct Constants {
     m0: f64,
     /// Rolling energy E_roll, J.
     e_roll: f64,
+    /// 8k_BT/π, J: the Brownian term is this times (m₁ + m₂)/(m₁m₂).
+    brownian: f64,
+    /// The settling, radial and azimuthal terms of a particle with St = 0.
+    at_rest: (f64, f64, f64),
+    /// The gas's constants of the thesis's turbulent term.
+    turbulence: TurbulenceConstants,
 }
 
 impl Constants {
     fn of(column: &Column) -> Constants {
         let mono = &column.monomer;
-        Constants { rho0: mono.density, m0: mono.mass(), e_roll: mono.rolling_energy() }
+        Constants {
+            rho0: mono.density,
+            m0: mono.mass(),
+            e_roll: mono.rolling_energy(),
+            brownian: 8.0 * K_B * column.env.temperature / PI,
+            at_rest: drift_terms(&column.env, 0.0),
+            turbulence: TurbulenceConstants::of(&column.env),
+        }
     }
 }
 
@@ -111,6 +127,13 @@ impl Column {
     /// with the larger Stokes number taken from its cached properties (the
     /// same numbers to rounding; a unit test holds them together).
     pub fn velocity(&self, a: &Family<Props>, b: &Family<Props>) -> f64 {
+        self.velocity_with(&Constants::of(self), a, b)
+    }
+
+    /// [`Column::velocity`] with the constants computed once. A projectile
+    /// whose effective Stokes number is 0 (St₂ ≤ ε²St₁/2 or so) has the
+    /// drift terms of a particle at rest, computed once.
+    fn velocity_with(&self, k: &Constants, a: &Family<Props>, b: &Family<Props>) -> f64 {
         if self.turbulence != TurbulenceModel::Thesis {
             return relative_velocity(&self.env, &self.particle(a), &self.particle(b), self.turbulence, self.epsilon)
                 .total();
@@ -119,10 +142,10 @@ impl Column {
         let (p1, p2) = if a.props.stokes >= b.props.stokes { (a, b) } else { (b, a) };
         let (s1, s2) = (p1.props.stokes, p2.props.stokes);
         let (diff, s2_eff) = effective_difference(s1, s2, self.epsilon);
-        let brownian2 = brownian_squared(env.temperature, a.mass, b.mass);
+        let brownian2 = k.brownian * (a.mass + b.mass) / (a.mass * b.mass);
         let d1 = &p1.props.drift;
-        let turbulence = thesis_turbulence(env, d1, s2_eff, diff);
-        let (settling2, radial2, azimuthal2) = drift_terms(env, s2_eff);
+        let turbulence = k.turbulence.velocity(d1, s2_eff, diff);
+        let (settling2, radial2, azimuthal2) = if s2_eff > 0.0 { drift_terms(env, s2_eff) } else { k.at_rest };
         let settling = d1.settling - settling2;
         let radial = d1.radial - radial2;
         let azimuthal = d1.azimuthal - azimuthal2;
@@ -209,10 +232,13 @@ fn filling_with(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v: f6
 impl Column {
     /// [`Model::pair`] with the constants computed once.
     fn pair_with(&self, k: &Constants, a: &Family<Props>, b: &Family<Props>) -> (f64, Effect) {
-        let v = self.velocity(a, b);
+        let v = self.velocity_with(k, a, b);
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
         let effect = match outcome(t.mass, p.mass, v, &self.thresholds) {
             Outcome::Stick => {
+                // From the family's mass and φ, not its cached properties: a
+                // merge may move them a little without refreshing those, and
+                // the change of φ in one collision is a small difference.
                 let volume = |f: &Family<Props>| f.mass / (k.rho0 * f.filling);
                 Effect::Stick { filling: filling_with(k, (t.mass, volume(t)), (p.mass, volume(p)), v) }
             }
@@ -233,11 +259,13 @@ impl Model for Column {
     fn props(&self, body: Body) -> Props {
         let agg = Aggregate { mass: body.mass, filling: body.filling };
         let st = stopping_time(&self.env, &self.monomer, &agg, self.newton).time * self.env.omega;
+        let scale_height = dust_scale_height(self.env.alpha, st) * self.env.scale_height;
         Props {
             radius: agg.radius(&self.monomer),
             stokes: st,
-            scale_height: dust_scale_height(self.env.alpha, st) * self.env.scale_height,
+            scale_height,
             drift: DriftTerms::of(&self.env, st),
+            scale_height2: scale_height * scale_height,
         }
     }
 
@@ -252,10 +280,11 @@ impl Model for Column {
     }
 
     /// [`Model::pair`] over a row, with the monomer's constants computed once.
-    fn pair_row(&self, a: &Family<Props>, others: &[Family<Props>], out: &mut Vec<(f64, Effect)>) {
+    fn pair_row(&self, a: &Family<Props>, others: &[Family<Props>], which: &[usize], out: &mut [(f64, Effect)]) {
         let k = Constants::of(self);
-        out.clear();
-        out.extend(others.iter().map(|b| self.pair_with(&k, a, b)));
+        for &j in which {
+            out[j] = self.pair_with(&k, a, &others[j]);
+        }
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional
@@ -294,9 +323,10 @@ impl Column {
     /// The rate coefficient of a pair at relative velocity `v`:
     /// h_ij/(h_i h_j) with h_ij = (h_i⁻² + h_j⁻²)^{-1/2} is 1/(h_i² + h_j²)^{1/2}.
     fn rate_at(&self, a: &Family<Props>, b: &Family<Props>, v: f64) -> f64 {
-        let (hi, hj) = (a.props.scale_height, b.props.scale_height);
-        let sigma = PI * (a.props.radius + b.props.radius).powi(2);
-        sigma / ((2.0 * PI).sqrt() * (hi * hi + hj * hj).sqrt()) * v
+        // π/(2π)^{1/2} = (π/2)^{1/2}.
+        const ROOT_HALF_PI: f64 = 1.253_314_137_315_500_3;
+        let r = a.props.radius + b.props.radius;
+        ROOT_HALF_PI * r * r * v / (a.props.scale_height2 + b.props.scale_height2).sqrt()
     }
 }
 

@@ -13,13 +13,15 @@
 //!
 //! Cost per event: O(F) for F families. For every pair of families the rate
 //! coefficient and the single-collision changes δm, δφ (which set N_ε) are
-//! cached in one symmetric matrix and recomputed only for families whose
-//! particles changed; the model evaluates a family's whole row at once. A
-//! pair's group rate (4.25) is w_i w_j times a unit rate 2^{z_lo + N_ε} K/V
-//! that depends on the zoom factors but not on the group counts, so an event
-//! that only changes group counts moves each partner's sum Σ_j w_j u_ij by
-//! one multiply-add, and re-zooming recomputes unit rates by cheap
-//! arithmetic. Event selection draws a family from w_i Σ_j w_j u_ij plus its
+//! cached and recomputed only for families whose particles changed: the
+//! model evaluates a family's whole row at once, in order of mass (so that
+//! pairs in the same regime of the model follow each other), and the row
+//! is written where the pair is read from (the row of the family computed
+//! last). A pair's group rate (4.25) is w_i w_j times a unit rate
+//! 2^{z_lo + N_ε} K/V that depends on the zoom factors but not on the group
+//! counts, so an event that only changes group counts moves each partner's
+//! sum Σ_j w_j u_ij by one multiply-add, and re-zooming recomputes unit
+//! rates by cheap arithmetic. Event selection draws a family from w_i Σ_j w_j u_ij plus its
 //! in-group rate, then its partner from that family's row.
 
 use rand::{Rng, SeedableRng};
@@ -147,12 +149,22 @@ pub trait Model: Sync {
         (self.rate(a, b), Effect::of(self.collide(t, p)))
     }
 
-    /// The pair data of family `a` with each of `others` (as
-    /// [`Model::pair`]), in order, into `out`. Models override it to share
+    /// The pair data of family `a` with each of `others[j]` for j in
+    /// `which` (as [`Model::pair`]) into `out[j]` (`out` holds
+    /// `others.len()` entries, and those not in `which` are left as they
+    /// are). `which` lists the families by mass, so that pairs in the same
+    /// regime of the model follow each other. Models override it to share
     /// work across a row.
-    fn pair_row(&self, a: &Family<Self::Props>, others: &[Family<Self::Props>], out: &mut Vec<(f64, Effect)>) {
-        out.clear();
-        out.extend(others.iter().map(|b| self.pair(a, b)));
+    fn pair_row(
+        &self,
+        a: &Family<Self::Props>,
+        others: &[Family<Self::Props>],
+        which: &[usize],
+        out: &mut [(f64, Effect)],
+    ) {
+        for &j in which {
+            out[j] = self.pair(a, &others[j]);
+        }
     }
 
     /// The filling factor of a newly made particle after any compaction that
@@ -347,15 +359,25 @@ impl<T: Copy + Default> Symmetric<T> {
         &self.data[i * self.stride..i * self.stride + n]
     }
 
-    /// Family `last` = n − 1 takes index k (k < n).
-    fn swap_remove(&mut self, k: usize, n: usize) {
-        let last = n - 1;
-        if k == last {
-            return;
+    /// The first `n` entries of row i, to write (the column is then
+    /// made equal to it with [`Symmetric::mirror_row`]).
+    fn row_mut(&mut self, i: usize, n: usize) -> &mut [T] {
+        &mut self.data[i * self.stride..i * self.stride + n]
+    }
+
+    /// The data of index `from` move to index `to` (both < n); `from`'s are
+    /// left as they were.
+    fn relocate(&mut self, from: usize, to: usize, n: usize) {
+        for j in 0..n {
+            let value = if j == to { self.get(from, from) } else { self.get(from, j) };
+            self.set(to, j, value);
         }
-        for j in 0..last {
-            let value = if j == k { self.get(last, last) } else { self.get(last, j) };
-            self.set(k, j, value);
+    }
+
+    /// Copies the first `n` entries of row i into column i.
+    fn mirror_row(&mut self, i: usize, n: usize) {
+        for j in 0..n {
+            self.data[j * self.stride + i] = self.data[i * self.stride + j];
         }
     }
 }
@@ -365,9 +387,6 @@ impl<T: Copy + Default> Symmetric<T> {
 struct Pair {
     /// K/V, s⁻¹ (pair collision rate; 0 for pairs that bounce).
     c: f64,
-    /// Group event rate (4.25) per group of each family, 2^{z_lo + N_ε} K/V
-    /// (0 on the diagonal): the rate of the pair (i ≠ j) is w_i w_j times this.
-    unit: f64,
     /// The smaller of ⌊log₂(f_m m_t/|δm|)⌋ and ⌊log₂(f_φ φ_t/|δφ|)⌋ of the
     /// target (+∞ without change), so that N_ε = ⌈max(z_hi − z_lo − these)⌉
     /// (4.22)–(4.24), and ⌈z − h⌉ = z − ⌊h⌋ for integer z. Integers and ±∞,
@@ -405,9 +424,18 @@ pub struct Engine<M: Model> {
     /// Group events so far.
     events: u64,
     initial_mass: f64,
-    /// The data of every pair, in one matrix so that keeping its columns
-    /// equal to its rows costs one pass.
+    /// The data of every pair: pair (i, j) is in row i if family i's data
+    /// were computed after family j's (`computed`), in row j otherwise, so
+    /// that computing a family's data writes one row.
     pairs: Symmetric<Pair>,
+    /// When each family's pair data were computed (a count of rows computed).
+    computed: Vec<u64>,
+    /// Rows computed so far.
+    rows: u64,
+    /// Group event rate (4.25) of each pair per group of each family,
+    /// 2^{z_lo + N_ε} K/V (0 on the diagonal): the rate of the pair (i ≠ j)
+    /// is w_i w_j times this. Kept symmetric (rows are summed for any family).
+    units: Symmetric<f64>,
     /// Twice each family's in-group event rate.
     in_group: Vec<f64>,
     /// Σ_{j ≠ i} w_j × unit(i, j) with the group counts in `counted`: family
@@ -429,6 +457,8 @@ pub struct Engine<M: Model> {
     /// Families whose particles changed in the merges under way (their pair
     /// data are recomputed when the merges are done).
     stale: Vec<bool>,
+    /// The indices of the families in order of mass.
+    by_mass: Vec<usize>,
     tally: Tally,
     rng: rand::rngs::StdRng,
     /// A row of model pair data, kept to reuse its allocation.
@@ -476,6 +506,9 @@ impl<M: Model> Engine<M> {
             events: 0,
             initial_mass: first.mass * particles,
             pairs: Symmetric::new(),
+            computed: vec![0],
+            rows: 0,
+            units: Symmetric::new(),
             in_group: vec![0.0],
             partner_sum: vec![0.0],
             counted: vec![0.0],
@@ -484,6 +517,7 @@ impl<M: Model> Engine<M> {
             since_zoom: 0,
             dirty: vec![false],
             stale: vec![false],
+            by_mass: vec![0],
             weight_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
@@ -599,24 +633,8 @@ impl<M: Model> Engine<M> {
     /// (ties: the more massive). 2^{z_lo} lo-particles each meet
     /// 2^{z_hi − z_lo − N_ε} hi-particles in one event (4.21)–(4.24).
     fn order(&self, i: usize, j: usize) -> (usize, usize, i32) {
-        let (a, b) = (&self.families[i], &self.families[j]);
-        let lo_first = a.zoom < b.zoom || (a.zoom == b.zoom && (a.mass > b.mass || (a.mass == b.mass && i < j)));
-        let (lo, hi) = if lo_first { (i, j) } else { (j, i) };
-        let (l, h) = (&self.families[lo], &self.families[hi]);
-        let span = h.zoom - l.zoom;
-        if span == 0 {
-            return (lo, hi, 0);
-        }
-        if l.mass < h.mass {
-            // The lo-particles are the projectiles: one on one.
-            return (lo, hi, span);
-        }
-        // Pair data are symmetric: read the row of the first family (the one
-        // whose rates are being refreshed), which is contiguous in memory.
-        // The headroom is an integer (or ±∞), so n needs no rounding up.
-        let n = f64::from(span) - f64::from(self.pairs.get(i, j).headroom);
-        let n_eps = if n.is_finite() { (n.max(0.0) as i32).min(span) } else { 0 };
-        (lo, hi, n_eps)
+        let (lo_first, n_eps) = order_of(&self.families[i], i, &self.families[j], j, self.data(i, j).headroom);
+        if lo_first { (i, j, n_eps) } else { (j, i, n_eps) }
     }
 
     /// In-group event rate (4.20): two groups meet particle by particle,
@@ -637,20 +655,15 @@ impl<M: Model> Engine<M> {
         }
     }
 
-    /// Group event rate (4.25) of the pair (i ≠ j) per group of each:
-    /// 2^{z_lo + N_ε} K/V.
-    fn unit_rate(&self, i: usize, j: usize) -> f64 {
-        let c = self.c(i, j);
-        if c <= 0.0 {
-            return 0.0;
-        }
-        let (lo, _, n_eps) = self.order(i, j);
-        exp2i(self.families[lo].zoom + n_eps) * c
+    /// The cached data of pair (i, j), from the row of the family whose data
+    /// were computed last.
+    fn data(&self, i: usize, j: usize) -> Pair {
+        if self.computed[i] >= self.computed[j] { self.pairs.get(i, j) } else { self.pairs.get(j, i) }
     }
 
     /// K/V of pair (i, j).
     fn c(&self, i: usize, j: usize) -> f64 {
-        self.pairs.get(i, j).c
+        self.data(i, j).c
     }
 
     /// Family i's share of twice the total event rate.
@@ -662,21 +675,43 @@ impl<M: Model> Engine<M> {
     fn reserve(&mut self, n: usize) {
         let used = self.families.len();
         self.pairs.reserve(n, used);
+        self.units.reserve(n, used);
     }
 
     /// Recomputes the cached pair data of family k (its body changed), then its rates.
     fn refresh_pairs(&mut self, k: usize) {
         let mut row = std::mem::take(&mut self.scratch);
-        self.model.pair_row(&self.families[k], &self.families, &mut row);
-        for (j, &(rate, effect)) in row.iter().enumerate() {
+        row.clear();
+        row.resize(self.families.len(), (0.0, Effect::Bounce));
+        self.model.pair_row(&self.families[k], &self.families, &self.by_mass, &mut row);
+        // As refresh_rates, with the pair data made in the same pass: the
+        // data go to row k (the newest), and the unit rates to row and column.
+        self.rows += 1;
+        self.computed[k] = self.rows;
+        let n = self.families.len();
+        let (now, before) = (self.families[k].groups, self.counted[k]);
+        let fk = self.families[k];
+        let mut sum = 0.0;
+        for &j in &self.by_mass {
+            let (rate, effect) = row[j];
             let (c, headroom) = self.pair_data(k, j, rate, effect);
-            // The column follows in refresh_rates.
-            let entry = self.pairs.at(k, j);
-            entry.c = c;
-            entry.headroom = headroom;
+            let pair = Pair { c, headroom };
+            *self.pairs.at(k, j) = pair;
+            if j == k {
+                continue;
+            }
+            let unit = self.units.at(k, j);
+            let old = *unit;
+            let new = unit_of(&fk, k, &self.families[j], j, &pair);
+            *unit = new;
+            self.partner_sum[j] += now * new - before * old;
+            sum += self.counted[j] * new;
         }
+        self.units.mirror_row(k, n);
+        self.partner_sum[k] = sum;
+        self.counted[k] = now;
+        self.in_group[k] = 2.0 * self.in_group_rate(k);
         self.scratch = row;
-        self.refresh_rates(k);
     }
 
     /// The cached data of pair (i, j), (K/V, headroom), from the model's rate
@@ -702,19 +737,24 @@ impl<M: Model> Engine<M> {
     fn refresh_rates(&mut self, k: usize) {
         let n = self.families.len();
         let (now, before) = (self.families[k].groups, self.counted[k]);
+        let fk = self.families[k];
+        let at = self.computed[k];
         let mut sum = 0.0;
-        for j in 0..n {
+        // In order of mass, so that the branches of the ordering of a pair
+        // are predictable.
+        let units = self.units.row_mut(k, n);
+        for &j in &self.by_mass {
             if j == k {
                 continue;
             }
-            let mut pair = self.pairs.get(k, j);
-            let old = pair.unit;
-            let new = self.unit_rate(k, j);
-            pair.unit = new;
-            self.pairs.set(k, j, pair);
+            let pair = if at >= self.computed[j] { self.pairs.get(k, j) } else { self.pairs.get(j, k) };
+            let old = units[j];
+            let new = unit_of(&fk, k, &self.families[j], j, &pair);
+            units[j] = new;
             self.partner_sum[j] += now * new - before * old;
             sum += self.counted[j] * new;
         }
+        self.units.mirror_row(k, n);
         self.partner_sum[k] = sum;
         self.counted[k] = now;
         self.in_group[k] = 2.0 * self.in_group_rate(k);
@@ -728,26 +768,13 @@ impl<M: Model> Engine<M> {
         let n = self.families.len();
         let change = self.families[k].groups - self.counted[k];
         if change != 0.0 {
-            for (sum, pair) in self.partner_sum.iter_mut().zip(self.pairs.row(k, n)) {
+            for (sum, unit) in self.partner_sum.iter_mut().zip(self.units.row(k, n)) {
                 // unit(k, k) = 0: family k's own sum is untouched.
-                *sum += change * pair.unit;
+                *sum += change * unit;
             }
         }
         self.counted[k] = self.families[k].groups;
         self.in_group[k] = 2.0 * self.in_group_rate(k);
-    }
-
-    /// Recomputes every unit rate and partner sum afresh.
-    fn rebuild_rates(&mut self) {
-        let n = self.families.len();
-        for i in 0..n {
-            for j in i + 1..n {
-                let mut pair = self.pairs.get(i, j);
-                pair.unit = self.unit_rate(i, j);
-                self.pairs.set(i, j, pair);
-            }
-        }
-        self.sum_afresh();
     }
 
     /// Sums every partner sum afresh from the unit rates (no accumulated rounding).
@@ -758,7 +785,7 @@ impl<M: Model> Engine<M> {
             self.in_group[i] = 2.0 * self.in_group_rate(i);
         }
         for i in 0..n {
-            self.partner_sum[i] = self.pairs.row(i, n).iter().zip(&self.counted).map(|(p, g)| p.unit * g).sum();
+            self.partner_sum[i] = self.units.row(i, n).iter().zip(&self.counted).map(|(u, g)| u * g).sum();
         }
         self.weight_scale = (0..n).map(|i| self.event_weight(i)).sum();
     }
@@ -770,34 +797,68 @@ impl<M: Model> Engine<M> {
         let family = Family { mass: body.mass, filling: body.filling, groups: particles / exp2i(zoom), zoom, props };
         let k = self.families.len();
         self.reserve(k + 1);
-        // Its row starts empty; the column is written whole when the pair
-        // data are computed, and nothing reads it before.
-        for j in 0..=k {
-            *self.pairs.at(k, j) = Pair::default();
-        }
+        // Its pair data are empty, and newer than any until they are
+        // computed (when the event's merges are done; nothing reads them
+        // before).
+        self.pairs.row_mut(k, k + 1).fill(Pair::default());
+        self.units.row_mut(k, k + 1).fill(0.0);
+        self.rows += 1;
         self.families.push(family);
         self.in_group.push(0.0);
         self.partner_sum.push(0.0);
         self.counted.push(0.0);
         self.dirty.push(false);
         self.stale.push(true);
+        self.computed.push(self.rows);
+        self.enlist(k);
     }
 
+    /// Puts family k into `by_mass` at its mass.
+    fn enlist(&mut self, k: usize) {
+        let m = self.families[k].mass;
+        let at = self.by_mass.partition_point(|&i| self.families[i].mass < m);
+        self.by_mass.insert(at, k);
+    }
+
+    /// Takes family k out of `by_mass` (before its mass changes).
+    fn unlist(&mut self, k: usize) {
+        let m = self.families[k].mass;
+        let from = self.by_mass.partition_point(|&i| self.families[i].mass < m);
+        if let Some(at) = self.by_mass[from..].iter().position(|&i| i == k) {
+            self.by_mass.remove(from + at);
+        }
+    }
+
+    /// Removes family k; the last family takes its index.
     fn remove_family(&mut self, k: usize) {
         let n = self.families.len();
         let counted = self.counted[k];
         if counted != 0.0 {
-            for (sum, pair) in self.partner_sum.iter_mut().zip(self.pairs.row(k, n)) {
-                *sum -= counted * pair.unit;
+            for (sum, unit) in self.partner_sum.iter_mut().zip(self.units.row(k, n)) {
+                *sum -= counted * unit;
             }
         }
-        self.pairs.swap_remove(k, n);
+        self.unlist(k);
+        let last = n - 1;
+        if k != last {
+            self.unlist(last);
+            // The pair data go to both row and column, from wherever they are.
+            for j in 0..last {
+                let pair = if j == k { self.pairs.get(last, last) } else { self.data(last, j) };
+                self.pairs.set(k, j, pair);
+            }
+            self.units.relocate(last, k, last);
+        }
+        self.computed.swap_remove(k);
         self.in_group.swap_remove(k);
         self.partner_sum.swap_remove(k);
         self.counted.swap_remove(k);
         self.dirty.swap_remove(k);
         self.stale.swap_remove(k);
         self.families.swap_remove(k);
+        if k != last {
+            self.enlist(k);
+        }
     }
 
     /// Performs one group event; returns false if no event is possible.
@@ -866,8 +927,8 @@ impl<M: Model> Engine<M> {
         let scaled = (target - in_group) / self.families[i].groups;
         let mut acc = 0.0;
         let mut last = if in_group > 0.0 { i } else { 0 };
-        for (j, (pair, groups)) in self.pairs.row(i, n).iter().zip(&self.counted).enumerate() {
-            let w = pair.unit * groups;
+        for (j, (unit, groups)) in self.units.row(i, n).iter().zip(&self.counted).enumerate() {
+            let w = unit * groups;
             if w > 0.0 {
                 acc += w;
                 last = j;
@@ -1111,28 +1172,50 @@ impl<M: Model> Engine<M> {
                 if body.filling < g.filling { (body.filling, g.filling) } else { (g.filling, body.filling) };
             (m_lo * p_lo * p_lo * p_lo) / (m_hi * p_hi * p_hi * p_hi)
         };
-        let healthy = |i: usize, g: &Family<M::Props>| Some(i) != except && g.groups > 0.0;
-        // The product finds the few candidates cheaply; among those within
-        // 10⁻⁹ of the best, the logarithmic score decides, so that near-ties
-        // fall by the score of Sect. 4.3.4 itself.
-        let best = self
-            .families
-            .iter()
-            .enumerate()
-            .filter(|(i, g)| healthy(*i, g))
-            .map(|(_, g)| product(g))
-            .fold(f64::NEG_INFINITY, f64::max);
+        let healthy = |i: usize| Some(i) != except && self.families[i].groups > 0.0;
+        let mass_ratio =
+            |g: &Family<M::Props>| if body.mass < g.mass { body.mass / g.mass } else { g.mass / body.mass };
+        // The product is at most the mass ratio, so the search walks out from
+        // the body's mass in `by_mass` both ways and stops where the mass
+        // ratio alone falls below what is needed. The product finds the few
+        // candidates cheaply; among those within 10⁻⁹ of the best, the
+        // logarithmic score decides, so that near-ties fall by the score of
+        // Sect. 4.3.4 itself (exact ties: the higher index).
+        let start = self.by_mass.partition_point(|&i| self.families[i].mass < body.mass);
+        let (above, below) = (&self.by_mass[start..], &self.by_mass[..start]);
+        let mut best = f64::NEG_INFINITY;
+        for side in [&mut above.iter(), &mut below.iter().rev()] as [&mut dyn Iterator<Item = &usize>; 2] {
+            for &i in side {
+                let g = &self.families[i];
+                if mass_ratio(g) < best * (1.0 - 1e-9) {
+                    break;
+                }
+                if healthy(i) {
+                    best = best.max(product(g));
+                }
+            }
+        }
         let score = |g: &Family<M::Props>| {
             let (rm, rp) = ratios(g);
             rm.ln() + 3.0 * rp.ln()
         };
-        self.families
-            .iter()
-            .enumerate()
-            .filter(|(i, g)| healthy(*i, g) && product(g) >= best * (1.0 - 1e-9))
-            .map(|(i, g)| (i, score(g)))
-            .max_by(|a, b| a.1.total_cmp(&b.1))
-            .map(|(i, _)| i)
+        let floor = best * (1.0 - 1e-9);
+        let mut chosen: Option<(usize, f64)> = None;
+        for side in [&mut above.iter(), &mut below.iter().rev()] as [&mut dyn Iterator<Item = &usize>; 2] {
+            for &i in side {
+                let g = &self.families[i];
+                if mass_ratio(g) < floor {
+                    break;
+                }
+                if healthy(i) && product(g) >= floor {
+                    let s = score(g);
+                    if chosen.is_none_or(|(c, cs)| s > cs || (s == cs && i > c)) {
+                        chosen = Some((i, s));
+                    }
+                }
+            }
+        }
+        chosen.map(|(i, _)| i)
     }
 
     /// (4.27): adds family k to family t, conserving particles and mass.
@@ -1153,7 +1236,13 @@ impl<M: Model> Engine<M> {
         self.tally.merges += 1;
         let moved = (mass / b.mass - 1.0).abs() > MERGE_REFRESH || (filling / b.filling - 1.0).abs() > MERGE_REFRESH;
         let props = if moved { self.model.props(Body { mass, filling }) } else { b.props };
+        if mass != b.mass {
+            self.unlist(t);
+        }
         self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
+        if mass != b.mass {
+            self.enlist(t);
+        }
         moved
     }
 
@@ -1176,18 +1265,19 @@ impl<M: Model> Engine<M> {
         }
         self.merge_small(false);
         // Rates change only for families whose zoom changed (merged ones were
-        // refreshed as they merged); now and then all rates are rebuilt so
-        // that the row sums carry no accumulated rounding.
+        // refreshed as they merged). Now and then, and when many changed,
+        // the partner sums are summed afresh so that they carry no
+        // accumulated rounding (the unit rates themselves are always
+        // computed afresh).
         self.tally.rezooms += 1;
         let changed = self.dirty.iter().filter(|d| **d).count();
-        if self.tally.rezooms.is_multiple_of(32) || 4 * changed > self.families.len() {
-            self.rebuild_rates();
-        } else {
-            for k in 0..self.families.len() {
-                if self.dirty[k] {
-                    self.refresh_rates(k);
-                }
+        for k in 0..self.families.len() {
+            if self.dirty[k] {
+                self.refresh_rates(k);
             }
+        }
+        if self.tally.rezooms.is_multiple_of(32) || 4 * changed > self.families.len() {
+            self.sum_afresh();
         }
         self.dirty.iter_mut().for_each(|d| *d = false);
         self.zoomed_at = self.moments();
@@ -1210,6 +1300,38 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
     }
     let width = std::f64::consts::LN_10 / n;
     bins.into_iter().map(|(b, m)| (10f64.powf((b as f64 + 0.5) / n), m / volume / width)).collect()
+}
+
+/// Whether family `a` (index i) is the pair's lo family, the one with the
+/// lower zoom factor (ties: the more massive, then the lower index), and N_ε
+/// of the pair (4.21)–(4.24) from the pair's cached headroom: 2^{z_lo}
+/// lo-particles each meet 2^{z_hi − z_lo − N_ε} hi-particles in one event.
+fn order_of<P>(a: &Family<P>, i: usize, b: &Family<P>, j: usize, headroom: f32) -> (bool, i32) {
+    let lo_first = a.zoom < b.zoom || (a.zoom == b.zoom && (a.mass > b.mass || (a.mass == b.mass && i < j)));
+    let (l, h) = if lo_first { (a, b) } else { (b, a) };
+    let span = h.zoom - l.zoom;
+    if span == 0 {
+        return (lo_first, 0);
+    }
+    if l.mass < h.mass {
+        // The lo-particles are the projectiles: one on one.
+        return (lo_first, span);
+    }
+    // The headroom is an integer (or ±∞), so n needs no rounding up.
+    let n = f64::from(span) - f64::from(headroom);
+    let n_eps = if n.is_finite() { (n.max(0.0) as i32).min(span) } else { 0 };
+    (lo_first, n_eps)
+}
+
+/// The group event rate (4.25) of pair (i, j) per group of each,
+/// 2^{z_lo + N_ε} K/V, from its cached data.
+fn unit_of<P>(a: &Family<P>, i: usize, b: &Family<P>, j: usize, pair: &Pair) -> f64 {
+    if pair.c <= 0.0 {
+        return 0.0;
+    }
+    let (lo_first, n_eps) = order_of(a, i, b, j, pair.headroom);
+    let z_lo = if lo_first { a.zoom } else { b.zoom };
+    exp2i(z_lo + n_eps) * pair.c
 }
 
 /// How an event made a product.
@@ -1277,3 +1399,7 @@ fn pick(weights: &[f64], target: f64) -> usize {
     }
     last
 }
+/// temp
+pub static FAMS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+/// temp
+pub static RATES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

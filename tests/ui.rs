@@ -507,7 +507,7 @@ fn play_advances_the_time_cursor_and_pause_stops_it() {
     h.run_steps(10);
     assert!(!h.state().state.playback.playing);
     assert_eq!(h.state().state.time(), Some(t2));
-    h.key_press(egui::Key::Period);
+    h.key_press(egui::Key::CloseBracket);
     h.run();
     assert!((h.state().state.time().expect("time") - (t2 + 0.01)).abs() < 1e-9);
     h.key_press(egui::Key::H);
@@ -949,4 +949,131 @@ fn the_command_palette_finds_and_runs_an_action_by_name() {
     h.key_press(egui::Key::Escape);
     h.run_steps(2);
     assert!(h.state().state.palette.is_none() && h.state().state.session.lecture);
+}
+
+/// A deck of twelve cheap slides, to reach slides past 9 by number.
+fn twelve_slides() -> grainscope::deck::LoadedDeck {
+    let slide = |k: usize| {
+        let preset = ["restitution-ice", "ice-bounce-8ms", "adhesion-ice-monomers"][k % 3];
+        format!("(title: \"Slide {}\", notes: \"\", preset: Some(\"{preset}\"))", k + 1)
+    };
+    let slides: Vec<String> = (0..12).map(slide).collect();
+    let text = format!("(title: \"Twelve\", slides: [{}])", slides.join(", "));
+    grainscope::deck::Deck::from_ron(&text, "twelve", None).expect("deck")
+}
+
+fn slide_index(h: &Harness<'static, GrainscopeApp>) -> Option<usize> {
+    h.state().state.presenter.as_ref().map(|p| p.index)
+}
+
+/// The classroom's tools by key and by button, as a lecturer uses them: a
+/// blank screen on B and "." (any key brings it back and does nothing
+/// else), a slide past 9 by its number and Enter, the timer, ink drawn on
+/// a figure (undone, then gone on the next slide), the pointer, and Esc
+/// closing the sensitivity window before anything else.
+#[test]
+fn the_classroom_tools_work_by_key_and_by_button() {
+    let mut h = harness_sized(1024.0, 768.0);
+    settle(&mut h);
+    h.state_mut().apply(Command::Present(Box::new(twelve_slides()), 0));
+    settle(&mut h);
+    let tools = |h: &Harness<'static, GrainscopeApp>| h.state().state.classroom.clone();
+
+    // Blank: B, then any key brings the screen back without acting.
+    h.key_press(egui::Key::B);
+    settle(&mut h);
+    assert!(tools(&h).blank);
+    h.key_press(egui::Key::ArrowRight);
+    settle(&mut h);
+    assert!(!tools(&h).blank);
+    assert_eq!(slide_index(&h), Some(0), "the key that brought the screen back did nothing else");
+    h.key_press(egui::Key::Period);
+    settle(&mut h);
+    assert!(tools(&h).blank, "a clicker's \".\" blanks the screen");
+    h.key_press(egui::Key::Period);
+    settle(&mut h);
+    assert!(!tools(&h).blank);
+
+    // Slides past 9: the digits, then Enter.
+    h.key_press(egui::Key::Num1);
+    h.key_press(egui::Key::Num1);
+    h.key_press(egui::Key::Enter);
+    settle(&mut h);
+    assert_eq!(slide_index(&h), Some(10), "slide 11");
+    h.key_press(egui::Key::Num1);
+    h.key_press(egui::Key::Num0);
+    h.key_press(egui::Key::Enter);
+    settle(&mut h);
+    assert_eq!(slide_index(&h), Some(9), "slide 10");
+    h.key_press(egui::Key::Num4);
+    settle(&mut h);
+    assert_eq!(slide_index(&h), Some(3), "a single digit still jumps at once");
+    // A number typed after a pause is a number of its own.
+    h.state_mut().apply(Command::Clock(3.0));
+    h.key_press(egui::Key::Num9);
+    h.key_press(egui::Key::Num9);
+    h.key_press(egui::Key::Enter);
+    settle(&mut h);
+    assert!(h.state().status().contains("no slide 99"), "{}", h.state().status());
+
+    // The timer counts from the deck's start; a countdown shows what is left.
+    let before = h.state().state.presenter.as_ref().map_or(0.0, |p| p.elapsed);
+    h.state_mut().apply(Command::Clock(75.0));
+    h.state_mut().apply(Command::SetCountdown(Some(45.0 * 60.0)));
+    h.step();
+    let elapsed = h.state().state.presenter.as_ref().map_or(0.0, |p| p.elapsed);
+    assert!(elapsed >= before + 75.0 && elapsed < before + 76.0, "{before} → {elapsed}");
+    let left = (2700.0 - elapsed).floor() as u64;
+    h.get_by_label_contains(&format!("{}:{:02} left", left / 60, left % 60));
+
+    // Ink by its button: a drag over the figure leaves a stroke; U undoes it;
+    // a stroke left on the slide is gone on the next one.
+    h.get_by_label("Tools").click();
+    settle(&mut h);
+    h.get_by_label_contains("Ink (I)").click();
+    settle(&mut h);
+    assert!(tools(&h).ink);
+    let frame = h.state().plot_area().expect("a plot");
+    let draw = |h: &mut Harness<'static, GrainscopeApp>| {
+        let (a, b) = (frame.left_top() + egui::vec2(40.0, 40.0), frame.center());
+        h.hover_at(a);
+        h.drag_at(a);
+        h.step();
+        for k in 1..=8 {
+            h.hover_at(a + (b - a) * (k as f32 / 8.0));
+            h.step();
+        }
+        h.drop_at(b);
+        settle(h);
+    };
+    draw(&mut h);
+    assert_eq!(tools(&h).strokes.len(), 1, "one stroke");
+    assert!(tools(&h).strokes[0].len() >= 5);
+    h.key_press(egui::Key::U);
+    settle(&mut h);
+    assert!(tools(&h).strokes.is_empty(), "undone");
+    draw(&mut h);
+    assert_eq!(tools(&h).strokes.len(), 1);
+    h.key_press(egui::Key::I);
+    h.key_press(egui::Key::ArrowRight);
+    settle(&mut h);
+    // (The 9 typed before jumped to slide 9.)
+    assert_eq!(slide_index(&h), Some(9));
+    assert!(tools(&h).strokes.is_empty(), "ink belongs to its slide");
+
+    // The pointer by its key.
+    h.key_press(egui::Key::O);
+    settle(&mut h);
+    assert!(tools(&h).pointer);
+
+    // Esc closes the sensitivity window first, then leaves the deck.
+    h.key_press(egui::Key::Escape);
+    settle(&mut h);
+    assert!(h.state().state.presenter.is_none());
+    h.key_press(egui::Key::M);
+    settle(&mut h);
+    assert!(h.state().state.matters.open, "the sensitivity window opened");
+    h.key_press(egui::Key::Escape);
+    settle(&mut h);
+    assert!(!h.state().state.matters.open, "Esc closed it");
 }

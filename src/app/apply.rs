@@ -154,6 +154,26 @@ impl AppState {
                 self.status = if paused { "paused; Resume continues the run".into() } else { "resumed".into() };
                 fx.push(Effect::Pause(paused));
             }
+            Command::InkStroke(points) => {
+                let inside = |p: &[f32; 2]| p.iter().all(|x| x.is_finite() && (-0.01..=1.01).contains(x));
+                if points.len() >= 2 && points.iter().all(inside) {
+                    self.classroom.strokes.push(points);
+                }
+            }
+            Command::Clock(seconds) => {
+                // A frame's time (a long pause, e.g. a sleeping laptop, counts in full).
+                if let Some(p) = &mut self.presenter
+                    && seconds.is_finite()
+                    && seconds > 0.0
+                {
+                    p.elapsed += seconds;
+                }
+            }
+            Command::SetCountdown(length) => {
+                if let Some(p) = &mut self.presenter {
+                    p.countdown = length.filter(|s| s.is_finite() && *s > 0.0);
+                }
+            }
             Command::CancelJob => {
                 self.status = "cancelled; showing the last good result".into();
                 fx.push(Effect::Cancel);
@@ -164,6 +184,14 @@ impl AppState {
 
     /// Does what a key (or its button) asks.
     fn act(&mut self, action: Action, fx: &mut Vec<Effect>) {
+        if self.classroom.blank && action != Action::Blank {
+            // Any key brings a blank screen back, and does nothing else.
+            self.classroom.blank = false;
+            return;
+        }
+        if !matches!(action, Action::Slide(_) | Action::Zero | Action::GoToTyped) {
+            self.classroom.typed.clear();
+        }
         match action {
             Action::Help => self.help = !self.help,
             Action::CopyLink => match crate::links::link_to(self.params()) {
@@ -180,12 +208,23 @@ impl AppState {
             Action::PreviousScene => self.step_scene(-1),
             Action::ToggleLecture => self.session.lecture = !self.session.lecture,
             Action::Leave => {
+                // The innermost thing open closes first.
                 if self.palette.is_some() {
                     self.palette = None;
                 } else if self.help {
                     self.help = false;
                 } else if self.link.is_some() {
                     self.link = None;
+                } else if self.inspected.is_some() {
+                    self.inspected = None;
+                } else if self.matters.open {
+                    self.matters.open = false;
+                } else if self.deck_editor.open {
+                    self.deck_editor.open = false;
+                } else if self.presenter.as_ref().is_some_and(|p| p.notes_window) {
+                    if let Some(p) = &mut self.presenter {
+                        p.notes_window = false;
+                    }
                 } else if self.presenter.is_some() {
                     self.stop_presenting();
                 } else {
@@ -205,10 +244,32 @@ impl AppState {
             Action::FirstSlide => self.step_slide(isize::MIN / 2),
             Action::LastSlide => self.step_slide(isize::MAX / 2),
             Action::Slide(n) => {
+                self.type_digit(char::from(b'1' + (n.min(8) as u8)));
                 if self.presenter.as_ref().is_some_and(|p| n < p.deck.deck.slides.len()) {
                     self.go_to_slide(n);
                 }
             }
+            Action::Zero => self.type_digit('0'),
+            Action::RestartTimer => {
+                if let Some(p) = &mut self.presenter {
+                    p.elapsed = 0.0;
+                }
+            }
+            Action::GoToTyped => self.go_to_typed(),
+            Action::Blank => self.classroom.blank = !self.classroom.blank,
+            Action::Pointer => self.classroom.pointer = !self.classroom.pointer,
+            Action::Ink => {
+                self.classroom.ink = !self.classroom.ink;
+                self.status = if self.classroom.ink {
+                    "ink: drag over the figures to draw (U undoes a stroke, C clears)".into()
+                } else {
+                    "ink off: the figures move again".into()
+                };
+            }
+            Action::UndoInk => {
+                self.classroom.strokes.pop();
+            }
+            Action::ClearInk => self.classroom.strokes.clear(),
             Action::ToggleNotes => {
                 if let Some(p) = &mut self.presenter {
                     p.notes = !p.notes;

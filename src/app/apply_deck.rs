@@ -2,7 +2,7 @@
 
 use super::command::DeckEdit;
 use super::opening;
-use super::state::{AppState, Effect, Presenter, Then};
+use super::state::{AppState, Classroom, Effect, Presenter, Then};
 use crate::deck::{LoadedDeck, Slide};
 use crate::scene::SCENES;
 use std::path::Path;
@@ -24,6 +24,8 @@ impl AppState {
             lecture_before,
             explorer_before,
             panel: None,
+            elapsed: 0.0,
+            countdown: None,
         });
         self.session.lecture = true;
         self.go_to_slide(at.min(n.saturating_sub(1)));
@@ -35,6 +37,8 @@ impl AppState {
         let Some(params) = p.deck.params.get(i).cloned() else { return };
         p.index = i;
         p.panel = p.deck.deck.slides[i].enlarge.clone();
+        // Ink belongs to the slide it was drawn on.
+        self.classroom.strokes.clear();
         let title = p.deck.deck.slides[i].title.clone();
         let id = params.info().id;
         self.session.params.insert(id.to_string(), params);
@@ -61,6 +65,33 @@ impl AppState {
     }
 
     /// Moves `by` slides (stays at the ends).
+    /// Adds a digit to the slide number being typed (the last three kept; a
+    /// digit after a pause starts a new number).
+    pub(super) fn type_digit(&mut self, digit: char) {
+        let now = self.presenter.as_ref().map_or(0.0, |p| p.elapsed);
+        let tools = &mut self.classroom;
+        if now - tools.typed_at > Classroom::DIGIT_PAUSE {
+            tools.typed.clear();
+        }
+        tools.typed_at = now;
+        let typed = &mut tools.typed;
+        typed.push(digit);
+        if typed.len() > 3 {
+            typed.remove(0);
+        }
+    }
+
+    /// Goes to the slide whose number was typed, or says there is none.
+    pub(super) fn go_to_typed(&mut self) {
+        let typed = std::mem::take(&mut self.classroom.typed);
+        let Some(n) = self.presenter.as_ref().map(|p| p.deck.deck.slides.len()) else { return };
+        match typed.parse::<usize>() {
+            Ok(k) if (1..=n).contains(&k) => self.go_to_slide(k - 1),
+            Ok(k) => self.status = format!("no slide {k}: the deck has slides 1 to {n}"),
+            Err(_) => self.status = "type a slide's number, then Enter".into(),
+        }
+    }
+
     pub(super) fn step_slide(&mut self, by: isize) {
         let Some(p) = &self.presenter else { return };
         let n = p.deck.deck.slides.len() as isize;

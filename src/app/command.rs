@@ -78,6 +78,22 @@ pub enum Action {
     ToggleTheme,
     /// The deck editor on or off.
     DeckEditor,
+    /// Blank the screen, or bring it back.
+    Blank,
+    /// The pointer (a large spot that follows the mouse) on or off.
+    Pointer,
+    /// Drawing ink on the figures on or off.
+    Ink,
+    /// Remove the last stroke of ink.
+    UndoInk,
+    /// Remove all ink.
+    ClearInk,
+    /// The digit 0 of a slide number (Enter goes there).
+    Zero,
+    /// Go to the slide whose number was typed.
+    GoToTyped,
+    /// The presenter's timer from 0:00 (when the talk really starts).
+    RestartTimer,
 }
 
 /// An action's name and what it does: the one text every button, tooltip,
@@ -124,6 +140,12 @@ impl Action {
         Action::ToggleNotes,
         Action::NotesWindow,
         Action::ResetSlide,
+        Action::RestartTimer,
+        Action::Blank,
+        Action::Pointer,
+        Action::Ink,
+        Action::UndoInk,
+        Action::ClearInk,
     ];
 
     /// The action's name and what it does.
@@ -163,6 +185,14 @@ impl Action {
             Action::SavePreset => ("Save preset…", "save this scene's state as a preset file"),
             Action::ToggleTheme => ("Light theme", "light or dark theme"),
             Action::DeckEditor => ("Deck", "build a lecture from the window's states"),
+            Action::Blank => ("Blank", "blank the screen; any key or a click brings it back"),
+            Action::Pointer => ("Pointer", "a large spot that follows the mouse"),
+            Action::Ink => ("Ink", "draw on the figures with the mouse, a pen or a finger (cleared on the next slide)"),
+            Action::UndoInk => ("Undo ink", "remove the last stroke of ink"),
+            Action::ClearInk => ("Clear ink", "remove all ink"),
+            Action::Zero => ("0", "the digit 0 of a slide number"),
+            Action::GoToTyped => ("Go to slide", "the slide whose number was typed (its digits, then Enter)"),
+            Action::RestartTimer => ("Restart timer", "the presenter's timer from 0:00"),
         };
         ActionText { name, does }
     }
@@ -178,7 +208,10 @@ impl Action {
             | Action::Slide(_)
             | Action::ToggleNotes
             | Action::NotesWindow
-            | Action::ResetSlide => Some(true),
+            | Action::ResetSlide
+            | Action::Zero
+            | Action::GoToTyped
+            | Action::RestartTimer => Some(true),
             Action::NextScene
             | Action::PreviousScene
             | Action::ResetScene
@@ -341,6 +374,12 @@ pub enum Command {
     Deck(DeckEdit),
     /// Close the speaker notes' own window.
     CloseNotesWindow,
+    /// A finished stroke of ink (points as fractions of the window's width and height).
+    InkStroke(Vec<[f32; 2]>),
+    /// Seconds passed (the presenter's timer).
+    Clock(f64),
+    /// The length of the talk for the presenter's countdown, s (None: none).
+    SetCountdown(Option<f64>),
     /// Pause or resume the running computation.
     PauseJob(bool),
     /// Cancel the running computation.

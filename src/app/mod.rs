@@ -250,6 +250,15 @@ impl GrainscopeApp {
             self.apply(Command::Tick(f64::from(ctx.input(|i| i.stable_dt))));
             ctx.request_repaint();
         }
+        // The presenter's timer: the input clock's time since the last frame,
+        // and a frame at least every second so that it ticks.
+        let now = ctx.input(|i| i.time);
+        if let Some(before) = self.memo.clock.replace(now)
+            && self.state.presenter.is_some()
+        {
+            self.apply(Command::Clock(now - before));
+            ctx.request_repaint_after(std::time::Duration::from_secs(1));
+        }
         let presenting = self.state.presenter.is_some();
         egui::Panel::top("top").show(ui, |ui| {
             self.panel(|cx| if presenting { ui::presenter::bar(ui, cx) } else { ui::top_bar::show(ui, cx) })
@@ -286,7 +295,8 @@ impl GrainscopeApp {
             );
         }
         self.request();
-        egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx)));
+        let figures =
+            egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx))).response.rect;
         if self.state.session.lecture && self.state.lecture_params {
             let mut open = true;
             egui::Window::new("Parameters")
@@ -316,6 +326,7 @@ impl GrainscopeApp {
             ui::help::overlay(&ctx, cx);
             ui::palette::window(&ctx, cx);
             ui::link::card(&ctx, cx);
+            ui::classroom::layer(&ctx, cx, figures);
         });
         // A whole slider drag is one step of the history.
         self.state.at_rest(ctx.input(|i| i.pointer.any_down()));

@@ -80,6 +80,8 @@ impl Chord {
             Key::Questionmark => "?".to_string(),
             Key::Comma => ",".to_string(),
             Key::Period => ".".to_string(),
+            Key::OpenBracket => "[".to_string(),
+            Key::CloseBracket => "]".to_string(),
             other => other.name().to_string(),
         };
         format!("{}{}{name}", if self.command { "Ctrl+" } else { "" }, if self.shift { "Shift+" } else { "" })
@@ -104,8 +106,14 @@ pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut { keys: &[command(Key::Z)], action: Action::Undo, mode: Mode::Anywhere },
     Shortcut { keys: &[command_shift(Key::Z), command(Key::Y)], action: Action::Redo, mode: Mode::Anywhere },
     Shortcut { keys: &[key(Key::P)], action: Action::PlayPause, mode: Mode::Anywhere },
-    Shortcut { keys: &[key(Key::Period)], action: Action::StepForward, mode: Mode::Anywhere },
-    Shortcut { keys: &[key(Key::Comma)], action: Action::StepBack, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::CloseBracket)], action: Action::StepForward, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::OpenBracket)], action: Action::StepBack, mode: Mode::Anywhere },
+    // Presentation clickers send B or "." for a blank screen.
+    Shortcut { keys: &[key(Key::B), key(Key::Period)], action: Action::Blank, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::O)], action: Action::Pointer, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::I)], action: Action::Ink, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::U)], action: Action::UndoInk, mode: Mode::Anywhere },
+    Shortcut { keys: &[key(Key::C)], action: Action::ClearInk, mode: Mode::Anywhere },
     Shortcut { keys: &[key(Key::Home)], action: Action::Rewind, mode: Mode::Explorer },
     Shortcut { keys: &[key(Key::Space)], action: Action::PlayPause, mode: Mode::Explorer },
     Shortcut { keys: &[key(Key::PageDown)], action: Action::NextScene, mode: Mode::Explorer },
@@ -143,6 +151,9 @@ pub const SHORTCUTS: &[Shortcut] = &[
         action: Action::Slide(0),
         mode: Mode::Presenter,
     },
+    Shortcut { keys: &[key(Key::Num0)], action: Action::Zero, mode: Mode::Presenter },
+    Shortcut { keys: &[key(Key::Enter)], action: Action::GoToTyped, mode: Mode::Presenter },
+    Shortcut { keys: &[key(Key::T)], action: Action::RestartTimer, mode: Mode::Presenter },
     Shortcut { keys: &[key(Key::N)], action: Action::ToggleNotes, mode: Mode::Presenter },
     Shortcut { keys: &[key(Key::W)], action: Action::NotesWindow, mode: Mode::Presenter },
     Shortcut { keys: &[key(Key::R)], action: Action::ResetSlide, mode: Mode::Presenter },
@@ -298,7 +309,8 @@ mod tests {
             assert!(!Action::ALL[..i].contains(a), "{a:?} listed twice");
         }
         for s in SHORTCUTS {
-            if !matches!(s.action, Action::Slide(_)) {
+            // Digits and Enter make a slide's number: not commands of their own.
+            if !matches!(s.action, Action::Slide(_) | Action::Zero | Action::GoToTyped) {
                 assert!(Action::ALL.contains(&s.action), "{:?} has keys but is not in the palette", s.action);
             }
         }

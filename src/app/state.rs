@@ -40,6 +40,10 @@ pub struct Presenter {
     /// when it names one, or the one picked), or every panel
     /// ([`crate::session::ALL_PANELS`]); None: as the screen allows.
     pub panel: Option<String>,
+    /// Seconds since the deck started.
+    pub elapsed: f64,
+    /// The length of the talk for a countdown, s (None: no countdown).
+    pub countdown: Option<f64>,
 }
 
 impl Presenter {
@@ -47,6 +51,32 @@ impl Presenter {
     pub fn slide(&self) -> &Slide {
         &self.deck.deck.slides[self.index]
     }
+}
+
+/// The classroom's own tools: a blank screen, a pointer, ink on the
+/// figures, and a slide reached by its number.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Classroom {
+    /// The screen is blank (B, or "." as clickers send it).
+    pub blank: bool,
+    /// A large spot follows the mouse.
+    pub pointer: bool,
+    /// Dragging over the figures draws ink instead of moving them.
+    pub ink: bool,
+    /// The strokes drawn, each through points given as fractions of the
+    /// window's width and height (so they stay on the figure when the
+    /// window is resized); cleared on the next slide.
+    pub strokes: Vec<Vec<[f32; 2]>>,
+    /// The digits of a slide number typed so far (Enter goes there).
+    pub typed: String,
+    /// When the last digit was typed (the presenter's clock, s): a digit
+    /// typed more than [`Classroom::DIGIT_PAUSE`] later starts a new number.
+    pub typed_at: f64,
+}
+
+impl Classroom {
+    /// The pause after which a digit starts a new slide number, s.
+    pub const DIGIT_PAUSE: f64 = 2.0;
 }
 
 /// The deck being built in the window.
@@ -253,6 +283,8 @@ pub struct AppState {
     pub inspected: Option<Inspected>,
     /// Whether saving the session failed already (said once).
     pub session_save_failed: bool,
+    /// The classroom's tools.
+    pub classroom: Classroom,
 }
 
 impl Default for AppState {
@@ -290,6 +322,7 @@ impl AppState {
             monomer: MonomerLink::default(),
             inspected: None,
             session_save_failed: false,
+            classroom: Classroom::default(),
         }
     }
 

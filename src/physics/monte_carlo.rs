@@ -684,33 +684,15 @@ impl<M: Model> Engine<M> {
         row.clear();
         row.resize(self.families.len(), (0.0, Effect::Bounce));
         self.model.pair_row(&self.families[k], &self.families, &self.by_mass, &mut row);
-        // As refresh_rates, with the pair data made in the same pass: the
-        // data go to row k (the newest), and the unit rates to row and column.
-        self.rows += 1;
-        self.computed[k] = self.rows;
-        let n = self.families.len();
-        let (now, before) = (self.families[k].groups, self.counted[k]);
-        let fk = self.families[k];
-        let mut sum = 0.0;
+        // Row k, now the newest, holds the pair data.
         for &j in &self.by_mass {
             let (rate, effect) = row[j];
             let (c, headroom) = self.pair_data(k, j, rate, effect);
-            let pair = Pair { c, headroom };
-            *self.pairs.at(k, j) = pair;
-            if j == k {
-                continue;
-            }
-            let unit = self.units.at(k, j);
-            let old = *unit;
-            let new = unit_of(&fk, k, &self.families[j], j, &pair);
-            *unit = new;
-            self.partner_sum[j] += now * new - before * old;
-            sum += self.counted[j] * new;
+            *self.pairs.at(k, j) = Pair { c, headroom };
         }
-        self.units.mirror_row(k, n);
-        self.partner_sum[k] = sum;
-        self.counted[k] = now;
-        self.in_group[k] = 2.0 * self.in_group_rate(k);
+        self.rows += 1;
+        self.computed[k] = self.rows;
+        self.refresh_rates(k);
         self.scratch = row;
     }
 

@@ -2,6 +2,7 @@
 //! it and says what the user did as [`Command`]s. Nothing here changes the
 //! state; [`crate::app::GrainscopeApp`] applies the commands after each panel.
 
+pub mod classroom;
 pub mod controls;
 pub mod deck_editor;
 pub mod figures;
@@ -56,6 +57,10 @@ pub struct Memo {
     pub look_applied: Option<(bool, bool)>,
     /// Whether the bundled font was given to the context.
     pub fonts_installed: bool,
+    /// The stroke of ink being drawn (points as fractions of the window).
+    pub ink_stroke: Vec<[f32; 2]>,
+    /// The input clock at the last frame, s (the presenter's timer counts from it).
+    pub clock: Option<f64>,
 }
 
 /// What a panel draws from and reports to.

@@ -107,7 +107,7 @@ mod tests {
         assert!(matching("", true).contains(&Action::NextSlide) && !matching("", true).contains(&Action::Pin));
         assert_eq!(matching("undo", false).first(), Some(&Action::Undo));
         // A match in the name comes before one in the meaning.
-        assert_eq!(matching("un", false)[..2], [Action::Undo, Action::Redo]);
+        assert_eq!(matching("un", false)[..3], [Action::Undo, Action::UndoInk, Action::Redo]);
         assert!(!all.contains(&Action::Palette));
         assert_eq!(matching("LECTURE mode", false), vec![Action::ToggleLecture, Action::Leave]);
         assert_eq!(matching("pinned", false), vec![Action::ClearPins]);

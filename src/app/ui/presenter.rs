@@ -44,6 +44,8 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         if ui.button("Reset slide").on_hover_text(hint(Action::ResetSlide)).clicked() {
             cx.send(Command::Act(Action::ResetSlide));
         }
+        super::classroom::menu(ui, cx, false);
+        super::classroom::timer(ui, cx);
         if ui.button("Leave").on_hover_text(hint(Action::Leave)).clicked() {
             cx.send(Command::StopPresenting);
         }

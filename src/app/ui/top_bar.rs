@@ -15,7 +15,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     let session = &cx.state.session;
     if session.lecture {
         ui.horizontal(|ui| {
-            navigator(ui, cx, 320.0);
+            navigator(ui, cx, 290.0);
             ui.separator();
             let mut params = cx.state.lecture_params;
             if ui.toggle_value(&mut params, "Parameters").on_hover_text("show the parameters over the plots").changed()
@@ -29,8 +29,9 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             if ui.checkbox(&mut lecture, "Lecture mode").on_hover_text(hint(Action::ToggleLecture)).changed() {
                 cx.send(Command::SetLecture(lecture));
             }
-            // The palette is on F2 here: the bar has no room left at 1024 px.
-            action_button(ui, cx, Action::Help, "?");
+            // The palette is on F2 here, and the list of keys in the tools:
+            // the bar has no room left at 1024 px.
+            super::classroom::menu(ui, cx, true);
         });
         // The scene's headline result (e.g. e = 0.657, bounces) stays on
         // screen while the parameters are hidden, with the transport of
@@ -93,10 +94,11 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             cx.send(Command::Deck(DeckEdit::Show(open)));
         }
         ui.menu_button("Present", |ui| decks_menu(ui, cx));
-        // The palette's button last: the buttons before it keep their places.
+        // The palette's button and the tools last: the buttons before them keep their places.
         for action in [Action::Help, Action::CopyLink, Action::Palette] {
             action_button(ui, cx, action, action.text().name);
         }
+        super::classroom::menu(ui, cx, false);
     });
 }
 

@@ -210,18 +210,21 @@ fn pin_range(overlay: &Overlay) -> Option<(f64, f64)> {
     (overlay.family.is_some() && lo <= hi).then_some((lo, hi))
 }
 
-/// Colours of pinned curves: Paul Tol's "muted" scheme (colour-blind safe),
-/// the hues that the figures' own Okabe–Ito colours do not use, so that a
-/// pin never reads as one of the scene's reference curves.
+/// Colours of pinned curves: the hues of Paul Tol's "muted" scheme
+/// (colour-blind safe) that the figures' own Okabe–Ito colours do not use,
+/// so that a pin never reads as one of the scene's reference curves; each
+/// set in lightness so that it stands at least 3:1 against both plot
+/// backgrounds, white and the dark theme's #1B1B1B (the scheme's indigo,
+/// wine, teal and sand did not).
 const PIN_PALETTE: [[u8; 3]; 8] = [
-    [51, 34, 136],
+    [119, 102, 204],
     [204, 102, 119],
-    [17, 119, 51],
+    [17, 136, 68],
     [170, 68, 153],
-    [136, 34, 85],
-    [153, 153, 51],
-    [68, 170, 153],
-    [221, 204, 119],
+    [170, 90, 40],
+    [128, 128, 40],
+    [40, 128, 110],
+    [140, 120, 30],
 ];
 
 /// Where a family's colours start on the dark theme: viridis' darkest
@@ -513,4 +516,36 @@ fn axis_title_fitting(ui: &egui::Ui, axis: &crate::figure::Axis, room: f32, size
         }
     }
     egui::RichText::new(unit.trim().to_string()).size(small)
+}
+
+#[cfg(test)]
+mod pin_tests {
+    use super::PIN_PALETTE;
+
+    /// WCAG relative luminance of an sRGB colour.
+    fn luminance(c: [u8; 3]) -> f64 {
+        let channel = |v: u8| {
+            let v = f64::from(v) / 255.0;
+            if v <= 0.03928 { v / 12.92 } else { ((v + 0.055) / 1.055).powf(2.4) }
+        };
+        0.2126 * channel(c[0]) + 0.7152 * channel(c[1]) + 0.0722 * channel(c[2])
+    }
+
+    fn contrast(a: [u8; 3], b: [u8; 3]) -> f64 {
+        let (x, y) = (luminance(a), luminance(b));
+        (x.max(y) + 0.05) / (x.min(y) + 0.05)
+    }
+
+    /// Every pin colour stands at least 3:1 against the light and the dark
+    /// plot background (and the check fails for the colours it replaced).
+    #[test]
+    fn pin_colours_stand_out_on_both_themes() {
+        let (white, dark) = ([255, 255, 255], [27, 27, 27]);
+        for c in PIN_PALETTE {
+            assert!(contrast(c, white) >= 3.0, "{c:?} on white: {:.2}", contrast(c, white));
+            assert!(contrast(c, dark) >= 3.0, "{c:?} on #1B1B1B: {:.2}", contrast(c, dark));
+        }
+        assert!(contrast([51, 34, 136], dark) < 1.5, "Tol's indigo on the dark theme");
+        assert!(contrast([221, 204, 119], white) < 2.0, "Tol's sand on white");
+    }
 }

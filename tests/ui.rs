@@ -729,7 +729,7 @@ fn panels_that_do_not_fit_show_one_at_a_time_and_the_choice_is_kept_per_scene() 
     let i = grainscope::scene::SCENES.iter().position(|s| s.id == "restitution").expect("scene");
     h.state_mut().apply(Command::OpenScene(i));
     wait_until(&mut h, 60, |a| a.output().is_some());
-    h.run();
+    settle(&mut h);
     // Three panels beside the side panel do not fit at 1024 × 768: the first alone.
     assert_eq!(h.state().state.session.panels.get("restitution"), None);
     assert!(h.query_all_by_label("Restitution against velocity").count() >= 1);
@@ -739,19 +739,19 @@ fn panels_that_do_not_fit_show_one_at_a_time_and_the_choice_is_kept_per_scene() 
     assert!(frame.width() >= 400.0 && frame.height() >= 260.0, "{frame:?}");
     // Pick another panel in the strip; then every panel at once.
     h.get_by_label_contains("Sticking velocity against").click();
-    h.run();
+    settle(&mut h);
     assert!(h.state().plot_frame("sticking-velocity").is_some());
     assert!(h.state().plot_frame("restitution-velocity").is_none());
     h.get_by_label("All panels").click();
-    h.run();
+    settle(&mut h);
     assert!(
         h.state().plot_frame("restitution-velocity").is_some() && h.state().plot_frame("sticking-velocity").is_some()
     );
     // Another scene and back: the choice stays with its scene.
     h.state_mut().apply(Command::OpenScene(i - 1));
-    h.run();
+    settle(&mut h);
     h.state_mut().apply(Command::OpenScene(i));
-    h.run();
+    settle(&mut h);
     assert_eq!(h.state().state.session.panels.get("restitution").map(String::as_str), Some("all"));
 }
 

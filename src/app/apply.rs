@@ -221,10 +221,8 @@ impl AppState {
                     self.matters.open = false;
                 } else if self.deck_editor.open {
                     self.deck_editor.open = false;
-                } else if self.presenter.as_ref().is_some_and(|p| p.notes_window) {
-                    if let Some(p) = &mut self.presenter {
-                        p.notes_window = false;
-                    }
+                } else if let Some(p) = self.presenter.as_mut().filter(|p| p.notes_window) {
+                    p.notes_window = false;
                 } else if self.presenter.is_some() {
                     self.stop_presenting();
                 } else {

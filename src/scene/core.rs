@@ -373,6 +373,9 @@ pub struct Rung {
     pub scale: String,
     /// (quantity, value with unit, equation or section).
     pub items: Vec<(String, String, String)>,
+    /// The id of the figure beside the ladder that shows this scale, if any.
+    #[serde(default)]
+    pub figure: Option<String>,
 }
 
 /// A model result shared with the window for inspection. It follows from the

@@ -18,26 +18,40 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         _ => None,
     };
     let Some(rungs) = ladder else {
-        panels(ui, cx);
+        panels(ui, cx, None);
         return;
     };
     let avail = ui.available_size();
     let width = (0.3 * avail.x).clamp(250.0, 440.0);
+    // Where the figures beside the ladder would be narrower than a legible
+    // panel, the ladder is one more panel among them.
+    if avail.x - width < 440.0 {
+        panels(ui, cx, Some(rungs));
+        return;
+    }
     let text = super::look::body_size(cx.state.session.lecture);
+    // The figure shown alone (a slide's enlarged one, or the user's pick):
+    // its rung is scrolled into view.
+    let alone = match &cx.state.presenter {
+        Some(p) => p.panel.clone(),
+        None => cx.state.session.panels.get(cx.state.params().info().id).cloned(),
+    };
     ui.horizontal_top(|ui| {
         ui.allocate_ui_with_layout(egui::vec2(width, avail.y), egui::Layout::top_down(egui::Align::Min), |ui| {
             ui.set_width(width);
             egui::ScrollArea::vertical()
                 .id_salt("ladder")
                 .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
-                .show(ui, |ui| ladder_panel(ui, &rungs, text));
+                .show(ui, |ui| ladder_panel(ui, &rungs, text, alone.as_deref()));
         });
-        ui.vertical(|ui| panels(ui, cx));
+        ui.vertical(|ui| panels(ui, cx, None));
     });
 }
 
 /// The identifier of the contact sketch among a scene's panels.
 const SKETCH: &str = "contact-sketch";
+/// The identifier of a scene's ladder where it is one of the panels.
+const LADDER: &str = "scale-ladder";
 /// Height of the strip that picks the panel shown.
 const STRIP: f32 = 30.0;
 
@@ -121,7 +135,7 @@ fn lock_axes(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     }
 }
 
-fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung>>>) {
     let state = cx.state;
     let Some(out) = state.outputs[state.index()].clone() else {
         ui.centered_and_justified(|ui| ui.spinner());
@@ -144,7 +158,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         Extra::Collision(t) => Some(Arc::clone(t)),
         Extra::Paths(_) | Extra::Model(_) | Extra::Ladder(_) | Extra::None => None,
     };
-    let n_panels = out.figures.len() + usize::from(trajectory.is_some());
+    let n_panels = out.figures.len() + usize::from(trajectory.is_some()) + usize::from(ladder.is_some());
     // Many panels (a grid of experiments) are small multiples: each keeps
     // a legible size, as many columns as fit, and the grid scrolls; the
     // first figure leads above them at twice the width.
@@ -154,10 +168,16 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     // A colour bar takes ~140 px beside its plot.
     let bar_w = if out.figures.iter().any(|f| f.heatmap.is_some() || f.family.is_some()) { 140.0 } else { 0.0 };
     let legible = egui::vec2(420.0 + bar_w, 340.0);
-    let grid = |avail: egui::Vec2| {
-        let (min_w, min_h) = if multiples { (if lecture { 300.0 } else { 250.0 }, 210.0) } else { (200.0, 160.0) };
+    // `at_least`: the smallest panel (small multiples, or every panel at a
+    // legible size when all are asked for and do not fit).
+    let grid = |avail: egui::Vec2, at_least: Option<egui::Vec2>| {
+        let (min_w, min_h) = match at_least {
+            Some(m) => (m.x, m.y),
+            None if multiples => (if lecture { 300.0 } else { 250.0 }, 210.0),
+            None => (200.0, 160.0),
+        };
         let cols = match n_panels {
-            _ if multiples => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
+            _ if multiples || at_least.is_some() => ((avail.x / (min_w + 12.0)) as usize).clamp(1, 4),
             1 => 1,
             2..=4 => 2,
             _ => 3,
@@ -175,13 +195,14 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         .iter()
         .map(|f| (f.id.clone(), f.title.clone()))
         .chain(trajectory.as_ref().map(|_| (SKETCH.to_string(), "Contact sketch".to_string())))
+        .chain(ladder.as_ref().map(|_| (LADDER.to_string(), "Scale ladder".to_string())))
         .collect();
     let choice = match &state.presenter {
         Some(p) => p.panel.as_ref(),
         None => state.session.panels.get(state.params().info().id),
     };
     let fits = {
-        let (_, raw, _) = grid(ui.available_size() - egui::vec2(0.0, STRIP));
+        let (_, raw, _) = grid(ui.available_size() - egui::vec2(0.0, STRIP), None);
         raw.x >= legible.x && raw.y >= legible.y
     };
     let alone: Option<usize> = match choice.map(String::as_str) {
@@ -189,6 +210,8 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         Some(crate::session::ALL_PANELS) => None,
         Some(id) if ids.iter().any(|(i, _)| i == id) => ids.iter().position(|(i, _)| i == id),
         _ if fits => None,
+        // The ladder first where it is a panel: it is the scene.
+        _ if ladder.is_some() => Some(n_panels - 1),
         _ => Some(0),
     };
     // (A slide that enlarges a figure shows it alone, the others a click away.)
@@ -197,8 +220,11 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     {
         cx.out.push(c);
     }
+    // All panels asked for where they do not fit: each at a legible size,
+    // in a grid that scrolls, rather than squeezed.
+    let squeezed = alone.is_none() && n_panels > 1 && !fits && !multiples;
     let avail = ui.available_size();
-    let (cols, _, size) = grid(avail);
+    let (cols, _, size) = grid(avail, squeezed.then_some(legible));
     let lead_size = egui::vec2((2.0 * size.x + 12.0).min(avail.x - 12.0), 1.3 * size.y);
     let cursor_fraction = full_cursor.as_ref().map_or(0.0, |c| c.fraction);
     let cursor = full_cursor.filter(|c| state.marks_shown(c));
@@ -223,7 +249,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
     // Files show what the window shows, the time cursor included.
     let drawn = |fig: &Figure| state.drawn_figures(&out).into_iter().find(|f| f.id == fig.id).unwrap_or(fig.clone());
     // Small multiples scroll; one panel alone is sized to the area and does not.
-    let scrolls = multiples && alone.is_none();
+    let scrolls = (multiples || squeezed) && alone.is_none();
     let scroll = egui::ScrollArea::new([scrolls, scrolls])
         .scroll_bar_visibility(egui::scroll_area::ScrollBarVisibility::AlwaysVisible)
         .max_height(if scrolls { avail.y - if lecture { 0.0 } else { 32.0 } } else { f32::INFINITY });
@@ -282,7 +308,18 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
                     });
                 });
             }
-            (None, None) => {}
+            (None, None) => {
+                if let Some(rungs) = &ladder {
+                    let text = super::look::body_size(lecture);
+                    ui.allocate_ui(size, |ui| {
+                        ui.set_width(size.x.min(480.0));
+                        egui::ScrollArea::vertical()
+                            .id_salt("ladder-panel")
+                            .max_height(size.y)
+                            .show(ui, |ui| ladder_panel(ui, rungs, text, None));
+                    });
+                }
+            }
         };
         if let Some(k) = alone {
             // One panel across the whole figure area.
@@ -298,6 +335,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
             .filter(|(k, _)| Some(*k) != lead)
             .map(|(_, f)| Some(f))
             .chain(trajectory.as_ref().map(|_| None))
+            .chain(ladder.as_ref().map(|_| None))
             .collect();
         if let Some(fig) = lead.and_then(|k| out.figures.get(k)) {
             draw(ui, Some(fig), lead_size);
@@ -376,12 +414,19 @@ fn overlay_for(state: &AppState, fig: &Figure, cursor: Vec<scene::Mark>) -> plot
 }
 
 /// The rungs of a ladder, smallest scale on top, an arrow between them.
-fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32) {
+/// The rung of the figure `alone` is scrolled into view once, when that
+/// figure comes to be shown alone; the user scrolls freely after.
+fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32, alone: Option<&str>) {
+    let memory = egui::Id::NULL.with("ladder-rung-in-view");
+    let before = ui.data(|d| d.get_temp::<Option<String>>(memory)).flatten();
+    if before.as_deref() != alone {
+        ui.data_mut(|d| d.insert_temp(memory, alone.map(str::to_string)));
+    }
     for (k, rung) in rungs.iter().enumerate() {
         if k > 0 {
             ui.vertical_centered(|ui| ui.label(egui::RichText::new("↓").size(text)));
         }
-        egui::Frame::group(ui.style()).show(ui, |ui| {
+        let card = egui::Frame::group(ui.style()).show(ui, |ui| {
             ui.set_width(ui.available_width());
             ui.label(egui::RichText::new(&rung.scale).strong().size(text + 1.0));
             egui::Grid::new(("rung", k)).num_columns(2).spacing([8.0, 1.0]).show(ui, |ui| {
@@ -392,5 +437,8 @@ fn ladder_panel(ui: &mut egui::Ui, rungs: &[scene::Rung], text: f32) {
                 }
             });
         });
+        if alone.is_some() && rung.figure.as_deref() == alone && before.as_deref() != alone {
+            card.response.scroll_to_me(Some(egui::Align::Max));
+        }
     }
 }

@@ -66,7 +66,7 @@ pub fn body_size(lecture: bool) -> f32 {
 pub fn plot_look(ui: &egui::Ui, lecture: bool) -> plot::Look {
     plot::Look {
         line: if lecture { 3.0 } else { 2.0 },
-        text: if lecture { 17.0 } else { 14.0 },
+        text: if lecture { 18.0 } else { 14.0 },
         dark: ui.visuals().dark_mode,
         legend: true,
     }

@@ -65,7 +65,7 @@ pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 pub fn notes(ui: &mut egui::Ui, cx: &Cx<'_>) {
     let Some(p) = &cx.state.presenter else { return };
     egui::ScrollArea::vertical().auto_shrink(false).show(ui, |ui| {
-        ui.add(egui::Label::new(egui::RichText::new(&p.slide().notes).size(17.0)).wrap());
+        ui.add(egui::Label::new(egui::RichText::new(&p.slide().notes).size(18.0)).wrap());
     });
 }
 

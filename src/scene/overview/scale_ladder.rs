@@ -316,6 +316,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
     let law = p.run.disk.rolling_law.label();
     vec![
         Rung {
+            figure: Some("ladder-rolling".into()),
             scale: format!("1 · Two monomers, a₀ = {}\u{a0}µm (ch.\u{a0}2–3)", h(mono.radius * 1e6)),
             items: vec![
                 item(
@@ -331,6 +332,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
             ],
         },
         Rung {
+            figure: None,
             scale: "2 · Aggregate thresholds (Sects. 4.2.3–4.2.4)".into(),
             items: vec![
                 item(
@@ -352,6 +354,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
             ],
         },
         Rung {
+            figure: Some("ladder-porosity".into()),
             scale: format!("3 · Growth in the column at {} AU (ch. 4)", h(p.radius_au)),
             items: vec![
                 item(
@@ -365,6 +368,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
             ],
         },
         Rung {
+            figure: Some("ladder-disk".into()),
             scale: format!(
                 "4 · The disk: {}\u{a0}M☉, Z₀ = {} (ch.\u{a0}5)",
                 h(p.run.disk.disk_mass),

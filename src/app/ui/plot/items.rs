@@ -22,13 +22,13 @@ pub(super) fn draw_items(
     }
     for s in &overlay.pinned {
         let c = rgb(pin_color(s, overlay, look.dark), false);
-        // Pins of a sweep are solid in their family colour, others dashed;
-        // like the current curves, they break where the axes cannot show a
-        // point and are thinned when dashed.
-        let dashed = s.family.is_none() || overlay.family.is_none();
+        // Pins of a sweep are solid in their family colour, at the figure's
+        // width; others are wide solid lines under the current curves. Like
+        // the current curves, they break where the axes cannot show a point.
+        let family = s.family.is_some() && overlay.family.is_some();
+        let width = if family { look.line * 0.8 } else { look.line * super::PIN_WIDTH };
         for run in runs(fig, s) {
-            let l = line(s.name.clone(), if dashed { thinned(run, px) } else { run }).color(c).width(look.line * 0.8);
-            plot_ui.line(if dashed { l.style(LineStyle::Dashed { length: 9.0 }) } else { l });
+            plot_ui.line(line(s.name.clone(), run).color(c).width(width));
         }
     }
     let family = fig.family.as_ref().zip(fig.family_range());

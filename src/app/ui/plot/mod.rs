@@ -14,8 +14,10 @@ use egui_plot::{GridInput, GridMark, Plot};
 use std::cell::RefCell;
 use std::rc::Rc;
 
-/// Rows of a legend below its plot shown at once; more scroll.
-const LEGEND_ROWS_BELOW: usize = 3;
+/// The largest share of a panel's height a legend below its plot takes:
+/// every entry shows, in columns as wide as the widest, unless the panel is
+/// too small for that, when the rows that fit show and the rest scroll.
+const LEGEND_BELOW_SHARE: f32 = 0.4;
 
 mod items;
 mod paint;
@@ -163,7 +165,29 @@ pub(super) struct Entry {
     style: Style,
     color: Color32,
     swatch: bool,
+    /// A pinned curve: drawn as a wide line ([`PIN_WIDTH`]).
+    pin: bool,
 }
+
+/// A legend below a plot `width` wide, for entries `widths` wide filled top
+/// to bottom: (rows, the columns' widths) with the most columns that fit,
+/// each as wide as its widest entry (one column, cut to `width`, when none fit).
+fn legend_columns(widths: &[f32], width: f32, gap: f32) -> (usize, Vec<f32>) {
+    let n = widths.len();
+    for wanted in (2..=n).rev() {
+        let rows = n.div_ceil(wanted);
+        let columns: Vec<f32> = widths.chunks(rows).map(|c| c.iter().copied().fold(0.0, f32::max)).collect();
+        let total = columns.iter().sum::<f32>() + gap * (columns.len() - 1) as f32;
+        if total <= width {
+            return (rows, columns);
+        }
+    }
+    (n, vec![widths.iter().copied().fold(0.0, f32::max).min(width)])
+}
+
+/// Pinned curves are lines this many times as wide as the figure's own,
+/// solid, under them: neither a dashed reference curve nor a current one.
+const PIN_WIDTH: f32 = 2.4;
 
 /// What a figure's legend lists: (name, style, colour) of each entry, to
 /// tell panels with the same legend apart from the rest.
@@ -181,14 +205,15 @@ fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
     let mut out: Vec<Entry> = fig
         .legend()
         .into_iter()
-        .map(|(text, style, color)| Entry { text, style, color: rgb(color, stale), swatch: false })
+        .map(|(text, style, color)| Entry { text, style, color: rgb(color, stale), swatch: false, pin: false })
         .collect();
     for s in overlay.pinned.iter().filter(|s| s.family.is_none() || overlay.family.is_none()) {
         out.push(Entry {
             text: s.name.clone(),
-            style: Style::Dashed,
+            style: Style::Line,
             color: rgb(pin_color(s, overlay, false), false),
             swatch: false,
+            pin: true,
         });
     }
     if let Some(h) = &fig.heatmap {
@@ -198,6 +223,7 @@ fn entries(fig: &Figure, overlay: &Overlay, stale: bool) -> Vec<Entry> {
                 style: Style::Points,
                 color: rgb(h.color_of(i as f64, (0.0, 1.0)), false),
                 swatch: true,
+                pin: false,
             });
         }
     }
@@ -303,11 +329,15 @@ pub fn show(
         if beside {
             plot_size.x -= legend_size.x + 8.0;
         }
-        let below_rows =
-            if below { legend.len().div_ceil(((plot_size.x / (legend_size.x.max(60.0))) as usize).max(1)) } else { 0 };
-        let below_shown = below_rows.min(LEGEND_ROWS_BELOW);
+        // Below: entries in as many columns as the panel holds, filled top
+        // to bottom.
+        let gap = ui.spacing().item_spacing;
+        let entry_w: Vec<f32> = legend.iter().map(|e| legend_size_one(ui, e, &font).x).collect();
+        let (rows_below, columns) = legend_columns(&entry_w, size.x - 16.0, gap.x);
+        let below_rows = if below { rows_below } else { 0 };
         // A wrapped row of entries: the entry and the spacing between rows.
-        let row_below = row + ui.spacing().item_spacing.y;
+        let row_below = row + gap.y;
+        let below_shown = below_rows.min(((LEGEND_BELOW_SHARE * size.y / row_below) as usize).max(1));
         if below {
             plot_size.y -= below_shown as f32 * row_below + 8.0;
         }
@@ -463,15 +493,18 @@ pub fn show(
                 .max_width(width)
                 .show(ui, |ui| {
                     ui.set_max_width(width);
-                    ui.horizontal_wrapped(|ui| {
-                        for e in &legend {
-                            // An entry wider than the panel is cut, not the panel widened.
-                            let mut one = legend_size_one(ui, e, &font);
-                            one.x = one.x.min(width - 16.0);
-                            let (rect, _) = ui.allocate_exact_size(one, egui::Sense::hover());
-                            paint_entry(ui, e, rect, look);
+                    let (block, _) = ui.allocate_exact_size(
+                        Vec2::new(width - 16.0, below_rows as f32 * row_below),
+                        egui::Sense::hover(),
+                    );
+                    let mut x = block.left();
+                    for (c, column) in legend.chunks(below_rows.max(1)).enumerate() {
+                        for (r, e) in column.iter().enumerate() {
+                            let at = egui::pos2(x, block.top() + r as f32 * row_below);
+                            paint_entry(ui, e, Rect::from_min_size(at, Vec2::new(columns[c], row)), look);
                         }
-                    });
+                        x += columns[c] + gap.x;
+                    }
                 });
         }
         response
@@ -547,5 +580,33 @@ mod pin_tests {
         }
         assert!(contrast([51, 34, 136], dark) < 1.5, "Tol's indigo on the dark theme");
         assert!(contrast([221, 204, 119], white) < 2.0, "Tol's sand on white");
+    }
+}
+
+#[cfg(test)]
+mod legend_tests {
+    use super::legend_columns;
+
+    /// The most columns that fit, filled top to bottom, each as wide as its
+    /// widest entry; every entry has a place.
+    #[test]
+    fn legend_columns_are_the_most_that_fit() {
+        let widths = [300.0, 100.0, 100.0, 250.0, 80.0];
+        // Three columns (rows of 2) would need 300 + 250 + 80 + 2 gaps = 646.
+        assert_eq!(legend_columns(&widths, 600.0, 8.0), (3, vec![300.0, 250.0]));
+        assert_eq!(legend_columns(&widths, 646.0, 8.0), (2, vec![300.0, 250.0, 80.0]));
+        assert_eq!(legend_columns(&widths, 2000.0, 8.0), (1, widths.to_vec()));
+        // Nothing fits: one column, cut to the width.
+        assert_eq!(legend_columns(&widths, 200.0, 8.0), (5, vec![200.0]));
+        assert_eq!(legend_columns(&[], 200.0, 8.0), (0, vec![0.0]));
+        for n in 1..=20 {
+            for width in [150.0, 400.0, 558.0, 700.0, 900.0] {
+                let widths: Vec<f32> = (0..n).map(|k| 60.0 + (k * 37 % 200) as f32).collect();
+                let (rows, columns) = legend_columns(&widths, width, 8.0);
+                // Filled top to bottom, `rows` at a time: one width per column.
+                assert_eq!(widths.chunks(rows).count(), columns.len());
+                assert!(columns.len() == 1 || columns.iter().sum::<f32>() + 8.0 * (columns.len() - 1) as f32 <= width);
+            }
+        }
     }
 }

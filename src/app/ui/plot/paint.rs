@@ -90,7 +90,12 @@ pub(super) fn paint_entry(ui: &mut egui::Ui, e: &Entry, rect: Rect, look: Look) 
     let y = rect.center().y;
     let x0 = rect.left() + 6.0;
     let stroke = Stroke::new(look.line, e.color);
-    if e.swatch {
+    if e.pin {
+        painter.line_segment(
+            [Pos2::new(x0, y), Pos2::new(x0 + 30.0, y)],
+            Stroke::new(look.line * super::PIN_WIDTH, e.color),
+        );
+    } else if e.swatch {
         painter.rect_filled(Rect::from_min_size(Pos2::new(x0 + 6.0, y - 6.0), Vec2::new(18.0, 12.0)), 1.0, e.color);
     } else {
         match e.style {

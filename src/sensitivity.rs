@@ -505,7 +505,7 @@ pub fn map_figure(
     let log = !defined.is_empty() && lo > 0.0 && hi > 10.0 * lo;
     let shown: Vec<f64> = zs.iter().map(|z| z.map_or(f64::NAN, |z| if log { z.log10() } else { z })).collect();
     let colour = if log { format!("log₁₀ {label}") } else { label.to_string() };
-    fig.heatmap = Some(Heatmap::new(xs.to_vec(), ys.to_vec(), shown.clone(), &colour, unit));
+    fig.heatmap = Some(Heatmap::new(xs.to_vec(), ys.to_vec(), shown.clone(), &colour, &crate::units::pretty(unit)));
     let scale = if log { Scale::Log } else { Scale::Linear };
     let levels: Vec<f64> = figure::ticks::ticks(lo, hi, scale, 6)
         .into_iter()
@@ -533,7 +533,8 @@ pub fn map_figure(
 
 /// An axis for a parameter.
 fn axis_of(k: &Knob, log: bool) -> Axis {
-    if log { Axis::log(k.label, k.unit) } else { Axis::linear(k.label, k.unit) }
+    let unit = crate::units::pretty(k.unit);
+    if log { Axis::log(k.label, &unit) } else { Axis::linear(k.label, &unit) }
 }
 
 /// Scalar `output` against parameter `key` over its whole documented range
@@ -552,6 +553,7 @@ pub fn curve(base: &SceneParams, output: &str, key: &str, n: usize, progress: &P
     let here = value(base, output, progress)?;
     let (y_label, y_unit) = scalar_meta(base, output, progress)?;
     let positive = ys.iter().filter_map(|v| v.mean).all(|y| y > 0.0) && here.mean.is_none_or(|y| y > 0.0);
+    let y_unit = crate::units::pretty(&y_unit);
     let y_axis = if positive { Axis::log(&y_label, &y_unit) } else { Axis::linear(&y_label, &y_unit) };
     let mut fig = Figure::new("sensitivity", &format!("{y_label} against {}", k.label), axis_of(&k, log), y_axis);
     let mut pieces: Vec<Vec<[f64; 2]>> = vec![Vec::new()];

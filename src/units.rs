@@ -34,7 +34,7 @@ pub struct Shown {
 }
 
 impl Shown {
-    /// "3.2 µm", "∞ m s⁻¹", "0.52" — three significant digits.
+    /// "3.2 µm", "∞ m/s", "0.52" — three significant digits.
     pub fn text(&self) -> String {
         let n = crate::figure::human(self.value);
         if self.unit.is_empty() { n } else { format!("{n} {}", self.unit) }
@@ -144,12 +144,30 @@ fn parse_unit(text: &str) -> Option<Unit> {
     Some(unit)
 }
 
-/// A unit written with superscripts: "m s^-1" → "m s⁻¹", "J/m^2" → "J/m²",
-/// "deg" → "°". Text it does not recognise is returned as it is.
+/// A unit as the screen writes it: with superscripts, and one factor with a
+/// negative power, written last, as a quotient — "m s^-1" → "m/s",
+/// "g cm^-3" → "g/cm³", "J/m^2" → "J/m²", "s^-1" → "s⁻¹",
+/// "kg m^-2 s^-1" → "kg m⁻² s⁻¹", "deg" → "°" (one form per unit, the
+/// controls' own). Text it does not recognise is returned as it is.
 pub fn pretty(unit: &str) -> String {
     if unit == "deg" {
         return "°".into();
     }
+    let factors: Vec<&str> = unit.split(' ').collect();
+    if let [head @ .., last] = &factors[..]
+        && !head.is_empty()
+        && !unit.contains('/')
+        && head.iter().all(|f| !f.contains("^-"))
+        && let Some((base, power)) = last.split_once("^-")
+    {
+        let power = if power == "1" { String::new() } else { format!("^{power}") };
+        return superscripts(&format!("{}/{base}{power}", head.join(" ")));
+    }
+    superscripts(unit)
+}
+
+/// "^-12" → "⁻¹²", and the symbols of the Sun and the Earth.
+fn superscripts(unit: &str) -> String {
     let unit = unit.replace("M_sun", "M☉").replace("L_sun", "L☉").replace("M_earth", "M⊕");
     let mut out = String::with_capacity(unit.len());
     let mut chars = unit.chars().peekable();
@@ -220,9 +238,9 @@ pub fn show(value: f64, si_unit: &str, system: System) -> Shown {
         (System::Cgs, ENERGY) => ("erg", 1e-7),
         (System::Si, FORCE) => by_magnitude(si, &[("nN", 1e-9), ("µN", 1e-6), ("mN", 1e-3), ("N", 1.0)]),
         (System::Cgs, FORCE) => ("dyn", 1e-5),
-        (System::Cgs, [-3, 1, 0]) => ("g cm⁻³", 1e3),
-        (System::Cgs, [2, 0, -2]) => ("erg g⁻¹", 1e-4),
-        (System::Cgs, [2, 1, -1]) => ("g cm² s⁻¹", 1e-7),
+        (System::Cgs, [-3, 1, 0]) => ("g/cm³", 1e3),
+        (System::Cgs, [2, 0, -2]) => ("erg/g", 1e-4),
+        (System::Cgs, [2, 1, -1]) => ("g cm²/s", 1e-7),
         _ => return keep(),
     };
     Shown { value: si / size, unit: name.to_string() }
@@ -310,13 +328,18 @@ mod tests {
 
     #[test]
     fn superscripts() {
-        assert_eq!(pretty("m s^-1"), "m s⁻¹");
-        assert_eq!(pretty("J m^-2"), "J m⁻²");
-        assert_eq!(pretty("g cm^-3"), "g cm⁻³");
+        assert_eq!(pretty("m s^-1"), "m/s");
+        assert_eq!(pretty("J m^-2"), "J/m²");
+        assert_eq!(pretty("g cm^-3"), "g/cm³");
+        assert_eq!(pretty("m s^-2"), "m/s²");
+        assert_eq!(pretty("J/m^2"), "J/m²");
+        assert_eq!(pretty("s^-1"), "s⁻¹");
+        assert_eq!(pretty("kg m^-2 s^-1"), "kg m⁻² s⁻¹");
+        assert_eq!(pretty("m^2 s^-1"), "m²/s");
         assert_eq!(pretty("µm"), "µm");
         assert_eq!(pretty("deg"), "°");
         assert_eq!(pretty("M_sun"), "M☉");
-        assert_eq!(pretty("M_earth yr^-1"), "M⊕ yr⁻¹");
+        assert_eq!(pretty("M_earth yr^-1"), "M⊕/yr");
     }
 
     #[test]
@@ -331,11 +354,11 @@ mod tests {
         assert_eq!(text(1.2e-8, "s", System::Si), "12 ns");
         assert_eq!(text(4.5e-6, "N", System::Si), "4.5 µN");
         assert_eq!(text(1.8e-10, "N", System::Cgs), "1.8×10⁻⁵ dyn");
-        assert_eq!(text(f64::INFINITY, "m s^-1", System::Si), "∞ m s⁻¹");
+        assert_eq!(text(f64::INFINITY, "m s^-1", System::Si), "∞ m/s");
         assert_eq!(text(0.05, "m", System::Cgs), "5 cm");
         assert_eq!(text(5.56e-10, "m", System::Cgs), "0.556 nm");
-        assert_eq!(text(1000.0, "kg m^-3", System::Cgs), "1 g cm⁻³");
-        assert_eq!(text(0.1, "J m^-2", System::Cgs), "0.1 J m⁻²");
+        assert_eq!(text(1000.0, "kg m^-3", System::Cgs), "1 g/cm³");
+        assert_eq!(text(0.1, "J m^-2", System::Cgs), "0.1 J/m²");
         assert_eq!(text(30.0, "AU", System::Cgs), "30 AU");
         assert_eq!(text(0.52, "", System::Cgs), "0.52");
     }

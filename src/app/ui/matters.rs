@@ -164,7 +164,21 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                                 .size(text),
                             );
                         }
-                        if let Some(key) = chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text, system) {
+                        // Each parameter in its control's own display unit.
+                        let mut params = at.clone();
+                        let shown_as: Vec<(&'static str, &'static str, f64)> = params
+                            .controls()
+                            .iter()
+                            .filter_map(|c| match c.kind {
+                                crate::scene::ControlKind::Number { display_scale, .. } => {
+                                    Some((c.key, c.unit, display_scale))
+                                }
+                                _ => None,
+                            })
+                            .collect();
+                        if let Some(key) =
+                            chart(ui, &answer.rows, answer.here.mean.unwrap_or(0.0), text, system, &shown_as)
+                        {
                             clicked = Some(key);
                         }
                     }
@@ -210,6 +224,7 @@ fn chart(
     x0: f64,
     text: f32,
     system: units::System,
+    shown_as: &[(&'static str, &'static str, f64)],
 ) -> Option<String> {
     let mut clicked = None;
     // Log scale of X/X₀ where every value is positive, else linear in X − X₀.
@@ -231,7 +246,13 @@ fn chart(
             {
                 clicked = Some(r.key.clone());
             }
-            ui.label(egui::RichText::new(units::text(r.value, &r.unit, system)).size(text));
+            // As the parameter's control shows it; in the chapter's units otherwise.
+            let value = match shown_as.iter().find(|(key, ..)| *key == r.key) {
+                Some((_, "", scale)) => human(r.value * scale),
+                Some((_, unit, scale)) => format!("{} {}", human(r.value * scale), units::pretty(unit)),
+                None => units::text(r.value, &r.unit, system),
+            };
+            ui.label(egui::RichText::new(value).size(text));
             let e = match r.elasticity {
                 Some(e) if e.abs() < 5e-4 => "0".to_string(),
                 Some(e) => format!("{e:+.3}{}", if r.converged { "" } else { " ?" }),

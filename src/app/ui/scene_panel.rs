@@ -89,8 +89,8 @@ pub fn headline(ui: &mut egui::Ui, cx: &Cx<'_>) {
     let text = match (out.scalar("e"), out.scalar("sticks"), out.scalar("v_stick")) {
         (Some(e), Some(s), _) => format!("e = {} ({})", figure::human(e), if s > 0.5 { "sticks" } else { "bounces" }),
         // The search ends at 10⁴ m/s: above it the spheres stick at every speed tried.
-        (_, _, Some(v)) if v.is_infinite() => "v_stick > 10⁴ m s⁻¹".to_string(),
-        (_, _, Some(v)) => format!("v_stick = {} m s⁻¹", figure::human(v)),
+        (_, _, Some(v)) if v.is_infinite() => "v_stick > 10⁴ m/s".to_string(),
+        (_, _, Some(v)) => format!("v_stick = {} m/s", figure::human(v)),
         // A short first note serves as the headline; a paragraph stays
         // among the notes below the parameters instead of pushing them
         // down.
@@ -113,7 +113,7 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
     egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
         for s in &out.scalars {
             ui.label(s.label);
-            // A bound reads "> 10⁴ m s⁻¹", an undefined value "undefined";
+            // A bound reads "> 10⁴ m/s", an undefined value "undefined";
             // hovering either says why.
             match crate::scene::status(censored, s.key, s.value) {
                 crate::scene::Status::Value => {

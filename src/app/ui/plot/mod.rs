@@ -428,9 +428,6 @@ pub fn show(
                 let px = [plot_size.x as f64 / (bx.1 - bx.0), plot_size.y as f64 / (by.1 - by.0)];
                 let shown = plot.show(ui, |plot_ui| draw_items(plot_ui, fig, overlay, stale, look, px));
                 let frame = *shown.transform.frame();
-                if stale {
-                    provisional(ui, frame, look);
-                }
                 // A click (not a drag) at a point of the plot, in axis units.
                 let clicked =
                     shown.response.clicked().then(|| shown.response.interact_pointer_pos()).flatten().map(|pos| {
@@ -473,6 +470,10 @@ pub fn show(
                 if beside {
                     let (rect, _) = ui.allocate_exact_size(legend_size, egui::Sense::hover());
                     paint_legend(ui, &legend, rect, look);
+                }
+                // Last, so that no legend hides it.
+                if stale {
+                    provisional(ui, frame, look);
                 }
                 (shown.response, clicked, frame)
             })

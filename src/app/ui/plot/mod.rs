@@ -306,12 +306,11 @@ pub fn show(
         ui.add(egui::Label::new(egui::RichText::new(title).strong().size(title_size)).truncate());
         // Legend size in points, to find it a free corner.
         let row = look.text * 1.45;
-        let text_w = legend
-            .iter()
-            .map(|e| ui.painter().layout_no_wrap(e.text.clone(), font.clone(), Color32::WHITE).size().x)
-            .fold(0.0f32, f32::max);
-        // Swatch, gaps and a margin after the longest entry.
-        let legend_size = Vec2::new(text_w + 54.0, legend.len() as f32 * row + 10.0);
+        // Each entry's width (swatch, gap, text), measured once.
+        let entry_w: Vec<f32> = legend.iter().map(|e| legend_size_one(ui, e, &font).x).collect();
+        // A margin after the longest entry.
+        let legend_size =
+            Vec2::new(entry_w.iter().copied().fold(0.0, f32::max) + 4.0, legend.len() as f32 * row + 10.0);
         let bar_w = if bar.is_some() { 36.0 + 6.0 * look.text } else { 0.0 };
         let mut plot_size = Vec2::new(size.x - bar_w, size.y - look.text * 1.6 - 6.0);
         // Whether the legend found no free corner in the last frame, measured
@@ -332,7 +331,6 @@ pub fn show(
         // Below: entries in as many columns as the panel holds, filled top
         // to bottom.
         let gap = ui.spacing().item_spacing;
-        let entry_w: Vec<f32> = legend.iter().map(|e| legend_size_one(ui, e, &font).x).collect();
         let (rows_below, columns) = legend_columns(&entry_w, size.x - 16.0, gap.x);
         let below_rows = if below { rows_below } else { 0 };
         // A wrapped row of entries: the entry and the spacing between rows.

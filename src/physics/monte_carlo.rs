@@ -312,31 +312,37 @@ pub enum EngineError {
 }
 
 /// A symmetric matrix over the families, stored in full and row by row with
-/// a stride that doubles as families are added: a family's row is contiguous
+/// a capacity that doubles as families are added: a family's row is contiguous
 /// for the sweeps over its partners, and the column is kept equal to it.
 #[derive(Debug, Clone)]
 struct Symmetric<T> {
+    /// Families there is room for.
+    capacity: usize,
+    /// Entries from one row to the next: the capacity and one cache line
+    /// more, so that the entries of a column fall into different cache sets
+    /// (a power-of-two stride puts a whole column into one).
     stride: usize,
     data: Vec<T>,
 }
 
 impl<T: Copy + Default> Symmetric<T> {
     fn new() -> Self {
-        Symmetric { stride: 0, data: Vec::new() }
+        Symmetric { capacity: 0, stride: 0, data: Vec::new() }
     }
 
     /// Room for `n` families, keeping the first `used` rows and columns.
     fn reserve(&mut self, n: usize, used: usize) {
-        if n <= self.stride {
+        if n <= self.capacity {
             return;
         }
-        let stride = n.next_power_of_two().max(16);
-        let mut data = vec![T::default(); stride * stride];
-        let used = used.min(self.stride);
+        let capacity = n.next_power_of_two().max(16);
+        let stride = capacity + (64 / std::mem::size_of::<T>().max(1)).max(1);
+        let mut data = vec![T::default(); stride * capacity];
+        let used = used.min(self.capacity);
         for i in 0..used {
             data[i * stride..i * stride + used].copy_from_slice(&self.data[i * self.stride..i * self.stride + used]);
         }
-        *self = Symmetric { stride, data };
+        *self = Symmetric { capacity, stride, data };
     }
 
     fn get(&self, i: usize, j: usize) -> T {
@@ -824,14 +830,19 @@ impl<M: Model> Engine<M> {
         let last = n - 1;
         if k != last {
             self.unlist(last);
-            // The pair data go to both row and column, from wherever they are.
+            // The pair data go to row k, from wherever they are; row k then
+            // counts as the newest, so that they are read from there.
             for j in 0..last {
                 let pair = if j == k { self.pairs.get(last, last) } else { self.data(last, j) };
-                self.pairs.set(k, j, pair);
+                *self.pairs.at(k, j) = pair;
             }
             self.units.relocate(last, k, last);
         }
         self.computed.swap_remove(k);
+        if k != last {
+            self.rows += 1;
+            self.computed[k] = self.rows;
+        }
         self.in_group.swap_remove(k);
         self.partner_sum.swap_remove(k);
         self.counted.swap_remove(k);
@@ -1381,7 +1392,3 @@ fn pick(weights: &[f64], target: f64) -> usize {
     }
     last
 }
-/// temp
-pub static FAMS: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
-/// temp
-pub static RATES: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);

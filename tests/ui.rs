@@ -457,6 +457,21 @@ fn a_deck_advances_and_goes_back_with_the_keys_and_restores_each_slide() {
     // ... and the scene and parameters from before.
     assert_eq!(scene_id(&h), "rocking");
     assert_eq!(number(&h.state().state.session.params["hysteresis"], "velocity"), 9.0);
+    // A clicker's Shift+F5 resumes the deck at the slide it was left on, F5
+    // starts it from the first.
+    h.key_press_modifiers(egui::Modifiers::SHIFT, egui::Key::F5);
+    settle(&mut h);
+    assert_eq!(h.state().state.presenter.as_ref().map(|p| p.index), Some(2), "resumed where it was left");
+    assert_eq!(scene_id(&h), "adhesion");
+    h.key_press(egui::Key::F5);
+    settle(&mut h);
+    assert_eq!(h.state().state.presenter.as_ref().map(|p| p.index), Some(0), "F5 starts from the first slide");
+    assert_eq!(scene_id(&h), "hysteresis");
+    h.key_press(egui::Key::Escape);
+    settle(&mut h);
+    h.key_press(egui::Key::F5);
+    settle(&mut h);
+    assert_eq!(h.state().state.presenter.as_ref().map(|p| p.index), Some(0));
 }
 
 /// A slider drag is one undo step: Ctrl+Z restores the value from before
@@ -1048,7 +1063,12 @@ fn the_classroom_tools_work_by_key_and_by_button() {
     };
     draw(&mut h);
     assert_eq!(tools(&h).strokes.len(), 1, "one stroke");
-    assert!(tools(&h).strokes[0].len() >= 5);
+    assert!(tools(&h).strokes[0].points.len() >= 5);
+    // The stroke is kept in the axis units of the plot it was drawn on too
+    // (exports draw it there).
+    let stroke = &tools(&h).strokes[0];
+    assert!(!stroke.on.is_empty(), "on a plot");
+    assert!(stroke.on.iter().all(|(_, p)| p.len() == stroke.points.len() && p.iter().flatten().all(|v| v.is_finite())));
     h.key_press(egui::Key::U);
     settle(&mut h);
     assert!(tools(&h).strokes.is_empty(), "undone");

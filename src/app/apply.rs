@@ -154,11 +154,20 @@ impl AppState {
                 self.status = if paused { "paused; Resume continues the run".into() } else { "resumed".into() };
                 fx.push(Effect::Pause(paused));
             }
-            Command::InkStroke(points) => {
+            Command::InkStroke(mut stroke) => {
                 let inside = |p: &[f32; 2]| p.iter().all(|x| x.is_finite() && (-0.01..=1.01).contains(x));
-                if points.len() >= 2 && points.iter().all(inside) {
-                    self.classroom.strokes.push(points);
+                stroke.on.retain(|(_, points)| points.iter().flatten().all(|v| v.is_finite()));
+                if stroke.points.len() >= 2 && stroke.points.iter().all(inside) {
+                    self.classroom.strokes.push(stroke);
                 }
+            }
+            Command::SetInkInExports(on) => {
+                self.classroom.ink_in_exports = on;
+                self.status = if on {
+                    "exported figures (PNG, SVG) carry the ink drawn on them".into()
+                } else {
+                    "exported figures leave the ink out".into()
+                };
             }
             Command::Clock(seconds) => {
                 // A frame's time (a long pause, e.g. a sleeping laptop, counts in full).
@@ -254,6 +263,8 @@ impl AppState {
                 }
             }
             Action::GoToTyped => self.go_to_typed(),
+            Action::StartShow => self.start_show(false),
+            Action::ResumeShow => self.start_show(true),
             Action::Blank => self.classroom.blank = !self.classroom.blank,
             Action::Pointer => self.classroom.pointer = !self.classroom.pointer,
             Action::Ink => {
@@ -268,6 +279,10 @@ impl AppState {
                 self.classroom.strokes.pop();
             }
             Action::ClearInk => self.classroom.strokes.clear(),
+            Action::InkInExports => {
+                let on = !self.classroom.ink_in_exports;
+                fx.extend(self.apply(Command::SetInkInExports(on)));
+            }
             Action::ToggleNotes => {
                 if let Some(p) = &mut self.presenter {
                     p.notes = !p.notes;
@@ -402,7 +417,17 @@ impl AppState {
     /// One figure as a file (PNG, SVG or CSV) carrying the open scene's state.
     fn figure_file(&self, fig: &figure::Figure, ext: &str) -> Result<Vec<u8>, String> {
         let stamp = crate::provenance::Stamp::of(&self.current_preset()).map_err(|e| e.to_string())?;
-        crate::provenance::figure_bytes(fig, ext, figure::EXPORT_SIZE, Some(&stamp)).map_err(|e| e.to_string())
+        let mut fig = fig.clone();
+        self.ink_onto(&mut fig);
+        crate::provenance::figure_bytes(&fig, ext, figure::EXPORT_SIZE, Some(&stamp)).map_err(|e| e.to_string())
+    }
+
+    /// Puts the ink drawn on `fig` onto it, where exports are to carry it.
+    fn ink_onto(&self, fig: &mut figure::Figure) {
+        if self.classroom.ink_in_exports {
+            let on = self.classroom.strokes.iter().flat_map(|s| &s.on);
+            fig.ink = on.filter(|(id, _)| *id == fig.id).map(|(_, points)| points.clone()).collect();
+        }
     }
 
     /// Exports every figure of the open scene (PNG, SVG, CSV, as drawn and
@@ -416,7 +441,10 @@ impl AppState {
                 return;
             }
         };
-        let figures = self.drawn_figures(&out);
+        let mut figures = self.drawn_figures(&out);
+        for fig in &mut figures {
+            self.ink_onto(fig);
+        }
         let prefix = format!("{}-", self.params().info().id);
         self.status = format!("exporting {} figures to {}…", figures.len(), self.session.export_dir);
         fx.push(Effect::Submit(Job::Export { figures, stamp: Box::new(stamp), prefix }));
@@ -647,6 +675,40 @@ mod tests {
             }
             other => panic!("{other:?}"),
         }
+    }
+
+    /// Ink goes into an exported PNG or SVG only when asked, in the figure's
+    /// axis units, and never into its CSV.
+    #[test]
+    fn ink_goes_into_exports_when_asked() {
+        let mut s = AppState::default();
+        s.at_rest(false);
+        let out = crate::scene::compute(s.params(), &crate::scene::Progress::default()).expect("computed");
+        let fig = out.figures[0].clone();
+        let view = crate::figure::layout::View::of(&fig);
+        let mid = |r: [f64; 2]| 0.5 * (r[0] + r[1]);
+        let (x, y) = ([view.x[0], mid(view.x), view.x[1]], mid(view.y));
+        let stroke = crate::app::state::InkStroke {
+            points: vec![[0.3, 0.3], [0.5, 0.5], [0.7, 0.3]],
+            on: vec![(fig.id.clone(), x.iter().map(|x| [*x, y]).collect()), ("elsewhere".into(), vec![[1.0, 1.0]; 2])],
+        };
+        s.apply(Command::InkStroke(stroke));
+        let svg = |s: &mut AppState, ext: &'static str| {
+            let fx = s.apply(Command::ExportFigure(Box::new(fig.clone()), ext));
+            match fx.as_slice() {
+                [Effect::WriteAll { files, .. }] => String::from_utf8_lossy(&files[0].1).into_owned(),
+                other => panic!("{other:?}"),
+            }
+        };
+        let ink = "stroke=\"#d4008a\"";
+        assert!(!svg(&mut s, "svg").contains(ink), "no ink unless asked");
+        s.apply(Command::Act(Action::InkInExports));
+        assert!(s.classroom.ink_in_exports);
+        let drawn = svg(&mut s, "svg");
+        assert_eq!(drawn.matches(ink).count(), 1, "the one stroke drawn on this figure");
+        assert!(!svg(&mut s, "csv").contains("d4008a") && svg(&mut s, "csv").lines().count() > 2);
+        s.apply(Command::Act(Action::ClearInk));
+        assert!(!svg(&mut s, "svg").contains(ink), "cleared ink is gone from exports too");
     }
 
     /// Playing advances the cursor with the clock and stops at the end.

@@ -55,12 +55,36 @@ impl AppState {
     pub(super) fn stop_presenting(&mut self) {
         if let Some(p) = self.presenter.take() {
             self.session.lecture = p.lecture_before;
+            self.shown = Some((p.deck, p.index));
             let (scene, params) = p.explorer_before;
             self.session.params = params;
             if let Some(k) = SCENES.iter().position(|s| s.id == scene) {
                 self.open_scene(k);
             }
             self.status = "left the deck: back to the scene as it was".into();
+        }
+    }
+
+    /// A clicker's F5 (`resume` false) or Shift+F5 (true): presents the deck
+    /// being shown from its first slide, or the deck last presented from its
+    /// first slide or the slide it was left on, or else the deck being built.
+    pub(super) fn start_show(&mut self, resume: bool) {
+        if self.presenter.is_some() {
+            if !resume {
+                self.go_to_slide(0);
+            }
+            return;
+        }
+        if let Some((deck, at)) = self.shown.take() {
+            self.present(deck, if resume { at } else { 0 });
+        } else if !self.deck_editor.deck.slides.is_empty() {
+            let base = Path::new(&self.deck_editor.path).parent().map(Path::to_path_buf);
+            match opening::resolve_all(&self.deck_editor.deck, base.as_deref()) {
+                Ok(deck) => self.present(deck, 0),
+                Err(e) => self.error = Some(e),
+            }
+        } else {
+            self.status = "no deck to present yet: open one (Open…) or build one (Deck)".into();
         }
     }
 

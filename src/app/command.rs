@@ -88,12 +88,18 @@ pub enum Action {
     UndoInk,
     /// Remove all ink.
     ClearInk,
+    /// Exported figures carry the ink drawn on them, or not.
+    InkInExports,
     /// The digit 0 of a slide number (Enter goes there).
     Zero,
     /// Go to the slide whose number was typed.
     GoToTyped,
     /// The presenter's timer from 0:00 (when the talk really starts).
     RestartTimer,
+    /// Start the show: the deck from its first slide (as a clicker's F5 asks).
+    StartShow,
+    /// Resume the show: the deck from the slide last shown (a clicker's Shift+F5).
+    ResumeShow,
 }
 
 /// An action's name and what it does: the one text every button, tooltip,
@@ -141,11 +147,14 @@ impl Action {
         Action::NotesWindow,
         Action::ResetSlide,
         Action::RestartTimer,
+        Action::StartShow,
+        Action::ResumeShow,
         Action::Blank,
         Action::Pointer,
         Action::Ink,
         Action::UndoInk,
         Action::ClearInk,
+        Action::InkInExports,
     ];
 
     /// The action's name and what it does.
@@ -190,9 +199,15 @@ impl Action {
             Action::Ink => ("Ink", "draw on the figures with the mouse, a pen or a finger (cleared on the next slide)"),
             Action::UndoInk => ("Undo ink", "remove the last stroke of ink"),
             Action::ClearInk => ("Clear ink", "remove all ink"),
+            Action::InkInExports => ("Ink in exports", "exported figures (PNG, SVG) carry the ink drawn on them"),
             Action::Zero => ("0", "the digit 0 of a slide number"),
             Action::GoToTyped => ("Go to slide", "the slide whose number was typed (its digits, then Enter)"),
             Action::RestartTimer => ("Restart timer", "the presenter's timer from 0:00"),
+            Action::StartShow => (
+                "Start show",
+                "present the deck from its first slide (the deck last presented, or the one being built)",
+            ),
+            Action::ResumeShow => ("Resume show", "present the deck again from the slide last shown"),
         };
         ActionText { name, does }
     }
@@ -374,8 +389,10 @@ pub enum Command {
     Deck(DeckEdit),
     /// Close the speaker notes' own window.
     CloseNotesWindow,
-    /// A finished stroke of ink (points as fractions of the window's width and height).
-    InkStroke(Vec<[f32; 2]>),
+    /// A finished stroke of ink.
+    InkStroke(super::state::InkStroke),
+    /// Whether exported figures carry the ink drawn on them.
+    SetInkInExports(bool),
     /// Seconds passed (the presenter's timer).
     Clock(f64),
     /// The length of the talk for the presenter's countdown, s (None: none).

@@ -169,7 +169,7 @@ impl GrainscopeApp {
     /// The frame (inside the axes) of figure `figure` as drawn in the last
     /// frame, in screen points.
     pub fn plot_frame(&self, figure: &str) -> Option<egui::Rect> {
-        self.memo.plot_frames.iter().find(|(id, _)| id == figure).map(|(_, r)| *r)
+        self.memo.plot_frames.iter().find(|(id, _)| id == figure).map(|(_, r)| r.frame)
     }
 
     /// The smallest rectangle holding every plot drawn in the last frame.

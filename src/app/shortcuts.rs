@@ -53,6 +53,10 @@ const fn command(key: Key) -> Chord {
     Chord { key, command: true, shift: false }
 }
 
+const fn shift(key: Key) -> Chord {
+    Chord { key, command: false, shift: true }
+}
+
 const fn command_shift(key: Key) -> Chord {
     Chord { key, command: true, shift: true }
 }
@@ -102,6 +106,9 @@ pub struct Shortcut {
 /// Every shortcut of the window.
 pub const SHORTCUTS: &[Shortcut] = &[
     Shortcut { keys: &[key(Key::F2)], action: Action::Palette, mode: Mode::Anywhere },
+    // A clicker's "start the show" keys; the web page keeps them from the browser.
+    Shortcut { keys: &[key(Key::F5)], action: Action::StartShow, mode: Mode::Anywhere },
+    Shortcut { keys: &[shift(Key::F5)], action: Action::ResumeShow, mode: Mode::Anywhere },
     Shortcut { keys: &[key(Key::Questionmark), key(Key::H)], action: Action::Help, mode: Mode::Anywhere },
     Shortcut { keys: &[command(Key::Z)], action: Action::Undo, mode: Mode::Anywhere },
     Shortcut { keys: &[command_shift(Key::Z), command(Key::Y)], action: Action::Redo, mode: Mode::Anywhere },
@@ -244,7 +251,9 @@ mod tests {
     }
 
     /// Every key works in a browser tab too: none is one the browser keeps
-    /// for itself (reload, close, address bar, tabs, find, print, help…).
+    /// for itself (reload, close, address bar, tabs, find, print, help…),
+    /// except a clicker's F5 and Shift+F5, which the web page takes from the
+    /// browser before it reloads.
     #[test]
     fn no_key_is_one_a_browser_keeps() {
         let function = [Key::F1, Key::F3, Key::F5, Key::F6, Key::F7, Key::F11, Key::F12];
@@ -280,8 +289,16 @@ mod tests {
             Key::Minus,
             Key::Num0,
         ];
+        let page = include_str!("../../web/index.html");
         for s in SHORTCUTS {
             for k in s.keys {
+                if k.key == Key::F5 && !k.command && matches!(s.action, Action::StartShow | Action::ResumeShow) {
+                    assert!(
+                        page.contains("\"F5\"") && page.contains("preventDefault"),
+                        "the page keeps F5 from the browser"
+                    );
+                    continue;
+                }
                 let kept = function.contains(&k.key) || (k.command && with_ctrl.contains(&k.key));
                 assert!(!kept, "{} ('{}') is a key a browser keeps", k.text(), s.action.text().name);
             }

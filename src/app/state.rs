@@ -63,10 +63,10 @@ pub struct Classroom {
     pub pointer: bool,
     /// Dragging over the figures draws ink instead of moving them.
     pub ink: bool,
-    /// The strokes drawn, each through points given as fractions of the
-    /// window's width and height (so they stay on the figure when the
-    /// window is resized); cleared on the next slide.
-    pub strokes: Vec<Vec<[f32; 2]>>,
+    /// The strokes drawn; cleared on the next slide.
+    pub strokes: Vec<InkStroke>,
+    /// Exported figures (PNG, SVG) carry the ink drawn on them.
+    pub ink_in_exports: bool,
     /// The digits of a slide number typed so far (Enter goes there).
     pub typed: String,
     /// When the last digit was typed (the presenter's clock, s): a digit
@@ -77,6 +77,17 @@ pub struct Classroom {
 impl Classroom {
     /// The pause after which a digit starts a new slide number, s.
     pub const DIGIT_PAUSE: f64 = 2.0;
+}
+
+/// A stroke of ink.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct InkStroke {
+    /// Its points as fractions of the window's width and height (so that it
+    /// stays on the figure when the window is resized).
+    pub points: Vec<[f32; 2]>,
+    /// The same stroke in the axis units of each figure it was drawn on
+    /// (figure id, points), for exports.
+    pub on: Vec<(String, Vec<[f64; 2]>)>,
 }
 
 /// The deck being built in the window.
@@ -273,6 +284,9 @@ pub struct AppState {
     pub link: Option<LinkCard>,
     /// The deck being presented.
     pub presenter: Option<Presenter>,
+    /// The deck last presented and the slide it was left on, for a clicker's
+    /// F5 (start the show) and Shift+F5 (resume it).
+    pub shown: Option<(LoadedDeck, usize)>,
     /// The deck being built.
     pub deck_editor: DeckEditor,
     /// Whether a movie is being written.
@@ -317,6 +331,7 @@ impl AppState {
             palette: None,
             link: None,
             presenter: None,
+            shown: None,
             deck_editor: DeckEditor::default(),
             movie_running: false,
             monomer: MonomerLink::default(),

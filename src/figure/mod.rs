@@ -235,6 +235,10 @@ pub const PALETTE: [[u8; 3]; 8] = [
 /// a white slide.
 pub const FAMILY_TOP: f64 = 0.82;
 
+/// The colour of ink drawn by hand over a figure: a saturated magenta, apart
+/// from every curve's colour and ≥ 4.5:1 against white and the dark theme.
+pub const INK: [u8; 3] = [0xD4, 0x00, 0x8A];
+
 /// The colour of a legend entry shared by series of different colours.
 pub const NEUTRAL: [u8; 3] = [110, 110, 110];
 
@@ -427,6 +431,10 @@ pub struct Figure {
     pub square: bool,
     /// Text placed at data points (drawn over the series).
     pub labels: Vec<Label>,
+    /// Strokes drawn by hand over the figure (a lecturer's ink), in axis
+    /// units: drawn over everything in a PNG or SVG, left out of a CSV.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub ink: Vec<Vec<[f64; 2]>>,
 }
 
 impl Figure {
@@ -443,6 +451,7 @@ impl Figure {
             y_decades: None,
             square: false,
             labels: Vec::new(),
+            ink: Vec::new(),
         }
     }
 

@@ -207,6 +207,24 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
         };
         legend(&mut svg, &entries, [x0, y0, legend_w, legend_h], &look);
     }
+    // Ink over everything, where it was drawn (beyond the frame too).
+    let ink = rgb(super::INK);
+    for stroke in &fig.ink {
+        let points: Vec<String> = stroke
+            .iter()
+            .filter_map(|p| view.fraction(*p).map(|f| plot.at(f)))
+            .filter(|q| q.iter().all(|v| v.is_finite()))
+            .map(|q| format!("{:.1},{:.1}", q[0], q[1]))
+            .collect();
+        if points.len() >= 2 {
+            let _ = write!(
+                svg,
+                r#"<polyline points="{}" fill="none" stroke="{ink}" stroke-width="{:.2}" stroke-linecap="round" stroke-linejoin="round"/>"#,
+                points.join(" "),
+                4.0 * s
+            );
+        }
+    }
     svg.push_str("</svg>");
     svg
 }

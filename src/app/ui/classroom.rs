@@ -6,9 +6,8 @@ use super::Cx;
 use crate::app::command::{Action, Command};
 use crate::app::shortcuts::{self, Mode};
 
-/// Ink's colour: a saturated magenta, apart from every curve's colour and
-/// ≥ 4.5:1 against both themes' backgrounds.
-const INK: egui::Color32 = egui::Color32::from_rgb(0xD4, 0x00, 0x8A);
+/// Ink's colour, as exports draw it.
+const INK: egui::Color32 = egui::Color32::from_rgb(crate::figure::INK[0], crate::figure::INK[1], crate::figure::INK[2]);
 
 /// The pointer's colour: a red spot with a white ring, visible on light and dark.
 const POINTER: egui::Color32 = egui::Color32::from_rgb(0xE0, 0x10, 0x10);
@@ -36,7 +35,7 @@ pub fn layer(ctx: &egui::Context, cx: &mut Cx<'_>, figures: egui::Rect) {
     let stroke = egui::Stroke::new(width, INK);
     let painter = ctx.layer_painter(egui::LayerId::new(egui::Order::Foreground, egui::Id::unique("ink")));
     for line in &tools.strokes {
-        painter.add(egui::Shape::line(line.iter().map(|p| to_screen(*p)).collect(), stroke));
+        painter.add(egui::Shape::line(line.points.iter().map(|p| to_screen(*p)).collect(), stroke));
     }
     if tools.ink {
         egui::Area::new(egui::Id::unique("ink area")).order(egui::Order::Middle).fixed_pos(figures.min).show(
@@ -49,8 +48,17 @@ pub fn layer(ctx: &egui::Context, cx: &mut Cx<'_>, figures: egui::Rect) {
                     cx.memo.ink_stroke.push([at.x, at.y]);
                 }
                 if response.drag_stopped() {
-                    let line = std::mem::take(&mut cx.memo.ink_stroke);
-                    cx.send(Command::InkStroke(line));
+                    let points = std::mem::take(&mut cx.memo.ink_stroke);
+                    // The stroke in the axis units of every plot it touches.
+                    let on_screen: Vec<egui::Pos2> = points.iter().map(|p| to_screen(*p)).collect();
+                    let on = cx
+                        .memo
+                        .plot_frames
+                        .iter()
+                        .filter(|(_, placed)| on_screen.iter().any(|q| placed.frame.contains(*q)))
+                        .map(|(id, placed)| (id.clone(), on_screen.iter().map(|q| placed.value_at(*q)).collect()))
+                        .collect();
+                    cx.send(Command::InkStroke(crate::app::state::InkStroke { points, on }));
                 }
             },
         );
@@ -74,6 +82,7 @@ pub fn layer(ctx: &egui::Context, cx: &mut Cx<'_>, figures: egui::Rect) {
 pub fn menu(ui: &mut egui::Ui, cx: &mut Cx<'_>, with_keys: bool) {
     let tools = &cx.state.classroom;
     let (pointer, ink, strokes) = (tools.pointer, tools.ink, !tools.strokes.is_empty());
+    let ink_exported = tools.ink_in_exports;
     let mode = if cx.state.presenter.is_some() { Mode::Presenter } else { Mode::Explorer };
     let label = if ink || pointer { "Tools ●" } else { "Tools" };
     ui.menu_button(label, |ui| {
@@ -94,6 +103,7 @@ pub fn menu(ui: &mut egui::Ui, cx: &mut Cx<'_>, with_keys: bool) {
         button(ui, Action::Ink, Some(ink), true);
         button(ui, Action::UndoInk, None, strokes);
         button(ui, Action::ClearInk, None, strokes);
+        button(ui, Action::InkInExports, Some(ink_exported), true);
         if with_keys {
             ui.separator();
             button(ui, Action::Help, None, true);

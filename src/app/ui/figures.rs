@@ -272,7 +272,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
             ui.vertical(|ui| {
                 let shown = plot::show(ui, fig, &overlay, size, stale, look, locked);
                 memo.plot_rects.push(shown.response.rect);
-                memo.plot_frames.push((fig.id.clone(), shown.frame));
+                memo.plot_frames.push((fig.id.clone(), shown.placed));
                 if let Some((at, pos)) = shown.clicked {
                     commands.push(Command::Inspect(fig.id.clone(), at, [pos.x, pos.y]));
                 }

@@ -47,8 +47,8 @@ pub struct Work {
 pub struct Memo {
     /// Where the plots were drawn in the last frame (screen points).
     pub plot_rects: Vec<egui::Rect>,
-    /// The frame of every plot drawn in the last frame, by figure id.
-    pub plot_frames: Vec<(String, egui::Rect)>,
+    /// Where every plot was drawn in the last frame, by figure id.
+    pub plot_frames: Vec<(String, plot::Placed)>,
     /// Shipped presets for the menu: (chapter, title, file, text), parsed once.
     pub shipped_menu: Option<Vec<(crate::scene::Chapter, String, &'static str, &'static str)>>,
     /// The monomer card last shown and its derived values.

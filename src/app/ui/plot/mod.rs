@@ -473,7 +473,10 @@ pub fn show(
                 if stale {
                     provisional(ui, frame, look);
                 }
-                (shown.response, clicked, frame)
+                let b = shown.transform.bounds();
+                let placed =
+                    Placed { frame, bounds: [b.min()[0], b.max()[0], b.min()[1], b.max()[1]], scales: (xs, ys) };
+                (shown.response, clicked, placed)
             })
             .inner;
         if below {
@@ -509,8 +512,8 @@ pub fn show(
         response
     });
     // The whole panel: title, plot with its axes, legend and colour bar.
-    let (plot_response, clicked, frame) = shown.inner;
-    Shown { response: shown.response.union(plot_response), clicked, frame }
+    let (plot_response, clicked, placed) = shown.inner;
+    Shown { response: shown.response.union(plot_response), clicked, frame: placed.frame, placed }
 }
 
 /// A drawn panel: its response, and where its plot was clicked (axis units).
@@ -521,6 +524,31 @@ pub struct Shown {
     pub clicked: Option<([f64; 2], egui::Pos2)>,
     /// The plot's frame (inside its axes).
     pub frame: egui::Rect,
+    /// Where the plot was drawn and the range it showed.
+    pub placed: Placed,
+}
+
+/// Where a plot was drawn and the range it showed: turns a point of the
+/// screen into axis units (for ink drawn over the plot).
+#[derive(Debug, Clone, Copy)]
+pub struct Placed {
+    /// The plot's frame (inside its axes), screen points.
+    pub frame: egui::Rect,
+    /// The range shown, [x₀, x₁, y₀, y₁] in plot units (log₁₀ on a log axis).
+    bounds: [f64; 4],
+    /// The axes' scales.
+    scales: (Scale, Scale),
+}
+
+impl Placed {
+    /// The point of the screen `pos` in axis units (outside the frame too).
+    pub fn value_at(&self, pos: egui::Pos2) -> [f64; 2] {
+        let [x0, x1, y0, y1] = self.bounds;
+        let f = self.frame;
+        let fx = f64::from((pos.x - f.left()) / f.width().max(1.0));
+        let fy = f64::from((f.bottom() - pos.y) / f.height().max(1.0));
+        [untransform(x0 + fx * (x1 - x0), self.scales.0), untransform(y0 + fy * (y1 - y0), self.scales.1)]
+    }
 }
 
 /// An axis title that fits `room` points: as it is, else in a smaller size,

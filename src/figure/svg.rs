@@ -210,12 +210,13 @@ pub fn render(fig: &Figure, size: (u32, u32)) -> String {
     // Ink over everything, where it was drawn (beyond the frame too).
     let ink = rgb(super::INK);
     for stroke in &fig.ink {
-        let points: Vec<String> = stroke
+        let mut points: Vec<String> = stroke
             .iter()
             .filter_map(|p| view.fraction(*p).map(|f| plot.at(f)))
             .filter(|q| q.iter().all(|v| v.is_finite()))
             .map(|q| format!("{:.1},{:.1}", q[0], q[1]))
             .collect();
+        points.dedup();
         if points.len() >= 2 {
             let _ = write!(
                 svg,

@@ -9,13 +9,18 @@ use crate::app::command::{Action, Command};
 use crate::app::shortcuts::{self, Mode};
 
 /// The actions whose name or meaning holds every word of `filter` (any
-/// case): those whose name holds them first, each group in the palette's
-/// order; those of presenting a deck only while `presenting`, those of
-/// exploring only while not.
+/// case), best first: the name itself, then names whose words begin with
+/// the words typed ("ink" finds Ink before Link), then names that hold
+/// them, then meanings; each group in the palette's order. Those of
+/// presenting a deck only while `presenting`, those of exploring only
+/// while not.
 pub fn matching(filter: &str, presenting: bool) -> Vec<Action> {
     let words: Vec<String> = filter.split_whitespace().map(str::to_lowercase).collect();
     let holds = |text: &str| words.iter().all(|w| text.contains(w.as_str()));
-    let mut found: Vec<(bool, Action)> = Action::ALL
+    let begins = |name: &str| {
+        words.iter().all(|w| name.split(|c: char| !c.is_alphanumeric()).any(|n| n.starts_with(w.as_str())))
+    };
+    let mut found: Vec<(u8, Action)> = Action::ALL
         .iter()
         .copied()
         // The palette does not offer itself.
@@ -23,10 +28,19 @@ pub fn matching(filter: &str, presenting: bool) -> Vec<Action> {
         .filter_map(|a| {
             let t = a.text();
             let name = t.name.to_lowercase();
-            holds(&format!("{name} {}", t.does.to_lowercase())).then(|| (!holds(&name), a))
+            let rank = if name.split_whitespace().eq(words.iter().map(String::as_str)) {
+                0
+            } else if begins(&name) {
+                1
+            } else if holds(&name) {
+                2
+            } else {
+                3
+            };
+            holds(&format!("{name} {}", t.does.to_lowercase())).then_some((rank, a))
         })
         .collect();
-    found.sort_by_key(|(by_meaning, _)| *by_meaning);
+    found.sort_by_key(|(rank, _)| *rank);
     found.into_iter().map(|(_, a)| a).collect()
 }
 
@@ -112,5 +126,9 @@ mod tests {
         assert_eq!(matching("LECTURE mode", false), vec![Action::ToggleLecture, Action::Leave]);
         assert_eq!(matching("pinned", false), vec![Action::ClearPins]);
         assert!(matching("no such thing", false).is_empty());
+        // Names whose words begin with the words typed come first.
+        assert_eq!(matching("ink", false)[..2], [Action::Ink, Action::UndoInk]);
+        assert_eq!(matching("ink in exports", false).first(), Some(&Action::InkInExports));
+        assert_eq!(matching("start show", true).first(), Some(&Action::StartShow));
     }
 }

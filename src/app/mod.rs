@@ -284,10 +284,13 @@ impl GrainscopeApp {
             egui::Panel::left("controls").resizable(true).default_size(360.0).size_range(300.0..=widest).show(
                 ui,
                 |ui| {
-                    // The content never asks for more than the panel's width, so
-                    // the panel changes width only when the user drags its edge.
+                    // The content never asks for more than the panel's width,
+                    // nor less (a scroll area shrinks to narrower content, such
+                    // as "computing…" in place of a table, while a job runs),
+                    // so the panel changes width only when the user drags its
+                    // edge.
                     let width = ui.available_width();
-                    egui::ScrollArea::vertical().show(ui, |ui| {
+                    egui::ScrollArea::vertical().auto_shrink([false, false]).show(ui, |ui| {
                         ui.set_max_width(width);
                         self.panel(|cx| ui::scene_panel::show(ui, cx))
                     });

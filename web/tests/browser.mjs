@@ -366,6 +366,25 @@ try {
     const { page } = await open("?deck=porous-growth&slide=3", "deck");
     await settle(page);
     await shot(page, "porous-growth-03");
+    // A clicker's Shift+F5 resumes the show at the slide left and F5 starts
+    // it from the first, instead of reloading the page.
+    await page.evaluate(() => { window.notReloaded = true; });
+    const status = () => page.evaluate(() => window.grainscope.status());
+    await page.keyboard.press("Escape");
+    await page.waitForTimeout(800);
+    const left = await status();
+    await page.keyboard.press("Shift+F5");
+    await page.waitForTimeout(1500);
+    const resumed = await status();
+    await page.keyboard.press("F5");
+    await page.waitForTimeout(1500);
+    const started = await status();
+    const kept = await page.evaluate(() => window.notReloaded === true);
+    if (!kept || !left.startsWith("left the deck") || !resumed.startsWith("slide 3:") || !started.startsWith("slide 1:")) {
+      fail(`F5: the page ${kept ? "stayed" : "reloaded"}; Esc: "${left}", Shift+F5: "${resumed}", F5: "${started}"`);
+    } else {
+      ok(`F5 and Shift+F5 start and resume the show without reloading the page ("${started}")`);
+    }
     await page.close();
   }
 

@@ -110,21 +110,37 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
     };
     let system = crate::scene::chapter(cx.state.index()).units();
     let censored = cx.state.params().censored();
+    // A bound reads "> 10⁴ m/s", an undefined value "undefined"; hovering
+    // either says why.
+    let values: Vec<(String, Option<&str>)> = out
+        .scalars
+        .iter()
+        .map(|s| match crate::scene::status(censored, s.key, s.value) {
+            crate::scene::Status::Value => (crate::units::text(s.value, s.unit, system), None),
+            crate::scene::Status::Above { bound, why } => {
+                (format!("> {}", crate::units::text(bound, s.unit, system)), Some(why))
+            }
+            crate::scene::Status::Undefined { why } => ("undefined".to_string(), Some(why)),
+        })
+        .collect();
+    // The values (with their units) are never cut: the names wrap in the
+    // width the widest value leaves them.
+    let font = egui::TextStyle::Body.resolve(ui.style());
+    let widest = values
+        .iter()
+        .map(|(v, _)| ui.painter().layout_no_wrap(v.clone(), font.clone(), egui::Color32::WHITE).size().x)
+        .fold(0.0, f32::max);
+    let spacing = ui.spacing().item_spacing.x;
+    let names = (ui.available_width() - widest - 3.0 * spacing).max(60.0);
     egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
-        for s in &out.scalars {
-            ui.label(s.label);
-            // A bound reads "> 10⁴ m/s", an undefined value "undefined";
-            // hovering either says why.
-            match crate::scene::status(censored, s.key, s.value) {
-                crate::scene::Status::Value => {
-                    ui.label(crate::units::text(s.value, s.unit, system));
-                }
-                crate::scene::Status::Above { bound, why } => {
-                    ui.label(format!("> {}", crate::units::text(bound, s.unit, system))).on_hover_text(why);
-                }
-                crate::scene::Status::Undefined { why } => {
-                    ui.label("undefined").on_hover_text(why);
-                }
+        for (s, (value, why)) in out.scalars.iter().zip(values) {
+            ui.scope(|ui| {
+                ui.set_max_width(names);
+                ui.add(egui::Label::new(s.label).wrap());
+            });
+            let shown = ui.label(value);
+            if let Some(why) = why {
+                shown.on_hover_text(why);
             }
             ui.end_row();
         }

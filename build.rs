@@ -41,7 +41,19 @@ fn main() {
             }
         }
     }
+    compress_font();
     for path in ["src", "assets", "presets", "Cargo.toml", "build.rs"] {
         println!("cargo:rerun-if-changed={path}");
     }
+}
+
+/// The bundled font, zlib-compressed into `OUT_DIR` (about half its size),
+/// for `figure::font_ttf` to inflate once: the browser's module carries it.
+fn compress_font() {
+    let font = "assets/fonts/DejaVuSans.ttf";
+    println!("cargo:rerun-if-changed={font}");
+    let bytes = std::fs::read(font).expect("the bundled font assets/fonts/DejaVuSans.ttf");
+    let packed = miniz_oxide::deflate::compress_to_vec_zlib(&bytes, 10);
+    let out = std::path::Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("DejaVuSans.ttf.zlib");
+    std::fs::write(out, packed).expect("OUT_DIR is writable");
 }

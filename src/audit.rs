@@ -57,6 +57,12 @@ pub const KEEPS: f64 = 0.5;
 /// even next to a pole, where the nearer half carries about two thirds).
 pub const ONE_SIDED: f64 = 0.9;
 
+/// A step declared as the model's resolution
+/// ([`crate::scene::Declared::resolution`]) must shrink below this fraction
+/// of its size at four times the resolution (a step of one batch in N shrinks
+/// about fourfold; a switch of the physics keeps its size).
+pub const RESOLVED: f64 = 0.5;
+
 /// For a scene of random runs: a step must also exceed this many standard
 /// deviations of the scalar over independent seeds.
 pub const NOISE: f64 = 4.0;
@@ -515,7 +521,42 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
         })
         .collect::<Result<_, SceneError>>()?;
     report.computations += steps.len() * options.refine;
-    for (c, a, b) in steps.into_iter().flatten() {
+    let steps: Vec<Bracket> = steps.into_iter().flatten().collect();
+    // A step declared as the model's resolution is held to it: at four times
+    // the count that sets the resolution, the same bracket must change by
+    // less than half as much. The change there, relative to the step's.
+    let finer: Vec<Option<Result<f64, String>>> = steps
+        .par_iter()
+        .map(|(c, a, b)| {
+            let Some(count) = Declared::find(declared, Irregularity::Step, c.scalar, c.line).and_then(|d| d.resolution)
+            else {
+                return Ok(None);
+            };
+            let refined = match (base.get(count), base.spec(count).map(|s| &s.kind)) {
+                (Some(Value::Count(n)), Some(SpecKind::Count { max, .. })) if n < *max => (4 * n).min(*max),
+                _ => return Ok(Some(Err(format!("{count} is at its largest value: no finer resolution to check")))),
+            };
+            let x = |u: f64| if c.log { u.exp() } else { u };
+            let at = |u: f64| -> Result<Option<f64>, SceneError> {
+                let Some(p) = with(base, c.line, &Value::Number(x(u))) else { return Ok(None) };
+                let Some(p) = with(&p, count, &Value::Count(refined)) else { return Ok(None) };
+                Ok(match compute(&p, progress)? {
+                    Point::Done { scalars, .. } => {
+                        scalars.iter().find(|s| s.0 == c.scalar).map(|s| s.1).filter(|v| v.is_finite())
+                    }
+                    _ => None,
+                })
+            };
+            let (ya, yb) = (at(a.0)?, at(b.0)?);
+            let step = (b.1 - a.1).abs();
+            Ok(Some(match (ya, yb) {
+                (Some(ya), Some(yb)) if step > 0.0 => Ok((yb - ya).abs() / step),
+                _ => Err(format!("no value at {refined} {count}")),
+            }))
+        })
+        .collect::<Result<_, SceneError>>()?;
+    report.computations += 2 * finer.iter().flatten().count();
+    for ((c, a, b), finer) in steps.into_iter().zip(finer) {
         let x = |u: f64| if c.log { u.exp() } else { u };
         let shown = |u: f64| match lines.iter().find(|l| l.key == c.line) {
             Some(l) => l.spec.display(&Value::Number(x(u))),
@@ -534,14 +575,30 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
             shown(a.0),
             shown(b.0),
         );
-        let d = Declared::find(declared, Irregularity::Step, c.scalar, c.line);
+        let mut d = Declared::find(declared, Irregularity::Step, c.scalar, c.line).map(|d| d.why);
+        let mut detail = detail.replace("  ", " ").trim_end().to_string();
+        match finer {
+            Some(Ok(ratio)) if ratio < RESOLVED => {
+                detail += &format!("; {:.0} % of it at four times the resolution", 100.0 * ratio);
+            }
+            Some(Ok(ratio)) => {
+                // Not a resolution step after all: open.
+                detail += &format!(
+                    "; declared a resolution step, but at four times the resolution it keeps {:.0} % of its size",
+                    100.0 * ratio
+                );
+                d = None;
+            }
+            Some(Err(why)) => detail += &format!("; not checked at a finer resolution: {why}"),
+            None => {}
+        }
         report.findings.push(Finding {
             kind: Irregularity::Step,
             parameter: c.line,
             scalar: c.scalar.to_string(),
             at: vec![x(a.0), x(b.0)],
-            detail: detail.replace("  ", " ").trim_end().to_string(),
-            declared: d.map(|d| d.why),
+            detail,
+            declared: d,
         });
     }
     Ok(report)

@@ -21,7 +21,7 @@ fn shipped_presets_match_the_presets_folder() {
 #[test]
 fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() {
     use skrifa::MetadataProvider;
-    let font = skrifa::FontRef::new(grainscope::figure::FONT_TTF).expect("bundled font");
+    let font = skrifa::FontRef::new(grainscope::figure::font_ttf()).expect("bundled font");
     let charmap = font.charmap();
     let mut missing = std::collections::BTreeSet::new();
     let dir = tempfile::tempdir().expect("tempdir");

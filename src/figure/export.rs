@@ -58,9 +58,14 @@ pub fn write_csv(fig: &Figure, path: &Path) -> Result<(), ExportError> {
 
 /// The bundled font (DejaVu Sans) that exported text is measured and drawn
 /// with, so that no system font is needed and every label's glyphs exist.
-pub const FONT_TTF: &[u8] = include_bytes!("../../assets/fonts/DejaVuSans.ttf");
+pub fn font_ttf() -> &'static [u8] {
+    static FONT: OnceLock<Vec<u8>> = OnceLock::new();
+    // Compressed by the build script (half the size in the browser's module).
+    static PACKED: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/DejaVuSans.ttf.zlib"));
+    FONT.get_or_init(|| fdeflate::decompress_to_vec(PACKED).expect("the bundled font inflates"))
+}
 
-/// The family name of [`FONT_TTF`].
+/// The family name of [`font_ttf`].
 pub const FONT_FAMILY: &str = "DejaVu Sans";
 
 /// Renders the figure as an SVG document (text kept as text).
@@ -77,7 +82,7 @@ fn fonts() -> Arc<resvg::usvg::fontdb::Database> {
     static FONTS: OnceLock<Arc<resvg::usvg::fontdb::Database>> = OnceLock::new();
     Arc::clone(FONTS.get_or_init(|| {
         let mut db = resvg::usvg::fontdb::Database::new();
-        db.load_font_data(FONT_TTF.to_vec());
+        db.load_font_data(font_ttf().to_vec());
         db.set_sans_serif_family(FONT_FAMILY);
         Arc::new(db)
     }))
@@ -134,5 +139,15 @@ pub fn tick_label(v: f64) -> String {
     } else {
         let s = format!("{v:.1e}");
         s.replace(".0e", "e")
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    /// The font the build compressed inflates to the file in `assets/fonts`, byte for byte.
+    #[test]
+    fn the_bundled_font_inflates_to_the_file() {
+        let file = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/assets/fonts/DejaVuSans.ttf")).expect("font");
+        assert!(super::font_ttf() == file.as_slice());
     }
 }

@@ -9,7 +9,7 @@ mod svg;
 pub mod ticks;
 
 pub use export::{
-    ExportError, FONT_FAMILY, FONT_TTF, csv_bytes, png_bytes, png_bytes_with_text, svg_string, tick_label, write_csv,
+    ExportError, FONT_FAMILY, csv_bytes, font_ttf, png_bytes, png_bytes_with_text, svg_string, tick_label, write_csv,
     write_png, write_svg,
 };
 pub use layout::View;

@@ -849,8 +849,14 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
             let sigma_star = surface_density_in(&star, smoothing, Some(cfg.domain()));
             for (j, &i) in dust.iter().enumerate() {
                 let b = &mut batches[i];
+                // Only particles with 10⁻² ≤ Ωt_s ≤ 1 make ρ*_d (Sect. 5.4.1):
+                // a batch outside that window adds nothing to the loading.
                 let z_star = sigma_star[j] / disk.surface_density(b.r);
-                b.loading = z_star / dust_scale_height(disk.alpha, b.stokes);
+                b.loading = if (1e-2..=1.0).contains(&b.stokes) {
+                    z_star / dust_scale_height(disk.alpha, b.stokes)
+                } else {
+                    0.0
+                };
                 let omega = disk.omega(b.r);
                 b.si = (1e-2..=1.0).contains(&b.stokes) && b.loading >= 1.0 && b.t_grow > 1.0 / omega;
             }

@@ -210,6 +210,12 @@ pub struct Declared {
     pub kind: Irregularity,
     /// Why it is physics.
     pub why: &'static str,
+    /// For a step of the model's resolution rather than of its physics: the
+    /// count parameter that sets it (e.g. the number of batches). The audit
+    /// then checks the declaration: at four times that count (at most its
+    /// largest value) the step's bracket must change by less than half as
+    /// much, or the step is reported as open. None: a step of the physics.
+    pub resolution: Option<&'static str>,
 }
 
 impl Declared {

@@ -78,7 +78,7 @@ pub fn plot_look(ui: &egui::Ui, lecture: bool) -> plot::Look {
 /// as the monospace font; without them DejaVu Sans is the only font.
 fn install_fonts(ctx: &egui::Context) {
     let mut fonts = egui::FontDefinitions::default();
-    fonts.font_data.insert("dejavu-sans".into(), Arc::new(egui::FontData::from_static(figure::FONT_TTF)));
+    fonts.font_data.insert("dejavu-sans".into(), Arc::new(egui::FontData::from_static(figure::font_ttf())));
     fonts.families.entry(egui::FontFamily::Proportional).or_default().insert(0, "dejavu-sans".into());
     fonts.families.entry(egui::FontFamily::Monospace).or_default().push("dejavu-sans".into());
     ctx.set_fonts(fonts);

@@ -131,7 +131,7 @@ pub fn scalars(ui: &mut egui::Ui, cx: &Cx<'_>) {
         .map(|(v, _)| ui.painter().layout_no_wrap(v.clone(), font.clone(), egui::Color32::WHITE).size().x)
         .fold(0.0, f32::max);
     let spacing = ui.spacing().item_spacing.x;
-    let names = (ui.available_width() - widest - 3.0 * spacing).max(60.0);
+    let names = (ui.available_width() - widest - spacing - 4.0).max(60.0);
     egui::Grid::new("scalars").num_columns(2).striped(true).show(ui, |ui| {
         for (s, (value, why)) in out.scalars.iter().zip(values) {
             ui.scope(|ui| {

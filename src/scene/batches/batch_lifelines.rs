@@ -39,6 +39,7 @@ then drift once Ωt_s approaches unity. Points are coloured by the decade of the
         parameter: "*",
         kind: Irregularity::Ignored,
         why: "a figure of the batches' paths: the scene reports only the monomer's scalars (the disk map reports the run's)",
+        resolution: None,
     }];
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<crate::scene::inspect::Inspection> {

@@ -300,12 +300,14 @@ const WHOLE_BATCHES: &str = "the dust is N batches, each lost at the inner edge,
      the dust mass), steps that shrink as N grows";
 
 /// Steps of every batch scalar along every parameter: [`WHOLE_BATCHES`].
+/// The audit holds each such step to it: at four times the batches the
+/// step's bracket must change by less than half as much.
 pub const BATCH_STEPS: Declared =
-    Declared { scalar: "*", parameter: "*", kind: Irregularity::Step, why: WHOLE_BATCHES };
+    Declared { scalar: "*", parameter: "*", kind: Irregularity::Step, why: WHOLE_BATCHES, resolution: Some("batches") };
 
 /// A physical parameter whose change moves no batch across a fate at few
 /// batches (the audit's coarse setting), so that every scalar stays exactly
 /// equal while the figures change: [`WHOLE_BATCHES`].
 pub const fn batch_quantised(parameter: &'static str) -> Declared {
-    Declared { scalar: "*", parameter, kind: Irregularity::Ignored, why: WHOLE_BATCHES }
+    Declared { scalar: "*", parameter, kind: Irregularity::Ignored, why: WHOLE_BATCHES, resolution: None }
 }

@@ -57,6 +57,7 @@ are independent and go in parallel.",
             parameter: "z_max",
             kind: Irregularity::Ignored,
             why: "the least converted disk is the poorest in metals, at the smallest Z₀",
+            resolution: None,
         },
     ];
 

@@ -52,12 +52,14 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
             parameter: "surface_density",
             kind: Irregularity::Ignored,
             why: "the run's drift and growth use the gas, not the dust estimate; the estimate only draws Σ_d",
+            resolution: None,
         },
         Declared {
             scalar: "*",
             parameter: "smoothing",
             kind: Irregularity::Ignored,
             why: "the run's drift and growth use the gas, not the dust estimate; the kernel only draws Σ_d",
+            resolution: None,
         },
     ];
 

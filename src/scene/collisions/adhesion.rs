@@ -92,6 +92,7 @@ n_c contacts, Dominik & Tielens' regimes (Table 1.1) compare the collision energ
         parameter: "contacts",
         kind: Irregularity::Ignored,
         why: "n_c sets the aggregates' energy drawn against velocity; the scalars are per monomer contact",
+        resolution: None,
     }];
 
     fn material_changed(&mut self) {

@@ -273,6 +273,7 @@ example drawn from the Wall et al. mica fit with noise 0.01.",
             parameter: "*",
             kind: Irregularity::Step,
             why: "a count of the collisions integrated: a whole number",
+            resolution: None,
         },
         search("gamma_min"),
         search("gamma_max"),
@@ -333,12 +334,12 @@ const LOWEST_MINIMUM: &str = "the best fit is the lowest of χ²'s minima: where
 
 /// A jump of the best fit's `scalar` along a radius: [`LOWEST_MINIMUM`].
 const fn jumps(scalar: &'static str, parameter: &'static str) -> Declared {
-    Declared { scalar, parameter, kind: Irregularity::Step, why: LOWEST_MINIMUM }
+    Declared { scalar, parameter, kind: Irregularity::Step, why: LOWEST_MINIMUM, resolution: None }
 }
 
 /// Steps of every result along a parameter of the search: [`SEARCH`].
 const fn search(parameter: &'static str) -> Declared {
-    Declared { scalar: "*", parameter, kind: Irregularity::Step, why: SEARCH }
+    Declared { scalar: "*", parameter, kind: Irregularity::Step, why: SEARCH, resolution: None }
 }
 
 /// The scene's output for a fit already made of `data` (also used by the

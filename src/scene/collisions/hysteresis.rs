@@ -66,27 +66,43 @@ U_S = −πa²γ and U_CD, U_BD the energy lost at the crack tip and in the bulk
             parameter: "rtol",
             kind: Irregularity::Step,
             why: "the integrator's tolerance: results move by about its size, in steps where the sequence of steps changes",
+            resolution: None,
         },
         Declared {
             scalar: "sticks",
             parameter: "*",
             kind: Irregularity::Step,
             why: "a threshold: the spheres stick below v_stick and bounce above it",
+            resolution: None,
         },
         Declared {
             scalar: "steps",
             parameter: "*",
             kind: Irregularity::Step,
             why: "a diagnostic, the integrator's accepted steps: whole numbers, and a longer run where the contact never breaks",
+            resolution: None,
         },
         Declared {
             scalar: "energy_error",
             parameter: "*",
             kind: Irregularity::Step,
             why: "a diagnostic at the level of the tolerance rtol (below 10⁻⁴ of the energy), not a result",
+            resolution: None,
         },
-        Declared { scalar: "crack_fraction", parameter: "*", kind: Irregularity::Step, why: TWO_STICKING_REGIMES },
-        Declared { scalar: "bulk_fraction", parameter: "*", kind: Irregularity::Step, why: TWO_STICKING_REGIMES },
+        Declared {
+            scalar: "crack_fraction",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: TWO_STICKING_REGIMES,
+            resolution: None,
+        },
+        Declared {
+            scalar: "bulk_fraction",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: TWO_STICKING_REGIMES,
+            resolution: None,
+        },
     ];
 
     fn material_changed(&mut self) {

@@ -185,6 +185,7 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
             parameter: "velocity",
             kind: Irregularity::Ignored,
             why: "the velocity fixes e(R), a figure; the scalars are thresholds of e(v) and do not depend on it",
+            resolution: None,
         },
         Declared {
             scalar: "*",
@@ -192,6 +193,7 @@ e(v) is drawn through adaptively placed collisions, within 5 × 10⁻⁵ of the 
             kind: Irregularity::Ignored,
             why: "e_max is the largest e on the velocity grid, which ends at v_max: where e rises towards v_max, the \
                   grid's start moves no scalar",
+            resolution: None,
         },
     ];
 

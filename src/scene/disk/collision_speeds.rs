@@ -269,11 +269,35 @@ transitions by orders of magnitude in mass.",
     };
 
     const DECLARED: &'static [Declared] = &[
-        Declared { scalar: "share_brownian", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
-        Declared { scalar: "share_turbulence", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
-        Declared { scalar: "share_settling", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
-        Declared { scalar: "share_radial", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
-        Declared { scalar: "share_azimuthal", parameter: "*", kind: Irregularity::Step, why: DOMINANT },
+        Declared {
+            scalar: "share_brownian",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: DOMINANT,
+            resolution: None,
+        },
+        Declared {
+            scalar: "share_turbulence",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: DOMINANT,
+            resolution: None,
+        },
+        Declared {
+            scalar: "share_settling",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: DOMINANT,
+            resolution: None,
+        },
+        Declared { scalar: "share_radial", parameter: "*", kind: Irregularity::Step, why: DOMINANT, resolution: None },
+        Declared {
+            scalar: "share_azimuthal",
+            parameter: "*",
+            kind: Irregularity::Step,
+            why: DOMINANT,
+            resolution: None,
+        },
     ];
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {

@@ -111,18 +111,21 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             parameter: "*",
             kind: Irregularity::Step,
             why: "a count of tracks: a whole number",
+            resolution: None,
         },
         Declared {
             scalar: "outermost_planetesimal_start",
             parameter: "*",
             kind: Irregularity::Step,
             why: "the start of one of the log-spaced tracks: it moves by whole spacings of the track grid (`tracks`)",
+            resolution: None,
         },
         Declared {
             scalar: "outermost_planetesimal_formation",
             parameter: "*",
             kind: Irregularity::Step,
             why: "where the outermost forming track ends: it moves when another track of the grid becomes the outermost",
+            resolution: None,
         },
         Declared {
             scalar: "max_stokes_eroded",
@@ -130,6 +133,7 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             kind: Irregularity::Step,
             why: "the largest Ωt_s over the tracks halted by erosion: it steps where a track starts or stops being halted \
                   by erosion",
+            resolution: None,
         },
         Declared {
             scalar: "*",
@@ -137,6 +141,7 @@ near Ωt_s ~ 1. Second plot: the particle radius (Fig. 4.14).",
             kind: Irregularity::Ignored,
             why: "the bouncing threshold halts compact growth only; compact tracks are drawn for comparison and have no \
                   scalar",
+            resolution: None,
         },
     ];
 

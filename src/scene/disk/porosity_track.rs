@@ -57,18 +57,21 @@ collisional, gas and self-gravity compaction. Local growth at fixed R (no drift)
             kind: Irregularity::Step,
             why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
                   where the track gains or loses a point",
+            resolution: None,
         },
         Declared {
             scalar: "phi_min_collisional",
             parameter: "v_frag",
             kind: Irregularity::Step,
             why: "a threshold: below it growth halts at the fragmentation barrier, before φ reaches its lowest value",
+            resolution: None,
         },
         Declared {
             scalar: "phi_min_collisional",
             parameter: "v_eros",
             kind: Irregularity::Step,
             why: "a threshold: below it growth halts at the erosion barrier, before φ reaches its lowest value",
+            resolution: None,
         },
     ];
 

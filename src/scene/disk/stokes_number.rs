@@ -100,12 +100,14 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
             parameter: "*",
             kind: Irregularity::Step,
             why: "a diagnostic, a whole number of iterations",
+            resolution: None,
         },
         Declared {
             scalar: "*",
             parameter: "alpha",
             kind: Irregularity::Ignored,
             why: "α draws only the line Ωt_s = α: stopping times and drag regimes do not depend on it",
+            resolution: None,
         },
     ];
 

@@ -284,4 +284,5 @@ pub const EVENT_COUNT: crate::scene::core::Declared = crate::scene::core::Declar
     parameter: "*",
     kind: crate::scene::core::Irregularity::Step,
     why: "a diagnostic, the group events of a run: whole numbers, with the grouping and the random path",
+    resolution: None,
 };

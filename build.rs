@@ -52,7 +52,9 @@ fn main() {
 fn compress_font() {
     let font = "assets/fonts/DejaVuSans.ttf";
     println!("cargo:rerun-if-changed={font}");
-    let bytes = std::fs::read(font).expect("the bundled font assets/fonts/DejaVuSans.ttf");
+    let root = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".into());
+    let bytes =
+        std::fs::read(std::path::Path::new(&root).join(font)).expect("the bundled font assets/fonts/DejaVuSans.ttf");
     let packed = miniz_oxide::deflate::compress_to_vec_zlib(&bytes, 10);
     let out = std::path::Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("DejaVuSans.ttf.zlib");
     std::fs::write(out, packed).expect("OUT_DIR is writable");

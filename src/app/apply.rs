@@ -688,7 +688,7 @@ mod tests {
         let view = crate::figure::layout::View::of(&fig);
         let mid = |r: [f64; 2]| 0.5 * (r[0] + r[1]);
         let (x, y) = ([view.x[0], mid(view.x), view.x[1]], mid(view.y));
-        let stroke = crate::app::state::InkStroke {
+        let stroke = crate::app::command::InkStroke {
             points: vec![[0.3, 0.3], [0.5, 0.5], [0.7, 0.3]],
             on: vec![(fig.id.clone(), x.iter().map(|x| [*x, y]).collect()), ("elsewhere".into(), vec![[1.0, 1.0]; 2])],
         };

@@ -390,7 +390,7 @@ pub enum Command {
     /// Close the speaker notes' own window.
     CloseNotesWindow,
     /// A finished stroke of ink.
-    InkStroke(super::state::InkStroke),
+    InkStroke(InkStroke),
     /// Whether exported figures carry the ink drawn on them.
     SetInkInExports(bool),
     /// Seconds passed (the presenter's timer).
@@ -420,4 +420,15 @@ impl Default for Sweep {
     fn default() -> Self {
         Sweep { key: "velocity".into(), from: 1.0, to: 10.0, steps: 5 }
     }
+}
+
+/// A stroke of ink.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct InkStroke {
+    /// Its points as fractions of the window's width and height (so that it
+    /// stays on the figure when the window is resized).
+    pub points: Vec<[f32; 2]>,
+    /// The same stroke in the axis units of each figure it was drawn on
+    /// (figure id, points), for exports.
+    pub on: Vec<(String, Vec<[f64; 2]>)>,
 }

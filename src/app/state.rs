@@ -4,7 +4,7 @@
 //! inspected point. Commands change it ([`AppState::apply`], in
 //! `apply.rs`); panels read it. It imports no egui and is tested directly.
 
-use super::command::Sweep;
+use super::command::{InkStroke, Sweep};
 use super::history::History;
 use super::jobs::Job;
 use super::platform::FileKind;
@@ -77,17 +77,6 @@ pub struct Classroom {
 impl Classroom {
     /// The pause after which a digit starts a new slide number, s.
     pub const DIGIT_PAUSE: f64 = 2.0;
-}
-
-/// A stroke of ink.
-#[derive(Debug, Clone, Default, PartialEq)]
-pub struct InkStroke {
-    /// Its points as fractions of the window's width and height (so that it
-    /// stays on the figure when the window is resized).
-    pub points: Vec<[f32; 2]>,
-    /// The same stroke in the axis units of each figure it was drawn on
-    /// (figure id, points), for exports.
-    pub on: Vec<(String, Vec<[f64; 2]>)>,
 }
 
 /// The deck being built in the window.

@@ -58,7 +58,7 @@ pub fn layer(ctx: &egui::Context, cx: &mut Cx<'_>, figures: egui::Rect) {
                         .filter(|(_, placed)| on_screen.iter().any(|q| placed.frame.contains(*q)))
                         .map(|(id, placed)| (id.clone(), on_screen.iter().map(|q| placed.value_at(*q)).collect()))
                         .collect();
-                    cx.send(Command::InkStroke(crate::app::state::InkStroke { points, on }));
+                    cx.send(Command::InkStroke(crate::app::command::InkStroke { points, on }));
                 }
             },
         );

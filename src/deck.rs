@@ -272,6 +272,30 @@ mod tests {
         assert!(chapters.len() >= 8, "the overview walks many scenes: {chapters:?}");
     }
 
+    /// Speaker notes write a unit as the slide's controls show it ("J/m²",
+    /// not "J m⁻²"): one form of a unit within a slide.
+    #[test]
+    fn notes_write_units_as_the_controls_do() {
+        for (file, text) in SHIPPED {
+            let mut loaded = Deck::from_ron(text, file, None).unwrap_or_else(|e| panic!("{e}"));
+            assert_eq!(loaded.deck.slides.len(), loaded.params.len());
+            for (slide, params) in loaded.deck.slides.iter().zip(loaded.params.iter_mut()) {
+                for c in params.controls() {
+                    // The stored unit written out, where the screen writes the same unit otherwise.
+                    let (screen, written) = (crate::units::pretty(c.unit), crate::units::superscripts(c.si_unit));
+                    if !c.unit.is_empty() && crate::units::pretty(c.si_unit) == screen && written != screen {
+                        assert!(
+                            !slide.notes.contains(&format!(" {written}")),
+                            "{file}: '{}' writes {written} where its control {} shows {screen}",
+                            slide.title,
+                            c.key
+                        );
+                    }
+                }
+            }
+        }
+    }
+
     /// Slides that do not resolve are refused with their number and title.
     #[test]
     fn bad_slides_are_named() {

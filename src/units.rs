@@ -167,7 +167,7 @@ pub fn pretty(unit: &str) -> String {
 }
 
 /// "^-12" → "⁻¹²", and the symbols of the Sun and the Earth.
-fn superscripts(unit: &str) -> String {
+pub(crate) fn superscripts(unit: &str) -> String {
     let unit = unit.replace("M_sun", "M☉").replace("L_sun", "L☉").replace("M_earth", "M⊕");
     let mut out = String::with_capacity(unit.len());
     let mut chars = unit.chars().peekable();

@@ -1302,7 +1302,14 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
 
 /// The cached data of a pair of families `a`, `b`, (K/V, headroom), from the
 /// model's rate coefficient and effect; `limits` are (f_m, f_φ).
-fn pair_data<P>(limits: (f64, f64), volume: f64, a: &Family<P>, b: &Family<P>, rate: f64, effect: Effect) -> (f64, f32) {
+fn pair_data<P>(
+    limits: (f64, f64),
+    volume: f64,
+    a: &Family<P>,
+    b: &Family<P>,
+    rate: f64,
+    effect: Effect,
+) -> (f64, f32) {
     let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
     let c = rate / volume;
     let (dm, dphi, c) = match effect {

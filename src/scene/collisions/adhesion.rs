@@ -20,16 +20,16 @@ pub struct Params {
     /// monomer material (Table 2.2)
     #[param(label = "material", default = Material::water_ice())]
     pub material: Material,
-    /// radius of one monomer (default 0.1 µm)
+    /// radius of one monomer
     #[param(label = "monomer radius r₀", unit = "m", shown("µm", 1e6), range(1e-8, 1e-2), log, default = 1e-7)]
     pub radius: f64,
     /// combined surface energy (2γ_L; default 0.74)
     #[param(quantity = quantities::surface_energy, default = 0.74)]
     pub surface_energy: f64,
-    /// range of surface forces (default 0.3 nm)
+    /// range of surface forces
     #[param(quantity = quantities::force_range, default = 3e-10)]
     pub z0: f64,
-    /// critical rolling displacement (default 0.1 nm)
+    /// critical rolling displacement
     #[param(label = "rolling displacement ξ", unit = "m", shown("nm", 1e9), range(1e-11, 1e-8), log, default = 1e-10)]
     pub xi: f64,
     /// monomers in each of two equal aggregates

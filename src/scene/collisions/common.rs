@@ -24,10 +24,10 @@ pub struct CollisionParams {
     /// sphere 1 hits a flat wall of material 2
     #[param(label = "sphere on wall", default = false)]
     pub wall: bool,
-    /// radius of sphere 1 (default 2 µm)
+    /// radius of sphere 1
     #[param(label = "radius 1", unit = "m", shown("µm", 1e6), range(2e-8, 2e-2), log, default = 2e-6)]
     pub radius_1: f64,
-    /// radius of sphere 2 (default 2 µm; unused for a wall)
+    /// radius of sphere 2 (unused for a wall)
     #[param(label = "radius 2", unit = "m", shown("µm", 1e6), range(2e-8, 2e-2), log, default = 2e-6)]
     pub radius_2: f64,
     /// combined surface energy of the contact (2γ_L for like materials; default 0.74)
@@ -36,18 +36,18 @@ pub struct CollisionParams {
     /// 2(γ₁γ₂)^{1/2} for the chosen materials).
     #[param(quantity = quantities::surface_energy, default = 0.74)]
     pub surface_energy: f64,
-    /// viscous relaxation time (default 1e-11 s)
+    /// viscous relaxation time
     #[param(label = "relaxation time T_vis", unit = "s", range(1e-15, 1e-8), log, default = 1e-11)]
     pub t_vis: f64,
-    /// range of the surface forces, σ₀ = γ/z₀ (default 0.3 nm)
+    /// range of the surface forces, σ₀ = γ/z₀
     #[param(quantity = quantities::force_range, default = 3e-10)]
     pub z0: f64,
-    /// relaxed to instantaneous modulus (default 0.02)
+    /// relaxed to instantaneous modulus
     #[param(label = "modulus ratio k", range(0.005, 0.3), log, default = 0.02)]
     pub k: f64,
     /// crack speed ȧ(β): the exact Dugdale-zone relation of the three-element solid at any k, or the thesis's (2.16) with Greenwood's fits (2.17) (made for k = 0.02; applied for k = 0.018–0.022), or (2.16) alone
     ///
-    /// Crack-speed relation, a key of [`Relation::CHOICES`] (default "full").
+    /// Crack-speed relation, a key of [`Relation::CHOICES`].
     /// Files written before the choice existed say `low_speed_fit: true`
     /// (the thesis's law) or `false` ((2.16) alone), and keep their law.
     #[serde(alias = "low_speed_fit", deserialize_with = "crack_law_or_legacy_switch")]
@@ -56,13 +56,13 @@ pub struct CollisionParams {
     /// Thornton–Ning plastic yield (2.29)
     #[param(label = "plasticity", default = false)]
     pub plasticity: bool,
-    /// yield strength in simple tension (default 100 MPa)
+    /// yield strength in simple tension
     #[param(label = "yield strength Y", unit = "Pa", shown("MPa", 1e-6), range(1e5, 1e11), log, default = 1e8)]
     pub yield_strength: f64,
-    /// relative velocity at first contact (default 8 m/s)
+    /// relative velocity at first contact
     #[param(label = "impact velocity v", unit = "m s^-1", shown("m/s", 1.0), range(1e-3, 1e3), log, default = 8.0)]
     pub velocity: f64,
-    /// relative tolerance of the integrator (default 1e-6)
+    /// relative tolerance of the integrator
     ///
     /// Relative tolerance of the integrator (default 1e-6; smaller is more
     /// accurate and slower, see the collision benchmark).

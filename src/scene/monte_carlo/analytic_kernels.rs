@@ -248,7 +248,7 @@ the groups per decade w* grow; the low-mass tail stays resolved far below the pe
         let scalars = vec![
             Scalar {
                 key: "core_error",
-                label: "worst error, bins with 90 % of the mass",
+                label: "worst error, bins holding 0.9 of the mass",
                 value: core_error(&bins, 0.9),
                 unit: "",
             },

@@ -39,7 +39,7 @@ pub struct ColumnParams {
     /// how aggregates are compressed
     #[param(label = "compaction")]
     pub compaction: ColumnCompaction,
-    /// projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴: none)
+    /// projectiles below R_crit = 10⁻² of the target's mass erode above it (10⁴ m/s: none)
     #[param(quantity = quantities::v_eros, label = "erosion threshold v_eros", default = 1e4)]
     pub v_eros: f64,
     /// similar-size collisions above it shatter (80 m/s for 0.1 µm ice)

@@ -376,7 +376,7 @@ fn ladder(scalars: &[Scalar], mono: &Monomer, p: &Params) -> Vec<Rung> {
             ),
             items: vec![
                 item("planetesimals form out to", text("formation_edge", &|v| format!("{} AU", h(v))), "Fig. 5.9"),
-                item("dust converted", text("converted", &|v| format!("{} %", h(100.0 * v))), "Sect. 5.3"),
+                item("dust converted (fraction)", text("converted", &|v| h(v)), "Sect. 5.3"),
             ],
         },
     ]

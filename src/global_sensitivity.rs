@@ -565,3 +565,130 @@ mod tests {
         }
     }
 }
+
+/// One run's output for an analysis: the value (None where it is undefined
+/// or the run failed) and whether it is a bound entered at the bound.
+pub type RunValue = (Option<f64>, bool);
+
+/// Computes runs `from..to` of `design` (in design order) over the
+/// parameters `base`: scalar `output` in unit `unit`, in parallel, through
+/// the scene's quick path where it has one. The same values as the runs of
+/// `grainscope sensitivity` (the same plan).
+pub fn run_values(
+    base: &crate::scene::SceneParams,
+    design: &Design,
+    output: &str,
+    unit: &str,
+    range: std::ops::Range<usize>,
+    progress: &crate::scene::Progress,
+) -> Result<Vec<RunValue>, String> {
+    use crate::sweep::{Columns, Plan};
+    let points = design.points().map_err(|e| e.to_string())?;
+    let plan = Plan::of_points(base.clone(), design.vary(), points).map_err(|e| e.to_string())?;
+    let columns = Columns::new(vec![output.to_string()], vec![unit.to_string()], &plan.base);
+    let indices: Vec<usize> = range.filter(|&i| i < plan.len()).collect();
+    let rows = crate::sweep::run(&plan, &columns, &indices, progress, &|_| {}).map_err(|e| e.to_string())?;
+    Ok(rows
+        .iter()
+        .map(|r| match (&r.error, r.scalars.first().copied().flatten()) {
+            (None, Some(v)) if v.is_finite() => (Some(v), r.status.first().is_some_and(|s| s.starts_with("above"))),
+            _ => (None, false),
+        })
+        .collect())
+}
+
+/// The indices of a design from the runs done so far.
+#[derive(Debug, Clone, PartialEq, serde::Serialize)]
+pub struct Answer {
+    /// Morris's measures per factor (a Morris design).
+    pub morris: Option<Vec<MorrisIndex>>,
+    /// Sobol' indices (a Sobol' design).
+    pub sobol: Option<SobolResult>,
+    /// Runs analysed: the complete trajectories or base samples among those done.
+    pub runs: usize,
+    /// Runs of the whole design.
+    pub total: usize,
+    /// Runs analysed whose output is undefined (left out by the stated rule).
+    pub undefined: usize,
+    /// Runs analysed whose output is a bound (entered at the bound).
+    pub bounded: usize,
+}
+
+/// Bootstrap resamples of the confidence intervals (as SALib's default).
+pub const RESAMPLES: usize = 1000;
+
+/// The indices from `values`, the first runs of `design` in design order:
+/// a prefix of whole Morris trajectories or Sobol' base samples is a design
+/// of its own, so the indices fill in as runs finish and equal those of the
+/// whole design once every run is done. `log_output` analyses ln X (a
+/// non-positive X counts as undefined). None until two trajectories or base
+/// samples are complete.
+pub fn answer(design: &Design, values: &[RunValue], log_output: bool) -> Result<Option<Answer>, DesignError> {
+    let d = design.factors.len();
+    let block = match design.method {
+        Method::Morris { .. } => d + 1,
+        Method::Sobol { second_order, .. } => sobol_runs_per_sample(d, second_order),
+        Method::Given { .. } => return Ok(None),
+    };
+    let whole = values.len() / block.max(1);
+    if whole < 2 {
+        return Ok(None);
+    }
+    let used = &values[..whole * block];
+    let (mut undefined, mut bounded) = (0, 0);
+    let y: Vec<f64> = used
+        .iter()
+        .map(|&(v, bound)| match v {
+            Some(v) if v > 0.0 || !log_output => {
+                bounded += usize::from(bound);
+                if log_output { v.ln() } else { v }
+            }
+            _ => {
+                undefined += 1;
+                f64::NAN
+            }
+        })
+        .collect();
+    let (morris, sobol) = match design.method {
+        Method::Morris { .. } => {
+            let unit = design.unit_points()?;
+            (Some(morris(&unit[..used.len()], &y, d, RESAMPLES, design.seed)), None)
+        }
+        _ => {
+            let second = matches!(design.method, Method::Sobol { second_order: true, .. });
+            (None, Some(sobol(&y, d, second, RESAMPLES, design.seed)))
+        }
+    };
+    Ok(Some(Answer { morris, sobol, runs: used.len(), total: design.runs(), undefined, bounded }))
+}
+
+#[cfg(test)]
+mod answer_tests {
+    use super::*;
+
+    /// The indices of a prefix of whole trajectories are those of that many
+    /// trajectories; fewer than two give none, a partial one is left out.
+    #[test]
+    fn a_prefix_of_whole_trajectories_is_analysed() {
+        let factor = |key: &str| Factor { key: key.into(), log: false, from: 0.0, to: 1.0 };
+        let design = Design {
+            method: Method::Morris { trajectories: 8, levels: 4 },
+            factors: vec![factor("a"), factor("b")],
+            seed: 3,
+        };
+        let unit = design.unit_points().expect("a design");
+        // y = 3a + b: μ* = 3 and 1 on every trajectory.
+        let values: Vec<RunValue> = unit.iter().map(|u| (Some(3.0 * u[0] + u[1]), false)).collect();
+        assert_eq!(answer(&design, &values[..5], false).expect("a design"), None);
+        let part = answer(&design, &values[..3 * 3 + 2], false).expect("a design").expect("three trajectories");
+        assert_eq!((part.runs, part.total), (9, 24));
+        let m = part.morris.expect("Morris");
+        assert!((m[0].mu_star - 3.0).abs() < 1e-12 && (m[1].mu_star - 1.0).abs() < 1e-12);
+        assert_eq!(m[0].effects, 3);
+        let whole = answer(&design, &values, false).expect("a design").expect("all");
+        assert_eq!(
+            whole.morris.expect("Morris"),
+            morris(&unit, &values.iter().map(|v| v.0.unwrap_or(f64::NAN)).collect::<Vec<_>>(), 2, RESAMPLES, 3)
+        );
+    }
+}

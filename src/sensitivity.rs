@@ -40,12 +40,28 @@ pub struct View {
     pub x: String,
     /// The map's second parameter; empty for a curve.
     pub y: String,
+    /// The study over whole ranges (Morris or Sobol'), if the view holds one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub whole: Option<WholeRange>,
 }
 
 impl Default for View {
     fn default() -> Self {
-        View { output: String::new(), factor: 2.0, x: String::new(), y: String::new() }
+        View { output: String::new(), factor: 2.0, x: String::new(), y: String::new(), whole: None }
     }
+}
+
+/// A global sensitivity study of the view's result over whole parameter
+/// ranges: Morris's elementary effects or Sobol' indices, as `grainscope
+/// sensitivity` computes them.
+#[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct WholeRange {
+    /// The design: method and size, the factors and their ranges (SI), the seed.
+    pub design: crate::global_sensitivity::Design,
+    /// Analyse ln X (effects become relative changes).
+    #[serde(default)]
+    pub log_output: bool,
 }
 
 /// A scalar at one point of parameter space.

@@ -284,8 +284,7 @@ pub const UNDEFINED_RULE: &str = "an undefined output (or a failed run) is left 
 pub const BOUND_RULE: &str =
     "an output known only as a bound (\"> 10⁴ m/s\") enters at the bound, a conservative value, and is counted";
 
-/// Bootstrap resamples of the confidence intervals (as SALib's default).
-const RESAMPLES: usize = 1000;
+use crate::global_sensitivity::RESAMPLES;
 
 /// Analyses the finished design folder `dir` (one run unsharded, or its
 /// shards merged): the design's outputs by its method, into
@@ -398,7 +397,7 @@ fn second_order_csv(a: &Analysis) -> Option<String> {
 
 /// Morris: σ against μ* per factor. Sobol': S1 (filled) and ST (open) per
 /// factor, at its number along the axis, with their intervals.
-fn analysis_figure(a: &Analysis) -> Figure {
+pub fn analysis_figure(a: &Analysis) -> Figure {
     use crate::figure::{Fill, Shape};
     let names: Vec<String> = a.design.factors.iter().enumerate().map(|(i, f)| format!("{} {}", i + 1, f.key)).collect();
     if let Some(m) = &a.morris {

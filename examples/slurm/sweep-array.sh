@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# One task of a sweep spread over a Slurm job array: each task computes its
+# One task of a sweep (or, with GRAINSCOPE_COMMAND=sensitivity, of a
+# sensitivity design) spread over a Slurm job array: each task computes its
 # deterministic slice of the points (`--shard auto` reads the task's number
 # and the array's size from Slurm) into a folder of its own.
 #
@@ -13,4 +14,4 @@ set -euo pipefail
 out=$1
 shift
 bin=${GRAINSCOPE:-grainscope}
-exec "$bin" sweep "$@" --shard auto --out "$out/shard-${SLURM_ARRAY_TASK_ID}"
+exec "$bin" "${GRAINSCOPE_COMMAND:-sweep}" "$@" --shard auto --out "$out/shard-${SLURM_ARRAY_TASK_ID}"

@@ -24,6 +24,8 @@ import functools
 import io
 import json
 import math
+import os
+import tempfile
 from dataclasses import dataclass
 from typing import Any, Dict, List, Mapping, Optional, Sequence, Tuple, Union
 
@@ -507,6 +509,57 @@ def _shard_table(preset_ron: str, vary: List[str], scalars: List[str], k: int, n
     return _native.sweep_table(preset_ron, vary, scalars, k, n)
 
 
+def _read_files(folder: str) -> Dict[str, bytes]:
+    """The files of a folder (none if it does not exist)."""
+    if not os.path.isdir(folder):
+        return {}
+    out = {}
+    for name in sorted(os.listdir(folder)):
+        path = os.path.join(folder, name)
+        if os.path.isfile(path):
+            with open(path, "rb") as f:
+                out[name] = f.read()
+    return out
+
+
+def _write_files(folder: str, files: Mapping[str, bytes]) -> None:
+    """Writes `files` into `folder`, each whole or not at all."""
+    os.makedirs(folder, exist_ok=True)
+    for name, data in files.items():
+        path = os.path.join(folder, name)
+        with open(path + ".part", "wb") as f:
+            f.write(data)
+        os.replace(path + ".part", path)
+
+
+def _shard_task(kind: str, args: Tuple[Any, ...], k: int, n: int, files: Mapping[str, bytes]) -> Dict[str, bytes]:
+    """One Dask task: shard `k` of `n` of a sweep ("sweep") or a sensitivity
+    design ("design"), computed in a folder of the worker's own that starts
+    with the shard's files so far (so it resumes); returns the folder's
+    files. Workers need no file system shared with the client."""
+    with tempfile.TemporaryDirectory() as folder:
+        _write_files(folder, files)
+        if kind == "sweep":
+            _native.sweep_folder(*args, folder, k, n)
+        else:
+            _native.sensitivity_folder(*args, folder, k, n)
+        return _read_files(folder)
+
+
+def _spread(client: Any, kind: str, args: Tuple[Any, ...], n: int, out: str) -> None:
+    """Computes a sweep or design over a Dask `client` in `n` shards kept in
+    `out`/shards/K-of-N (each resumed from what it holds there), then merges
+    them into `out` as `grainscope sweep-merge` does: the unsharded run's files."""
+    dirs = [os.path.join(out, "shards", f"{k}-of-{n}") for k in range(1, n + 1)]
+    futures = client.map(
+        _shard_task, [kind] * n, [args] * n, list(range(1, n + 1)), [n] * n, [_read_files(d) for d in dirs], pure=False
+    )
+    for d, future in zip(dirs, futures):
+        # Each shard is kept as soon as it is done: a later call resumes from it.
+        _write_files(d, future.result())
+    _native.merge_folders(dirs, out)
+
+
 def _workers(client: Any) -> int:
     try:
         return max(1, sum(client.nthreads().values()))
@@ -537,7 +590,9 @@ def sweep(
     command line's folder (sweep.csv, sweep.ron, figures) and resumes from the
     rows already in it. `client`, a `dask.distributed.Client`, spreads the
     points over its workers in `shards` deterministic slices (one per worker
-    thread by default); the table is the same as computed here.
+    thread by default); the table is the same as computed here. With both,
+    the shards are kept in `out`/shards and merged into `out`; a call
+    again resumes each from what it holds.
 
     Returns a pandas DataFrame when pandas is installed (its `attrs` name
     the build, "program", and the preset, "preset"), else a dict of numpy
@@ -550,12 +605,16 @@ def sweep(
         raise TypeError(f"vary takes a mapping of parameter names to values, e.g. vary={{'velocity': gs.log(1, 10, 5)}}, not {type(vary).__name__}")
     if not vary:
         raise ValueError("nothing to vary: give vary={'name': gs.log(...)}")
-    if out is not None and client is not None:
-        raise ValueError("give out= or client=, not both: a folder is computed here")
     preset_ron = _native.preset_ron(preset, scene, _sets(params, seed, preset, scene))
     texts = [_vary_text(k, v) for k, v in vary.items()]
     chosen = list(scalars) if scalars is not None else []
-    if out is not None:
+    if out is not None and client is not None:
+        points = _native.sweep_points(preset_ron, texts)
+        n = max(1, min(points, int(shards) if shards else _workers(client)))
+        _spread(client, "sweep", (preset_ron, texts, chosen), n, str(out))
+        with open(os.path.join(str(out), "sweep.csv"), encoding="utf-8") as f:
+            table = f.read()
+    elif out is not None:
         table = _native.sweep_folder(preset_ron, texts, chosen, str(out))
     elif client is not None:
         points = _native.sweep_points(preset_ron, texts)
@@ -597,6 +656,8 @@ def _sensitivity(
     seed: int,
     log_output: bool,
     out: Any,
+    client: Any,
+    shards: Optional[int],
     params: Mapping[str, Any],
 ) -> Dict[str, Any]:
     if not isinstance(vary, Mapping) or not vary:
@@ -610,16 +671,21 @@ def _sensitivity(
     for name, value in (("samples", samples), ("levels", levels), ("seed", seed)):
         if isinstance(value, bool) or not isinstance(value, (int, np.integer)) or value < 0:
             raise TypeError(f"{name} takes a whole number, not {value!r}")
+    if shards is not None and (isinstance(shards, bool) or not isinstance(shards, (int, np.integer)) or shards < 1):
+        raise TypeError(f"shards takes a whole number ≥ 1, not {shards!r}")
     preset_ron = _native.preset_ron(preset, scene, _sets(params, None, preset, scene))
     factors = [_factor_text(k, v) for k, v in vary.items()]
-    import tempfile
+    args = (
+        preset_ron, method, factors, [f"{k}={v}" for k, v in ties.items()], output,
+        int(samples), int(levels), bool(second_order), int(seed), bool(log_output),
+    )
 
     def go(folder: str) -> Dict[str, Any]:
-        text = _native.sensitivity_folder(
-            preset_ron, method, factors, [f"{k}={v}" for k, v in ties.items()], output,
-            int(samples), int(levels), bool(second_order), int(seed), bool(log_output), folder,
-        )
-        return json.loads(text)
+        if client is None:
+            return json.loads(_native.sensitivity_folder(*args, folder))
+        n = int(shards) if shards else _workers(client)
+        _spread(client, "design", args, n, folder)
+        return json.loads(_native.analyse_folder(folder, bool(log_output)))
 
     if out is not None:
         return go(str(out))
@@ -663,6 +729,8 @@ def morris(
     seed: int = 2015,
     log_output: bool = False,
     out: Any = None,
+    client: Any = None,
+    shards: Optional[int] = None,
     **params: Any,
 ) -> Any:
     """Morris's elementary effects of scalar `output` over the ranges in
@@ -671,12 +739,17 @@ def morris(
 
     `tie` maps a parameter to the one whose value it takes ({'radius_2':
     'radius_1'}: equal spheres); `log_output` analyses ln of the output.
-    `out` keeps the runs in a folder (resumed when called again). Returns a
+    `out` keeps the runs in a folder (resumed when called again). `client`,
+    a `dask.distributed.Client`, spreads the runs over its workers in
+    `shards` slices (one per worker thread by default), with `out` or
+    without; the indices are the same as computed here. Returns a
     DataFrame shaped like SALib's `to_df()` (a row per parameter; `attrs`
     name the build, the runs and how many were undefined or bounds), or a
     dict of arrays without pandas.
     """
-    a = _sensitivity("morris", preset, vary, output, scene, tie, trajectories, levels, False, seed, log_output, out, params)
+    a = _sensitivity(
+        "morris", preset, vary, output, scene, tie, trajectories, levels, False, seed, log_output, out, client, shards, params
+    )
     names = [f["key"] for f in a["design"]["factors"]]
     m = a["morris"]
     rows = {k: [_number(i[k]) for i in m] for k in ("mu", "mu_star", "sigma", "mu_star_conf")}
@@ -696,6 +769,8 @@ def sobol(
     seed: int = 2015,
     log_output: bool = False,
     out: Any = None,
+    client: Any = None,
+    shards: Optional[int] = None,
     **params: Any,
 ) -> Any:
     """Sobol' indices of scalar `output` over the ranges in `vary`, as
@@ -704,10 +779,12 @@ def sobol(
 
     Returns a list of frames shaped like SALib's `to_df()`: total indices
     (ST, ST_conf), first-order (S1, S1_conf) and, with `second_order`, S2
-    and S2_conf indexed by parameter pairs. `tie`, `log_output` and `out`
-    as for `morris`.
+    and S2_conf indexed by parameter pairs. `tie`, `log_output`, `out`,
+    `client` and `shards` as for `morris`.
     """
-    a = _sensitivity("sobol", preset, vary, output, scene, tie, samples, 4, second_order, seed, log_output, out, params)
+    a = _sensitivity(
+        "sobol", preset, vary, output, scene, tie, samples, 4, second_order, seed, log_output, out, client, shards, params
+    )
     names = [f["key"] for f in a["design"]["factors"]]
     r = a["sobol"]
     idx = r["indices"]

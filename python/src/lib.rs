@@ -382,10 +382,7 @@ fn sweep_table(
     k: usize,
     n: usize,
 ) -> PyResult<String> {
-    if k == 0 || k > n {
-        return Err(PyValueError::new_err(format!("shard {k}/{n}: expected 1 ≤ k ≤ n")));
-    }
-    let shard = Shard { k, n };
+    let shard = shard_of(k, n)?;
     let (plan, columns) = plan_of(py, preset_ron, &vary, &scalars)?;
     let indices: Vec<usize> = (0..plan.len()).filter(|&i| shard.owns(i)).collect();
     let rows = interruptible(py, &Progress::default(), move |progress| {
@@ -418,22 +415,35 @@ fn merge_tables(
     Ok(sweep::table(&plan, &columns, &rows))
 }
 
-/// Runs a sweep into folder `out` as the command line's `sweep --out` does
-/// (resuming from the rows already there); returns the table.
+/// The shard `k` of `n`, checked.
+fn shard_of(k: usize, n: usize) -> PyResult<Shard> {
+    if k == 0 || k > n {
+        return Err(PyValueError::new_err(format!("shard {k}/{n}: expected 1 ≤ k ≤ n")));
+    }
+    Ok(Shard { k, n })
+}
+
+/// Runs a sweep (shard `k` of `n`) into folder `out` as the command line's
+/// `sweep --shard K/N --out` does (resuming from the rows already there);
+/// returns the table of the rows in the folder.
 #[pyfunction]
+#[pyo3(signature = (preset_ron, vary, scalars, out, k=1, n=1))]
 fn sweep_folder(
     py: Python<'_>,
     preset_ron: &str,
     vary: Vec<String>,
     scalars: Vec<String>,
     out: PathBuf,
+    k: usize,
+    n: usize,
 ) -> PyResult<String> {
+    let shard = shard_of(k, n)?;
     let preset = from_ron(preset_ron)?;
     // Names and values are checked first, with the errors of a sweep in memory.
     checked_plan(preset_ron, &vary)?;
     let folder = out.clone();
     interruptible(py, &Progress::default(), move |_| {
-        grainscope::sweep_files::run(preset, &vary, &[], &scalars, Shard::ALL, &folder, &|_, _| {})
+        grainscope::sweep_files::run(preset, &vary, &[], &scalars, shard, &folder, &|_, _| {})
     })?
     .map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
     std::fs::read_to_string(out.join("sweep.csv"))
@@ -443,10 +453,11 @@ fn sweep_folder(
 /// Runs a global sensitivity design into folder `out` as the command
 /// line's `sensitivity --out` does (resuming from the runs already there)
 /// and analyses it; returns the analysis as JSON (`sensitivity.json`'s
-/// "analysis").
+/// "analysis"). Shard `k` of `n` (n > 1) only computes its runs, as
+/// `sensitivity --shard K/N` does, and returns an empty text.
 #[pyfunction]
 #[allow(clippy::too_many_arguments)]
-#[pyo3(signature = (preset_ron, method, factors, tie, output, samples, levels, second_order, seed, log_output, out))]
+#[pyo3(signature = (preset_ron, method, factors, tie, output, samples, levels, second_order, seed, log_output, out, k=1, n=1))]
 fn sensitivity_folder(
     py: Python<'_>,
     preset_ron: &str,
@@ -460,8 +471,11 @@ fn sensitivity_folder(
     seed: u64,
     log_output: bool,
     out: PathBuf,
+    k: usize,
+    n: usize,
 ) -> PyResult<String> {
     use grainscope::global_sensitivity::{Design, Method, parse_factor};
+    let shard = shard_of(k, n)?;
     let preset = from_ron(preset_ron)?;
     let factors =
         factors.iter().map(|f| parse_factor(f)).collect::<Result<Vec<_>, _>>().map_err(PyValueError::new_err)?;
@@ -474,10 +488,32 @@ fn sensitivity_folder(
     design.unit_points().map_err(|e| PyValueError::new_err(e.to_string()))?;
     let folder = out.clone();
     let analysis = interruptible(py, &Progress::default(), move |_| {
-        grainscope::sweep_files::run_design(preset, design, &tie, &[output], Shard::ALL, &folder, &|_, _| {})
-            .and_then(|_| grainscope::sweep_files::analyse(&folder, log_output))
+        grainscope::sweep_files::run_design(preset, design, &tie, &[output], shard, &folder, &|_, _| {}).and_then(
+            |_| if shard.n > 1 { Ok(None) } else { grainscope::sweep_files::analyse(&folder, log_output).map(Some) },
+        )
     })?
     .map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
+    match analysis {
+        Some(a) => serde_json::to_string(&a.0).map_err(|e| PyValueError::new_err(e.to_string())),
+        None => Ok(String::new()),
+    }
+}
+
+/// Merges the folders of a sharded sweep or design into `out`, as
+/// `grainscope sweep-merge` does: the files of the unsharded run.
+#[pyfunction]
+fn merge_folders(dirs: Vec<PathBuf>, out: PathBuf) -> PyResult<()> {
+    grainscope::sweep_files::merge(&dirs, &out).map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
+    Ok(())
+}
+
+/// Analyses a finished (or merged) design's folder, as `grainscope
+/// sensitivity --analyse` does; returns the analysis as JSON.
+#[pyfunction]
+fn analyse_folder(py: Python<'_>, out: PathBuf, log_output: bool) -> PyResult<String> {
+    let analysis =
+        interruptible(py, &Progress::default(), move |_| grainscope::sweep_files::analyse(&out, log_output))?
+            .map_err(|e| PyValueError::new_err(format!("{e:#}")))?;
     serde_json::to_string(&analysis.0).map_err(|e| PyValueError::new_err(e.to_string()))
 }
 
@@ -497,5 +533,7 @@ fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(merge_tables, m)?)?;
     m.add_function(wrap_pyfunction!(sweep_folder, m)?)?;
     m.add_function(wrap_pyfunction!(sensitivity_folder, m)?)?;
+    m.add_function(wrap_pyfunction!(merge_folders, m)?)?;
+    m.add_function(wrap_pyfunction!(analyse_folder, m)?)?;
     Ok(())
 }

@@ -7,6 +7,7 @@ import json
 import math
 import os
 import pathlib
+import shutil
 import subprocess
 import sys
 import threading
@@ -366,3 +367,33 @@ def test_sensitivity_arguments_are_checked():
         gs.morris("ice-bounce-8ms", vary={"velocity": (1, 10)}, output="speed")
     with pytest.raises(ValueError, match="a sweep needs a count"):
         gs.sweep("ice-bounce-8ms", vary={"velocity": gs.log(1, 10)})
+
+
+def test_sensitivity_spread_over_a_dask_cluster_keeps_and_resumes_its_shards(tmp_path):
+    distributed = pytest.importorskip("dask.distributed")
+    vary = {"velocity": gs.log(3, 30), "radius_1": gs.log(1e-6, 4e-6)}
+    tie = {"radius_2": "radius_1"}
+    local = gs.morris("ice-bounce-8ms", vary=vary, output="e", tie=tie, trajectories=6, out=tmp_path / "local")
+    local_total, local_first = gs.sobol("ice-bounce-8ms", vary=vary, output="e", samples=16)
+    grid = {"velocity": gs.lin(1.0, 10.0, 5)}
+    local_sweep = gs.sweep("ice-bounce-8ms", vary=grid, scalars=["e"])
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
+        with distributed.Client(cluster) as client:
+            spread = gs.morris("ice-bounce-8ms", vary=vary, output="e", tie=tie, trajectories=6, out=tmp_path / "m", client=client, shards=3)
+            # The merged folder is the unsharded run's, byte for byte, and its indices are the same.
+            assert (tmp_path / "m" / "sweep.csv").read_bytes() == (tmp_path / "local" / "sweep.csv").read_bytes()
+            assert sorted(p.name for p in (tmp_path / "m" / "shards").iterdir()) == ["1-of-3", "2-of-3", "3-of-3"]
+            pd.testing.assert_frame_equal(spread, local)
+            # A shard lost (an interrupted run): called again, only it is computed anew.
+            shutil.rmtree(tmp_path / "m" / "shards" / "2-of-3")
+            kept = (tmp_path / "m" / "shards" / "1-of-3" / "sweep.csv").read_bytes()
+            again = gs.morris("ice-bounce-8ms", vary=vary, output="e", tie=tie, trajectories=6, out=tmp_path / "m", client=client, shards=3)
+            pd.testing.assert_frame_equal(again, local)
+            assert (tmp_path / "m" / "shards" / "1-of-3" / "sweep.csv").read_bytes() == kept
+            total, first = gs.sobol("ice-bounce-8ms", vary=vary, output="e", samples=16, client=client)
+            pd.testing.assert_frame_equal(total, local_total)
+            pd.testing.assert_frame_equal(first, local_first)
+            swept = gs.sweep("ice-bounce-8ms", vary=grid, scalars=["e"], out=tmp_path / "s", client=client)
+            pd.testing.assert_frame_equal(swept, local_sweep, check_dtype=False)
+    with pytest.raises(TypeError, match="shards takes"):
+        gs.morris("ice-bounce-8ms", vary=vary, output="e", shards=0)

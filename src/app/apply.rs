@@ -115,7 +115,19 @@ impl AppState {
                     self.session.panels.insert(scene, id);
                 }
             },
-            Command::MattersFigure(on) => self.matters.figure = on,
+            Command::MattersFigure(on) => {
+                self.matters.figure = on;
+                self.matters.whole_tab = false;
+            }
+            Command::MattersWhole(on) => {
+                self.matters.whole_tab = on;
+                self.matters.open |= on;
+                if on && self.matters.whole.study.is_none() {
+                    self.matters.whole.study = Some(self.default_whole_range());
+                }
+            }
+            Command::SetWholeRange(study) => self.set_whole_range(*study),
+            Command::RunWholeRange => self.run_whole_range(&mut fx),
             Command::DrawSensitivity(x, y) => self.draw_sensitivity(x, y, &mut fx),
             Command::ExportSensitivity => self.export_sensitivity(&mut fx),
             Command::ResetAll => self.reset_all(),
@@ -347,6 +359,8 @@ impl AppState {
             self.matters.result = None;
             self.matters.curve = None;
             self.matters.reopen = true;
+            self.matters.whole = super::state::Whole { study: view.whole, ..Default::default() };
+            self.matters.whole_tab = self.matters.whole.study.is_some();
         }
         // The preset's monomer becomes the monomer of every linked scene.
         if let Some(card) = shared {

@@ -345,6 +345,13 @@ pub enum Command {
     ShowPanel(String),
     /// Show the view's curve or map (true) or its "what matters" chart.
     MattersFigure(bool),
+    /// Show the view's study over whole ranges (true) or leave it.
+    MattersWhole(bool),
+    /// The settings of the study over whole ranges.
+    SetWholeRange(Box<crate::sensitivity::WholeRange>),
+    /// Run the study over whole ranges for the view's result at the
+    /// current parameters: the indices fill in as runs finish.
+    RunWholeRange,
     /// Draw the "what matters" result against parameter `x` over its range,
     /// or over `x` and `y` as a map (`y` empty: a curve).
     DrawSensitivity(String, String),

@@ -39,13 +39,19 @@ impl GrainscopeApp {
                 match &job {
                     Job::Export { .. } => self.computing.folders.push((lane, state.session.export_dir.clone())),
                     Job::Movie { .. } => self.computing.folders.push((lane, state.movie_folder())),
-                    Job::Sweep { .. } | Job::WhatMatters { .. } | Job::Curve { .. } | Job::Scene { .. } => {}
+                    Job::Sweep { .. }
+                    | Job::WhatMatters { .. }
+                    | Job::Curve { .. }
+                    | Job::WholeRange { .. }
+                    | Job::Scene { .. } => {}
                 }
                 self.runner.submit(job);
             }
             Effect::Cancel => {
                 self.runner.cancel(Lane::Sweep);
                 self.runner.cancel(Lane::Curve);
+                self.runner.cancel(Lane::Study);
+                state.matters.whole.running = false;
                 self.runner.cancel(Lane::Compute);
                 self.computing.stale = false;
                 self.computing.requested[state.index()] = None;
@@ -58,6 +64,38 @@ impl GrainscopeApp {
                 }
                 Err(why) => self.state.status = why,
             },
+        }
+    }
+
+    /// A share of a study's runs came back: if they are the runs of the
+    /// study shown (the same parameters, result and design), they extend its
+    /// values and its indices, and the next share starts.
+    fn whole_range_done(
+        &mut self,
+        base: crate::scene::SceneParams,
+        design: crate::global_sensitivity::Design,
+        from: usize,
+        values: Vec<crate::global_sensitivity::RunValue>,
+    ) {
+        let w = &mut self.state.matters.whole;
+        let (Some(study), Some((at, output, unit))) = (&w.study, &w.at) else { return };
+        if study.design != design || *at != base || w.values.len() != from {
+            return;
+        }
+        let (output, unit, log_output) = (output.clone(), unit.clone(), study.log_output);
+        w.values.extend(values);
+        match crate::global_sensitivity::answer(&design, &w.values, log_output) {
+            Ok(Some(a)) => w.answer = Some(a),
+            Ok(None) => {}
+            Err(e) => self.state.error = Some(format!("study not analysed: {e}")),
+        }
+        let done = w.values.len();
+        let total = design.runs();
+        w.running = done < total;
+        self.state.status = format!("{output} over whole ranges: {done} of {total} runs");
+        if done < total {
+            let next = super::apply_sweep::whole_range_share(base, design, output, unit, done);
+            self.carry_out(Effect::Submit(next));
         }
     }
 
@@ -106,11 +144,18 @@ impl GrainscopeApp {
                         self.carry_out(Effect::Submit(Job::WhatMatters { base, output, factor, coarse: false }));
                     }
                 }
+                Ok(Done::WholeRange(base, design, from, values)) => self.whole_range_done(*base, *design, from, values),
                 Ok(Done::Curve(base, fig)) => {
                     self.state.status = format!("drew {}", fig.title);
                     self.state.matters.curve = Some((*base, *fig));
                 }
                 Ok(Done::Files(what, files)) => self.write_all(&folder, &files, &what),
+                Err(e) if finished.lane == Lane::Study => {
+                    self.state.matters.whole.running = false;
+                    if e != crate::app::jobs::JobError::Cancelled {
+                        self.state.error = Some(format!("study stopped: {e}"));
+                    }
+                }
                 Err(e) if matches!(finished.lane, Lane::Sweep | Lane::Curve) => {
                     self.state.error = Some(format!("not computed: {e}"));
                 }
@@ -150,7 +195,7 @@ impl GrainscopeApp {
         for c in dropped {
             self.apply(c);
         }
-        if self.runner.busy(Lane::Sweep) || self.runner.busy(Lane::Curve) {
+        if self.runner.busy(Lane::Sweep) || self.runner.busy(Lane::Curve) || self.runner.busy(Lane::Study) {
             ctx.request_repaint_after(std::time::Duration::from_millis(100));
         }
         if self.runner.busy(Lane::Compute) {

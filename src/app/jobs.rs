@@ -26,6 +26,9 @@ pub enum Lane {
     Sweep,
     /// A sensitivity curve or map, beside "what matters": the newest wins.
     Curve,
+    /// A share of the runs of a study over whole ranges, beside the rest:
+    /// the newest wins.
+    Study,
     /// Figures rendered for an export: the newest wins.
     Export,
     /// A history rendered as a movie: the newest wins.
@@ -81,6 +84,22 @@ pub enum Job {
         /// The map's second parameter, if any.
         second: Option<String>,
     },
+    /// Runs `from..to` of a study over whole ranges (Morris or Sobol'):
+    /// scalar `output` (unit `unit`) at the design's points around `base`.
+    WholeRange {
+        /// The parameters the factors vary around (the others stay).
+        base: Box<SceneParams>,
+        /// The design.
+        design: Box<crate::global_sensitivity::Design>,
+        /// The scalar's key.
+        output: String,
+        /// Its unit.
+        unit: String,
+        /// The first run.
+        from: usize,
+        /// One past the last run.
+        to: usize,
+    },
     /// Figures rendered as PNG, SVG and CSV files carrying the state.
     Export {
         /// The figures as drawn.
@@ -106,6 +125,7 @@ impl Job {
             Job::Scene { .. } => Lane::Compute,
             Job::Sweep { .. } | Job::WhatMatters { .. } => Lane::Sweep,
             Job::Curve { .. } => Lane::Curve,
+            Job::WholeRange { .. } => Lane::Study,
             Job::Export { .. } => Lane::Export,
             Job::Movie { .. } => Lane::Movie,
         }
@@ -124,6 +144,14 @@ pub enum Done {
     /// What matters: the parameters, X there, each parameter's influence,
     /// and whether it is the coarse first pass.
     Matters(Box<SceneParams>, crate::sensitivity::Matters, bool),
+    /// Runs of a study over whole ranges: the parameters and design they
+    /// are for, the first run's number and each run's value.
+    WholeRange(
+        Box<SceneParams>,
+        Box<crate::global_sensitivity::Design>,
+        usize,
+        Vec<crate::global_sensitivity::RunValue>,
+    ),
     /// Files to write: what they are ("export", "movie"), and (name, bytes).
     Files(String, Vec<(String, Vec<u8>)>),
 }
@@ -168,7 +196,9 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
             }
             let finished = Flag::default();
             if let Some(c) = coarse {
-                start_preview(*c, progress.clone(), Arc::clone(&finished));
+                // First, on every core: a coarse preview costs a fraction of a
+                // second alone, but several seconds beside the full run.
+                preview(&c, progress, &finished);
             }
             let mut c = caches.lock().map_err(|_| JobError::Cancelled)?;
             let out = scene::compute_cached(&params, progress, &mut c);
@@ -209,6 +239,11 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
             let at = if coarse { base.coarse().unwrap_or_else(|| (*base).clone()) } else { (*base).clone() };
             let m = crate::sensitivity::what_matters(&at, &output, factor, progress)?;
             Ok(Done::Matters(base, m, coarse))
+        }
+        Job::WholeRange { base, design, output, unit, from, to } => {
+            let values = crate::global_sensitivity::run_values(&base, &design, &output, &unit, from..to, progress)
+                .map_err(|e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(e) })?;
+            Ok(Done::WholeRange(base, design, from, values))
         }
         Job::Curve { base, output, key, second } => {
             let fig = match second {
@@ -451,29 +486,10 @@ impl Results {
     }
 }
 
-/// Starts the preview of a heavy scene's job: on a thread of its own with a
-/// one-thread pool, beside the full run (so that it does not queue behind
-/// the full run's parallel work); where no thread can be started (a
-/// browser's Web Worker), first, on this one.
-fn start_preview(c: SceneParams, progress: Progress, finished: Flag) {
-    let on_thread = {
-        let (c, progress, finished) = (c.clone(), progress.clone(), Arc::clone(&finished));
-        std::thread::Builder::new().name("grainscope-preview".into()).spawn(move || preview(&c, &progress, &finished))
-    };
-    if on_thread.is_err() {
-        preview(&c, &progress, &finished);
-    }
-}
-
 /// Computes the coarse parameters `c` of a heavy scene and offers the result
 /// for display, unless the full result came first or the job was cancelled.
 fn preview(c: &SceneParams, progress: &Progress, finished: &std::sync::atomic::AtomicBool) {
-    let compute = || scene::compute(c, &progress.quiet_child());
-    let result = match rayon::ThreadPoolBuilder::new().num_threads(1).build() {
-        Ok(pool) => pool.install(compute),
-        Err(_) => compute(),
-    };
-    if let Ok(mut out) = result {
+    if let Ok(mut out) = scene::compute(c, &progress.quiet_child()) {
         if finished.load(std::sync::atomic::Ordering::Relaxed) || progress.cancelled() {
             return;
         }

@@ -158,6 +158,7 @@ impl GrainscopeApp {
         self.runner.busy(Lane::Compute)
             || self.runner.busy(Lane::Sweep)
             || self.runner.busy(Lane::Curve)
+            || self.runner.busy(Lane::Study)
             || self.computing.stale
     }
 
@@ -187,6 +188,10 @@ impl GrainscopeApp {
             if !x.is_empty() {
                 self.apply(Command::DrawSensitivity(x, y));
             }
+            if self.state.matters.whole.study.is_some() {
+                self.apply(Command::MattersWhole(true));
+                self.apply(Command::RunWholeRange);
+            }
         }
         let i = self.state.index();
         let key = self.state.params().compute_key();
@@ -211,7 +216,8 @@ impl GrainscopeApp {
     /// How the computation stands, for the panels.
     fn work(&self) -> Work {
         // The progress shown: a sweep's, else a curve's, else the scene's.
-        let lane = [Lane::Sweep, Lane::Curve].into_iter().find(|&l| self.runner.busy(l)).unwrap_or(Lane::Compute);
+        let lane =
+            [Lane::Sweep, Lane::Curve, Lane::Study].into_iter().find(|&l| self.runner.busy(l)).unwrap_or(Lane::Compute);
         let running = self.runner.busy(Lane::Compute) || lane != Lane::Compute;
         Work {
             running,

@@ -199,6 +199,26 @@ pub struct Matters {
     /// Whether the view shows its curve or map (else its chart): one at a
     /// time, so that each gets the window's height.
     pub figure: bool,
+    /// Whether the view shows its study over whole ranges (before `figure`).
+    pub whole_tab: bool,
+    /// The study over whole ranges: its settings, runs and indices.
+    pub whole: Whole,
+}
+
+/// A study over whole ranges in the sensitivity view: the design, the runs
+/// done (in design order) and the indices they give so far.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Whole {
+    /// The study's settings (the one run, or being set up).
+    pub study: Option<crate::sensitivity::WholeRange>,
+    /// The parameters and the result's (key, unit) the runs are for.
+    pub at: Option<(SceneParams, String, String)>,
+    /// The runs done, in design order.
+    pub values: Vec<crate::global_sensitivity::RunValue>,
+    /// The indices from the runs done.
+    pub answer: Option<crate::global_sensitivity::Answer>,
+    /// Whether runs are still to come.
+    pub running: bool,
 }
 
 impl Default for Matters {
@@ -214,6 +234,8 @@ impl Default for Matters {
             y: String::new(),
             reopen: false,
             figure: false,
+            whole_tab: false,
+            whole: Whole::default(),
         }
     }
 }
@@ -226,6 +248,7 @@ impl Matters {
             factor: self.factor,
             x: self.x.clone(),
             y: self.y.clone(),
+            whole: self.whole.study.clone().filter(|_| self.whole.answer.is_some() || self.whole_tab),
         }
     }
 }

@@ -37,6 +37,9 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let mut clicked: Option<String> = None;
     let (mut recompute, mut draw, mut export) = (false, false, false);
     let mut tab: Option<bool> = None;
+    let mut whole_tab = false;
+    let mut study = m.whole.study.clone();
+    let mut run_whole = false;
     egui::Window::new("Sensitivity")
         .open(&mut open)
         .default_width(640.0)
@@ -96,15 +99,32 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                     .clicked();
             });
             ui.horizontal(|ui| {
-                if ui.selectable_label(!m.figure, egui::RichText::new("What matters").size(text)).clicked() {
+                let (chart, curve) = (!m.figure && !m.whole_tab, m.figure && !m.whole_tab);
+                if ui.selectable_label(chart, egui::RichText::new("What matters").size(text)).clicked() {
                     tab = Some(false);
                 }
-                if ui.selectable_label(m.figure, egui::RichText::new("Curve or map").size(text)).clicked() {
+                if ui.selectable_label(curve, egui::RichText::new("Curve or map").size(text)).clicked() {
                     tab = Some(true);
+                }
+                if ui
+                    .selectable_label(m.whole_tab, egui::RichText::new("Whole ranges").size(text))
+                    .on_hover_text("Morris's elementary effects or Sobol' indices of the result over every chosen parameter's whole range")
+                    .clicked()
+                {
+                    whole_tab = true;
                 }
             });
             ui.separator();
-            if m.figure {
+            if m.whole_tab {
+                if let Some(s) = study.as_mut() {
+                    let view = WholeView { text, progress: cx.work.progress, params: cx.state.params(), output: &output };
+                    let (run, click) = whole(ui, s, &m.whole, &view);
+                    run_whole = run;
+                    if click.is_some() {
+                        clicked = click;
+                    }
+                }
+            } else if m.figure {
                 if let Some((at, fig)) = &m.curve {
                     if at != cx.state.params() {
                         ui.colored_label(ui.visuals().warn_fg_color, "drawn for earlier parameters");
@@ -214,6 +234,262 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     if let Some(on) = tab {
         cx.send(Command::MattersFigure(on));
     }
+    if whole_tab {
+        cx.send(Command::MattersWhole(true));
+    }
+    if let Some(s) = study
+        && Some(&s) != cx.state.matters.whole.study.as_ref()
+    {
+        cx.send(Command::SetWholeRange(Box::new(s)));
+    }
+    if run_whole {
+        cx.send(Command::RunWholeRange);
+    }
+}
+
+/// What the whole-ranges tab shows besides the study.
+struct WholeView<'a> {
+    text: f32,
+    progress: f64,
+    params: &'a crate::scene::SceneParams,
+    output: &'a str,
+}
+
+/// The whole-ranges tab: the method, the parameters with their ranges (in
+/// their controls' units), and the indices as the runs come in. Returns
+/// whether Run was pressed and a parameter whose name was clicked.
+fn whole(
+    ui: &mut egui::Ui,
+    study: &mut crate::sensitivity::WholeRange,
+    w: &crate::app::state::Whole,
+    view: &WholeView<'_>,
+) -> (bool, Option<String>) {
+    use crate::global_sensitivity::{Factor, Method};
+    use crate::scene::schema::SpecKind;
+    let text = view.text;
+    let mut run = false;
+    let mut clicked = None;
+    ui.horizontal_wrapped(|ui| {
+        let morris = matches!(study.design.method, Method::Morris { .. });
+        if ui.selectable_label(morris, egui::RichText::new("Morris").size(text)).clicked() && !morris {
+            study.design.method = Method::Morris { trajectories: 20, levels: 4 };
+        }
+        if ui.selectable_label(!morris, egui::RichText::new("Sobol'").size(text)).clicked() && morris {
+            study.design.method = Method::Sobol { samples: 256, second_order: false };
+        }
+        match &mut study.design.method {
+            Method::Morris { trajectories, .. } => {
+                ui.label(egui::RichText::new("trajectories r").size(text));
+                ui.add(egui::DragValue::new(trajectories).range(2..=200));
+            }
+            Method::Sobol { samples, .. } => {
+                ui.label(egui::RichText::new("base samples N").size(text));
+                let mut power = (*samples).max(2).ilog2();
+                ui.add(
+                    egui::DragValue::new(&mut power)
+                        .range(1..=14)
+                        .custom_formatter(|p, _| format!("{}", 1u64 << p as u32)),
+                );
+                *samples = 1usize << power;
+            }
+            Method::Given { .. } => {}
+        }
+        ui.checkbox(&mut study.log_output, egui::RichText::new("ln X").size(text))
+            .on_hover_text("analyse the logarithm of the result: effects become relative changes");
+        let runs = study.design.runs();
+        run = ui
+            .add_enabled(
+                !w.running && !study.design.factors.is_empty(),
+                egui::Button::new(format!("Run ({runs} runs)")),
+            )
+            .on_hover_text(
+                "compute the runs at the current parameters; the indices fill in as they finish (Cancel below stops)",
+            )
+            .clicked();
+    });
+    ui.label(egui::RichText::new("Parameters and their ranges").strong().size(text));
+    let factors = &mut study.design.factors;
+    egui::Grid::new("whole-factors").num_columns(4).spacing([8.0, 2.0]).striped(true).show(ui, |ui| {
+        for s in view.params.specs().iter().filter(|s| !s.style_only && !s.figure_only) {
+            let SpecKind::Number { min, max, log, display_scale } = s.kind else { continue };
+            if !(min < max && min.is_finite() && max.is_finite()) {
+                continue;
+            }
+            let at = factors.iter().position(|f| f.key == s.key);
+            let mut on = at.is_some();
+            if ui.checkbox(&mut on, egui::RichText::new(s.label).size(text)).on_hover_text(s.doc).changed() {
+                match at {
+                    Some(k) if !on => {
+                        factors.remove(k);
+                    }
+                    None if on => {
+                        factors.push(Factor { key: s.key.to_string(), log: log && min > 0.0, from: min, to: max })
+                    }
+                    _ => {}
+                }
+            }
+            let unit = units::pretty(s.unit);
+            match factors.iter_mut().find(|f| f.key == s.key) {
+                Some(f) => {
+                    let (lo, hi) = (min * display_scale, max * display_scale);
+                    let mut a = f.from * display_scale;
+                    let mut b = f.to * display_scale;
+                    ui.horizontal(|ui| {
+                        ui.add(range_end(&mut a, lo, hi));
+                        ui.label("…");
+                        ui.add(range_end(&mut b, lo, hi));
+                        ui.label(unit);
+                    });
+                    if a < b {
+                        f.from = (a / display_scale).clamp(min, max);
+                        f.to = (b / display_scale).clamp(min, max);
+                    }
+                    ui.checkbox(&mut f.log, "log").on_hover_text("uniform in the logarithm");
+                    f.log &= f.from > 0.0;
+                }
+                None => {
+                    ui.label(
+                        egui::RichText::new(format!(
+                            "{} … {} {unit}",
+                            human(min * display_scale),
+                            human(max * display_scale)
+                        ))
+                        .weak(),
+                    );
+                    ui.label("");
+                }
+            }
+            ui.end_row();
+        }
+    });
+    ui.separator();
+    let stale = w.at.as_ref().is_some_and(|(p, o, _)| p != view.params || o != view.output);
+    if stale {
+        ui.colored_label(
+            ui.visuals().warn_fg_color,
+            "computed for other parameters or another result: Run again for these",
+        );
+    }
+    if w.running {
+        let total = study.design.runs().max(1);
+        ui.colored_label(
+            ui.visuals().warn_fg_color,
+            egui::RichText::new(format!(
+                "provisional: {} of {total} runs done; the indices below are those of the runs done so far",
+                w.values.len()
+            ))
+            .size(text),
+        );
+        ui.add(egui::ProgressBar::new(((w.values.len() as f64 + view.progress) / total as f64) as f32));
+    }
+    let Some(answer) = &w.answer else {
+        if !w.running {
+            ui.label(
+                egui::RichText::new("press Run: the indices appear after two trajectories or base samples").size(text),
+            );
+        }
+        return (run, clicked);
+    };
+    let names: Vec<(String, String)> = w
+        .study
+        .as_ref()
+        .map(|s| {
+            s.design
+                .factors
+                .iter()
+                .map(|f| {
+                    let label = view.params.spec(&f.key).map_or(f.key.clone(), |s| s.label.to_string());
+                    (f.key.clone(), label)
+                })
+                .collect()
+        })
+        .unwrap_or_default();
+    ui.label(
+        egui::RichText::new(format!(
+            "{} runs analysed; {} undefined (left out), {} at a bound (entered at it)",
+            answer.runs, answer.undefined, answer.bounded
+        ))
+        .size(text),
+    );
+    let bar = |ui: &mut egui::Ui, v: f64, conf: f64, reach: f64, colour: egui::Color32| {
+        let width = 180.0;
+        let (rect, resp) = ui.allocate_exact_size(egui::vec2(width, text + 2.0), egui::Sense::hover());
+        let painter = ui.painter_at(rect);
+        let x = |v: f64| rect.left() + ((v / reach).clamp(0.0, 1.0) as f32) * (width - 2.0);
+        if v.is_finite() {
+            painter.rect_filled(
+                egui::Rect::from_x_y_ranges(rect.left()..=x(v).max(rect.left() + 1.0), rect.y_range().shrink(3.0)),
+                1.0,
+                colour,
+            );
+            if conf.is_finite() {
+                let y = rect.center().y;
+                painter.hline(x(v - conf)..=x(v + conf), y, ui.visuals().widgets.noninteractive.fg_stroke);
+            }
+        }
+        resp.on_hover_text(format!("{} ± {}", human(v), human(conf)));
+    };
+    let mut click = |ui: &mut egui::Ui, key: &str, label: &str| {
+        if ui
+            .link(egui::RichText::new(label).size(text))
+            .on_hover_text("click to draw X against it over its whole range")
+            .clicked()
+        {
+            clicked = Some(key.to_string());
+        }
+    };
+    if let Some(morris) = &answer.morris {
+        let reach =
+            morris.iter().map(|m| m.mu_star + m.mu_star_conf).filter(|v| v.is_finite()).fold(0.0, f64::max).max(1e-300);
+        let mut order: Vec<usize> = (0..morris.len()).collect();
+        order.sort_by(|&a, &b| morris[b].mu_star.total_cmp(&morris[a].mu_star));
+        egui::Grid::new("whole-morris").num_columns(5).spacing([10.0, 3.0]).striped(true).show(ui, |ui| {
+            for h in ["parameter", "μ*", "μ", "σ", "μ* with its 95 % interval"] {
+                ui.label(egui::RichText::new(h).strong().size(text));
+            }
+            ui.end_row();
+            for &k in &order {
+                let (key, label) = names.get(k).cloned().unwrap_or_default();
+                let m = &morris[k];
+                click(ui, &key, &label);
+                for v in [m.mu_star, m.mu, m.sigma] {
+                    ui.label(egui::RichText::new(human(v)).size(text).monospace());
+                }
+                bar(ui, m.mu_star, m.mu_star_conf, reach, HIGH);
+                ui.end_row();
+            }
+        });
+        ui.small("μ*: mean absolute elementary effect (importance); σ: their spread (σ ≳ μ*: interactions or a curved response)");
+    }
+    if let Some(sobol) = &answer.sobol {
+        let mut order: Vec<usize> = (0..sobol.indices.len()).collect();
+        order.sort_by(|&a, &b| sobol.indices[b].total.total_cmp(&sobol.indices[a].total));
+        egui::Grid::new("whole-sobol").num_columns(5).spacing([10.0, 3.0]).striped(true).show(ui, |ui| {
+            for h in ["parameter", "S1", "ST", "S1 (blue) with its interval", "ST (orange) with its interval"] {
+                ui.label(egui::RichText::new(h).strong().size(text));
+            }
+            ui.end_row();
+            for &k in &order {
+                let (key, label) = names.get(k).cloned().unwrap_or_default();
+                let s = &sobol.indices[k];
+                click(ui, &key, &label);
+                ui.label(
+                    egui::RichText::new(format!("{} ± {}", human(s.first), human(s.first_conf))).size(text).monospace(),
+                );
+                ui.label(
+                    egui::RichText::new(format!("{} ± {}", human(s.total), human(s.total_conf))).size(text).monospace(),
+                );
+                bar(ui, s.first, s.first_conf, 1.0, LOW);
+                bar(ui, s.total, s.total_conf, 1.0, HIGH);
+                ui.end_row();
+            }
+        });
+        ui.small(format!(
+            "S1: the share of the variance of X from the parameter alone; ST: with all its interactions ({} base samples used, {} left out)",
+            sobol.samples, sobol.dropped
+        ));
+    }
+    (run, clicked)
 }
 
 /// The tornado chart with a row of numbers per parameter.
@@ -291,4 +567,9 @@ fn chart(
         }
     });
     clicked
+}
+
+/// A typed end of a parameter's range, in its control's unit, within `lo..=hi`.
+fn range_end(v: &mut f64, lo: f64, hi: f64) -> egui::DragValue<'_> {
+    egui::DragValue::new(v).range(lo..=hi).speed(0.0).custom_formatter(|x, _| human(x))
 }

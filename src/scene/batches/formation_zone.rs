@@ -68,6 +68,10 @@ pub struct Params {
     pub contrast: Contrast,
 }
 
+/// The fewest batches at which each disk also runs with half as many (at
+/// least 10) for the edges' resolution error.
+const MIN_COMPARED: usize = 20;
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "formation-zone",
@@ -85,9 +89,23 @@ disks run in parallel, each also with half the batches: the change estimates the
 
     const CENSORED: &'static [Censored] = &[
         Censored { key: "widest_zone", above: None, undefined: Some("no disk of the grid forms planetesimals") },
-        Censored { key: "widest_zone_error", above: None, undefined: Some("no disk of the grid forms planetesimals") },
+        Censored {
+            key: "widest_zone_error",
+            above: None,
+            undefined: Some(
+                "no disk of the grid forms planetesimals, or fewer than 20 batches (none half as many to run)",
+            ),
+        },
+        Censored {
+            key: "edge_error",
+            above: None,
+            undefined: Some("fewer than 20 batches: no run with half as many (10 at least) to compare with"),
+        },
     ];
 
+    /// The coarse preview runs each disk once, at fewer than `MIN_COMPARED`
+    /// batches: a picture within a second, with its resolution error left
+    /// undefined.
     fn coarse(&self) -> Option<Self> {
         let p = self;
         let n_mass = p.n_mass.min(3);
@@ -105,10 +123,13 @@ disks run in parallel, each also with half the batches: the change estimates the
         let done = std::sync::atomic::AtomicUsize::new(0);
         // Every disk also runs with half the batches: the change says how far
         // the edges are from converged (it can understate it where the edge
-        // still drifts with the batch count, see the README).
-        let half = (p.run.batches / 2).max(10);
+        // still drifts with the batch count, see the README). Below
+        // `MIN_COMPARED` batches there is no half as many to run (the coarse
+        // preview's few batches among them): the change is undefined.
+        let half = p.run.batches / 2;
+        let counts: &[usize] = if p.run.batches >= MIN_COMPARED { &[p.run.batches, half] } else { &[p.run.batches] };
         let runs: Vec<(usize, usize, usize, usize)> =
-            [p.run.batches, half].iter().flat_map(|&n| combos.iter().map(move |&(c, zi, mi)| (c, zi, mi, n))).collect();
+            counts.iter().flat_map(|&n| combos.iter().map(move |&(c, zi, mi)| (c, zi, mi, n))).collect();
         let total = runs.len();
         let all: Vec<f64> = runs
             .par_iter()
@@ -130,6 +151,8 @@ disks run in parallel, each also with half the batches: the change estimates the
             })
             .collect::<Result<_, _>>()?;
         let (edges, coarser) = all.split_at(combos.len());
+        let coarser: Vec<f64> = if coarser.is_empty() { vec![f64::NAN; edges.len()] } else { coarser.to_vec() };
+        let coarser = &coarser[..];
         let mut fig = Figure::new(
             "formation-zone",
             "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
@@ -170,7 +193,11 @@ disks run in parallel, each also with half the batches: the change estimates the
             |e: &[f64]| Some(e.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN);
         let widest = widest_of(edges);
         let widest_error = (widest - widest_of(coarser)).abs();
-        let largest_error = edges.iter().zip(coarser).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max);
+        let largest_error = if p.run.batches >= MIN_COMPARED {
+            edges.iter().zip(coarser).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
+        } else {
+            f64::NAN
+        };
         scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
         scalars.push(Scalar {
             key: "widest_zone_error",

@@ -169,6 +169,13 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             scalars.push(Scalar { key: keys[k].2, label: "lowest ζ", value: zmin, unit: "" });
         }
     }
+    // ζ = 0, where gains and losses balance, across the Stokes numbers
+    // reached: the axis spans growth and erosion from the first live view on.
+    let reached = sets.iter().flat_map(|(_, runs)| runs.iter()).flat_map(|r| r.history.iter()).map(|s| s.stokes_max);
+    let (lo, hi) = reached.filter(|s| *s > 0.0).fold((f64::INFINITY, 0.0f64), |(lo, hi), s| (lo.min(s), hi.max(s)));
+    if lo < hi {
+        zeta = zeta.with(Series::new("ζ = 0: gain and loss balance", vec![[lo, 0.0], [hi, 0.0]], Style::Dashed, 6));
+    }
     let mut proj = Figure::new(
         "projectile-distribution",
         &format!("Projectile distribution of m_max (v_eros = {} m/s)", p.v_eros_1),

@@ -30,13 +30,30 @@ fn rgb(c: [u8; 3], faded: bool) -> Color32 {
 
 /// A band across the top of a plot that says what it shows is not the
 /// result yet (a coarse preview, a live view of a run, or the result of the
-/// parameters before): an audience must not read it as the answer.
-fn provisional(ui: &egui::Ui, frame: Rect, look: Look) {
+/// parameters before): an audience must not read it as the answer. It keeps
+/// clear of the legend drawn inside the plot (`legend`): beside it at the
+/// top where there is room, else along the bottom.
+fn provisional(ui: &egui::Ui, frame: Rect, look: Look, legend: Option<Rect>) {
     let painter = ui.painter_at(frame);
     let text = "provisional: the full result is computing";
     let galley = painter.layout_no_wrap(text.into(), egui::FontId::proportional(look.text), Color32::BLACK);
     let size = galley.size() + Vec2::new(16.0, 8.0);
-    let band = Rect::from_min_size(egui::pos2(frame.center().x - size.x / 2.0, frame.top() + 6.0), size);
+    let at = |x: f32, y: f32| Rect::from_min_size(egui::pos2(x, y), size);
+    let top = at(frame.center().x - size.x / 2.0, frame.top() + 6.0);
+    let band = match legend {
+        Some(l) if l.expand(4.0).intersects(top) => {
+            let right_of = at(l.right() + 8.0, frame.top() + 6.0);
+            let left_of = at(l.left() - 8.0 - size.x, frame.top() + 6.0);
+            if right_of.right() <= frame.right() - 6.0 {
+                right_of
+            } else if left_of.left() >= frame.left() + 6.0 {
+                left_of
+            } else {
+                at(frame.center().x - size.x / 2.0, frame.bottom() - 6.0 - size.y)
+            }
+        }
+        _ => top,
+    };
     painter.rect_filled(band, 4.0, Color32::from_rgba_unmultiplied(255, 196, 64, 230));
     painter.galley(band.min + Vec2::new(8.0, 4.0), galley, Color32::BLACK);
 }
@@ -438,6 +455,7 @@ pub fn show(
                     let (rect, _) = ui.allocate_exact_size(Vec2::new(bar_w, plot_size.y), egui::Sense::hover());
                     paint_bar(ui, b, Rect::from_x_y_ranges(rect.x_range(), frame.y_range()), look);
                 }
+                let mut legend_inside = None;
                 if !legend.is_empty() {
                     // The frame the plot would have with the legend inside.
                     let inside_w = frame.width() + if beside { legend_size.x + 8.0 } else { 0.0 };
@@ -458,7 +476,9 @@ pub fn show(
                         [frac(8.0, inside_w), frac(8.0, inside_h)],
                     );
                     if let (Some(c), false) = (found, was_outside) {
-                        paint_legend(ui, &legend, corner_rect(frame, c, legend_size), look);
+                        let rect = corner_rect(frame, c, legend_size);
+                        paint_legend(ui, &legend, rect, look);
+                        legend_inside = Some(rect);
                     }
                     if found.is_none() != was_outside {
                         ui.data_mut(|d| d.insert_temp(memory, found.is_none()));
@@ -471,7 +491,7 @@ pub fn show(
                 }
                 // Last, so that no legend hides it.
                 if stale {
-                    provisional(ui, frame, look);
+                    provisional(ui, frame, look, legend_inside);
                 }
                 let b = shown.transform.bounds();
                 let placed =

@@ -76,6 +76,14 @@ for _ in $(seq 60); do
 done
 sinfo || { cat "$work"/slurm*.log >&2; exit 1; }
 
+# Waits (at most 30 minutes) until job $1 has left the queue.
+wait_for() {
+    for _ in $(seq 1800); do
+        [ -z "$(squeue -h -j "$1" -o %T 2>/dev/null || true)" ] && return
+        sleep 1
+    done
+}
+
 # n² points of the batch model (10⁴ in CI): the largest midplane dust-to-gas
 # ratio and the converted fraction against the disk's metallicity and turbulence.
 vary=(--vary "metallicity=log:0.005:0.05:$n" --vary "alpha=log:1e-4:1e-2:$n")
@@ -83,11 +91,7 @@ args=(batch-fig-5-4 --set batches=20 "${vary[@]}" --scalars max_loading,converte
 start=$(date +%s)
 merge=$(GRAINSCOPE="$bin" "$root/examples/slurm/submit.sh" 4 "$work/cluster" "${args[@]}")
 echo "submitted an array of 4 tasks and merge job $merge"
-for _ in $(seq 1800); do
-    state=$(squeue -h -j "$merge" -o %T 2>/dev/null || true)
-    [ -z "$state" ] && break
-    sleep 1
-done
+wait_for "$merge"
 echo "cluster run: $(( $(date +%s) - start )) s"
 sacct_state=$(scontrol show job "$merge" 2>/dev/null | grep -o 'JobState=[A-Z]*' || true)
 if [ ! -s "$work/cluster/merged/sweep.csv" ]; then
@@ -109,11 +113,7 @@ sens=(sensitivity restitution-ice --method sobol --samples 256 --output v_stick 
     --vary z0=log:1e-10:1e-9 --tie radius_2=radius_1)
 start=$(date +%s)
 merge=$(GRAINSCOPE="$bin" "$root/examples/slurm/submit.sh" 4 "$work/sobol" "${sens[@]}")
-for _ in $(seq 1800); do
-    state=$(squeue -h -j "$merge" -o %T 2>/dev/null || true)
-    [ -z "$state" ] && break
-    sleep 1
-done
+wait_for "$merge"
 echo "cluster run of the Sobol' design: $(( $(date +%s) - start )) s"
 if [ ! -s "$work/sobol/merged/indices.csv" ]; then
     echo "the merge job left no indices" >&2

@@ -684,46 +684,41 @@ impl<M: Model> Engine<M> {
         self.units.reserve(n, used);
     }
 
-    /// Recomputes the cached pair data of family k (its body changed), then
-    /// its rates: one pass over the row writes each pair's data, its unit
-    /// rate and the partner's sum (the same arithmetic, in the same order,
-    /// as [`Engine::refresh_rates`] after the pair data).
+    /// Recomputes the cached pair data of family k (its body changed), then its rates.
     fn refresh_pairs(&mut self, k: usize) {
         let mut row = std::mem::take(&mut self.scratch);
         row.clear();
         row.resize(self.families.len(), (0.0, Effect::Bounce));
         self.model.pair_row(&self.families[k], &self.families, &self.by_mass, &mut row);
         // Row k, now the newest, holds the pair data.
-        self.rows += 1;
-        self.computed[k] = self.rows;
-        let n = self.families.len();
-        let fk = self.families[k];
-        let (now, before) = (fk.groups, self.counted[k]);
-        let limits = (self.settings.f_m, self.settings.f_phi);
-        let volume = self.volume;
-        let pairs = self.pairs.row_mut(k, n);
-        let units = self.units.row_mut(k, n);
-        let mut sum = 0.0;
         for &j in &self.by_mass {
             let (rate, effect) = row[j];
-            let fj = &self.families[j];
-            let (c, headroom) = pair_data(limits, volume, &fk, fj, rate, effect);
-            let pair = Pair { c, headroom };
-            pairs[j] = pair;
-            if j == k {
-                continue;
-            }
-            let old = units[j];
-            let new = unit_of(&fk, k, fj, j, &pair);
-            units[j] = new;
-            self.partner_sum[j] += now * new - before * old;
-            sum += self.counted[j] * new;
+            let (c, headroom) = self.pair_data(k, j, rate, effect);
+            *self.pairs.at(k, j) = Pair { c, headroom };
         }
-        self.units.mirror_row(k, n);
-        self.partner_sum[k] = sum;
-        self.counted[k] = now;
-        self.in_group[k] = 2.0 * self.in_group_rate(k);
+        self.rows += 1;
+        self.computed[k] = self.rows;
+        self.refresh_rates(k);
         self.scratch = row;
+    }
+
+    /// The cached data of pair (i, j), (K/V, headroom), from the model's rate
+    /// coefficient and effect.
+    fn pair_data(&self, i: usize, j: usize, rate: f64, effect: Effect) -> (f64, f32) {
+        let (a, b) = (&self.families[i], &self.families[j]);
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        let c = rate / self.volume;
+        let (dm, dphi, c) = match effect {
+            Effect::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
+            Effect::Erode { loss } => (loss, 0.0, c),
+            Effect::Shatter => (t.mass, t.filling, c),
+            // Nothing happens: such events are left out.
+            Effect::Bounce => (0.0, 0.0, 0.0),
+        };
+        let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY };
+        let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
+        // An integer (|h| < 2¹¹) or ±∞: exact in f32.
+        (c, headroom as f32)
     }
 
     /// Recomputes the group rates of family k (its zoom, groups or pair data changed).
@@ -1298,31 +1293,6 @@ pub fn spectrum(items: impl Iterator<Item = (f64, f64)>, per_decade: usize, volu
     }
     let width = std::f64::consts::LN_10 / n;
     bins.into_iter().map(|(b, m)| (10f64.powf((b as f64 + 0.5) / n), m / volume / width)).collect()
-}
-
-/// The cached data of a pair of families `a`, `b`, (K/V, headroom), from the
-/// model's rate coefficient and effect; `limits` are (f_m, f_φ).
-fn pair_data<P>(
-    limits: (f64, f64),
-    volume: f64,
-    a: &Family<P>,
-    b: &Family<P>,
-    rate: f64,
-    effect: Effect,
-) -> (f64, f32) {
-    let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-    let c = rate / volume;
-    let (dm, dphi, c) = match effect {
-        Effect::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
-        Effect::Erode { loss } => (loss, 0.0, c),
-        Effect::Shatter => (t.mass, t.filling, c),
-        // Nothing happens: such events are left out.
-        Effect::Bounce => (0.0, 0.0, 0.0),
-    };
-    let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY };
-    let headroom = room(limits.0, t.mass, dm).min(room(limits.1, t.filling, dphi));
-    // An integer (|h| < 2¹¹) or ±∞: exact in f32.
-    (c, headroom as f32)
 }
 
 /// Whether family `a` (index i) is the pair's lo family, the one with the

@@ -87,7 +87,7 @@ wait_for() {
 # n² points of the batch model (10⁴ in CI): the largest midplane dust-to-gas
 # ratio and the converted fraction against the disk's metallicity and turbulence.
 vary=(--vary "metallicity=log:0.005:0.05:$n" --vary "alpha=log:1e-4:1e-2:$n")
-args=(batch-fig-5-4 --set batches=20 "${vary[@]}" --scalars max_loading,converted)
+args=(batch-fig-5-4 --set batches=20 "${vary[@]}" --scalars loading_top_tenth,converted)
 start=$(date +%s)
 merge=$(GRAINSCOPE="$bin" "$root/examples/slurm/submit.sh" 4 "$work/cluster" "${args[@]}")
 echo "submitted an array of 4 tasks and merge job $merge"

@@ -60,8 +60,19 @@ pub const ONE_SIDED: f64 = 0.9;
 /// A step declared as the model's resolution
 /// ([`crate::scene::Declared::resolution`]) must shrink below this fraction
 /// of its size at four times the resolution (a step of one batch in N shrinks
-/// about fourfold; a switch of the physics keeps its size).
+/// about fourfold; a switch of the physics keeps its size), or below its
+/// square at sixteen times (a quantity that a coarse setting does not yet
+/// resolve, such as a quantile over a few dozen batches, shrinks from some
+/// count on; a switch of the physics keeps its size at every count).
 pub const RESOLVED: f64 = 0.5;
+
+/// How much of a resolution step is left at four and sixteen times the
+/// resolution (the second only where the first is not below [`RESOLVED`]).
+#[derive(Debug, Clone, Copy)]
+struct Finer {
+    four: f64,
+    sixteen: Option<f64>,
+}
 
 /// For a scene of random runs: a step must also exceed this many standard
 /// deviations of the scalar over independent seeds.
@@ -525,19 +536,19 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
     // A step declared as the model's resolution is held to it: at four times
     // the count that sets the resolution, the same bracket must change by
     // less than half as much. The change there, relative to the step's.
-    let finer: Vec<Option<Result<f64, String>>> = steps
+    let finer: Vec<Option<Result<Finer, String>>> = steps
         .par_iter()
         .map(|(c, a, b)| {
             let Some(count) = Declared::find(declared, Irregularity::Step, c.scalar, c.line).and_then(|d| d.resolution)
             else {
                 return Ok(None);
             };
-            let refined = match (base.get(count), base.spec(count).map(|s| &s.kind)) {
-                (Some(Value::Count(n)), Some(SpecKind::Count { max, .. })) if n < *max => (4 * n).min(*max),
+            let (n, max) = match (base.get(count), base.spec(count).map(|s| &s.kind)) {
+                (Some(Value::Count(n)), Some(SpecKind::Count { max, .. })) if n < *max => (n, *max),
                 _ => return Ok(Some(Err(format!("{count} is at its largest value: no finer resolution to check")))),
             };
             let x = |u: f64| if c.log { u.exp() } else { u };
-            let at = |u: f64| -> Result<Option<f64>, SceneError> {
+            let at = |u: f64, refined: usize| -> Result<Option<f64>, SceneError> {
                 let Some(p) = with(base, c.line, &Value::Number(x(u))) else { return Ok(None) };
                 let Some(p) = with(&p, count, &Value::Count(refined)) else { return Ok(None) };
                 Ok(match compute(&p, progress)? {
@@ -547,15 +558,28 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
                     _ => None,
                 })
             };
-            let (ya, yb) = (at(a.0)?, at(b.0)?);
             let step = (b.1 - a.1).abs();
-            Ok(Some(match (ya, yb) {
-                (Some(ya), Some(yb)) if step > 0.0 => Ok((yb - ya).abs() / step),
-                _ => Err(format!("no value at {refined} {count}")),
+            let change = |refined: usize| -> Result<Result<f64, String>, SceneError> {
+                Ok(match (at(a.0, refined)?, at(b.0, refined)?) {
+                    (Some(ya), Some(yb)) if step > 0.0 => Ok((yb - ya).abs() / step),
+                    _ => Err(format!("no value at {refined} {count}")),
+                })
+            };
+            let four = change((4 * n).min(max))?;
+            Ok(Some(match four {
+                Ok(ratio) if ratio >= RESOLVED && 4 * n < max => match change((16 * n).min(max))? {
+                    Ok(sixteen) => Ok(Finer { four: ratio, sixteen: Some(sixteen) }),
+                    Err(_) => Ok(Finer { four: ratio, sixteen: None }),
+                },
+                other => other.map(|four| Finer { four, sixteen: None }),
             }))
         })
         .collect::<Result<_, SceneError>>()?;
-    report.computations += 2 * finer.iter().flatten().count();
+    report.computations += finer
+        .iter()
+        .flatten()
+        .map(|f| f.as_ref().map_or(2, |f| 2 + 2 * usize::from(f.sixteen.is_some())))
+        .sum::<usize>();
     for ((c, a, b), finer) in steps.into_iter().zip(finer) {
         let x = |u: f64| if c.log { u.exp() } else { u };
         let shown = |u: f64| match lines.iter().find(|l| l.key == c.line) {
@@ -578,14 +602,22 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
         let mut d = Declared::find(declared, Irregularity::Step, c.scalar, c.line).map(|d| d.why);
         let mut detail = detail.replace("  ", " ").trim_end().to_string();
         match finer {
-            Some(Ok(ratio)) if ratio < RESOLVED => {
-                detail += &format!("; {:.0} % of it at four times the resolution", 100.0 * ratio);
+            Some(Ok(Finer { four, .. })) if four < RESOLVED => {
+                detail += &format!("; {:.0} % of it at four times the resolution", 100.0 * four);
             }
-            Some(Ok(ratio)) => {
-                // Not a resolution step after all: open.
+            Some(Ok(Finer { four, sixteen: Some(sixteen) })) if sixteen < RESOLVED * RESOLVED => {
                 detail += &format!(
-                    "; declared a resolution step, but at four times the resolution it keeps {:.0} % of its size",
-                    100.0 * ratio
+                    "; {:.0} % of it at four times the resolution and {:.0} % at sixteen times",
+                    100.0 * four,
+                    100.0 * sixteen
+                );
+            }
+            Some(Ok(Finer { four, sixteen })) => {
+                // Not a resolution step after all: open.
+                let sixteen = sixteen.map_or(String::new(), |r| format!(" and {:.0} % at sixteen times", 100.0 * r));
+                detail += &format!(
+                    "; declared a resolution step, but at four times the resolution it keeps {:.0} % of its size{sixteen}",
+                    100.0 * four
                 );
                 d = None;
             }

@@ -282,6 +282,10 @@ pub enum Command {
         /// tests): seconds instead of minutes, for a check of the other chapters.
         #[arg(long)]
         without_monte_carlo: bool,
+        /// Only these chapters' rows and figures (2 to 6, e.g. `--chapters 2,3,6`;
+        /// the Monte Carlo runs belong to 4 and 5). All chapters when not given.
+        #[arg(long, value_delimiter = ',', value_name = "N,M", value_parser = clap::value_parser!(u8).range(2..=6))]
+        chapters: Vec<u8>,
     },
 }
 
@@ -610,7 +614,9 @@ pub fn run(command: Command) -> Result<()> {
         Command::Fit { data, materials, geometry, radius, radius2, grid, set, out, json } => {
             fit_command(&data, &materials, geometry, radius, radius2, grid, &set, out.as_deref(), json)
         }
-        Command::Reproduce { out, quick, without_monte_carlo } => reproduce(&out, quick, !without_monte_carlo),
+        Command::Reproduce { out, quick, without_monte_carlo, chapters } => {
+            reproduce(&out, quick, !without_monte_carlo, &chapters)
+        }
     }
 }
 
@@ -694,14 +700,26 @@ fn fit_command(
     if json { say(serde_json::to_string(&result)?) } else { say(serde_json::to_string_pretty(&result)?) }
 }
 
-fn reproduce(dir: &Path, quick: bool, with_monte_carlo: bool) -> Result<()> {
+fn reproduce(dir: &Path, quick: bool, with_monte_carlo: bool, chapters: &[u8]) -> Result<()> {
+    let wanted = |chapter: u8| chapters.is_empty() || chapters.contains(&chapter);
     std::fs::create_dir_all(dir).with_context(|| format!("cannot create folder {}", dir.display()))?;
-    let mut checks = crate::reproduce::chapter2()?;
-    checks.extend(crate::reproduce::chapter3());
-    checks.extend(crate::reproduce::chapter4());
-    checks.extend(crate::reproduce::chapter5()?);
-    checks.extend(crate::reproduce::chapter6()?);
-    let monte_carlo = if with_monte_carlo {
+    let mut checks = Vec::new();
+    if wanted(2) {
+        checks.extend(crate::reproduce::chapter2()?);
+    }
+    if wanted(3) {
+        checks.extend(crate::reproduce::chapter3());
+    }
+    if wanted(4) {
+        checks.extend(crate::reproduce::chapter4());
+    }
+    if wanted(5) {
+        checks.extend(crate::reproduce::chapter5()?);
+    }
+    if wanted(6) {
+        checks.extend(crate::reproduce::chapter6()?);
+    }
+    let monte_carlo = if with_monte_carlo && (wanted(4) || wanted(5)) {
         crate::reproduce::monte_carlo(quick)?
     } else {
         crate::reproduce::MonteCarlo { checks: Vec::new(), figures: Vec::new() }
@@ -710,45 +728,55 @@ fn reproduce(dir: &Path, quick: bool, with_monte_carlo: bool) -> Result<()> {
     let md = crate::reproduce::markdown(&checks);
     write_atomically(&dir.join("reproduce.md"), md.as_bytes())?;
     write_atomically(&dir.join("reproduce.csv"), &crate::reproduce::csv(&checks)?)?;
-    for name in [
-        "ice-bounce-8ms",
-        "ice-stick-2ms",
-        "restitution-ice",
-        "experiments-fig-2-11",
-        "material-parameters",
-        "rolling-contact-psl",
-        "rolling-psl-glass-force",
-        "rolling-silica-force",
-        "rolling-ding-critical",
-        "rolling-psl-aluminium-rocking",
-        "debris-fig-6-1-top",
-        "debris-fig-6-1-bottom",
-        "debris-fig-6-2",
-        "debris-fig-6-3",
-        "disk-fig-4-1",
-        "disk-fig-4-2-compact",
-        "disk-fig-4-2-porous",
-        "disk-fig-4-5",
-        "disk-fig-4-7",
-        "disk-fig-4-8",
-        "disk-fig-4-13",
-        "disk-fig-4-13-erosion",
-        "batch-fig-5-1",
-        "batch-fig-5-3",
-        "batch-fig-5-4",
-        "batch-fig-5-5",
-        "batch-fig-5-6",
-        "batch-fig-5-7",
-        "batch-fig-5-8-extended",
-        "batch-fig-5-8-weak",
-        "batch-fig-5-9",
-        "batch-fig-5-10",
-        "batch-fig-5-11",
-        "batch-fig-5-12",
-        "batch-fig-5-13",
-        "batch-fig-5-14",
-        "batch-fig-5-15",
-    ] {
+    // The presets that draw each chapter's figures.
+    let figures: [(u8, &[&str]); 5] = [
+        (2, &["ice-bounce-8ms", "ice-stick-2ms", "restitution-ice", "experiments-fig-2-11", "material-parameters"]),
+        (
+            3,
+            &[
+                "rolling-contact-psl",
+                "rolling-psl-glass-force",
+                "rolling-silica-force",
+                "rolling-ding-critical",
+                "rolling-psl-aluminium-rocking",
+            ],
+        ),
+        (6, &["debris-fig-6-1-top", "debris-fig-6-1-bottom", "debris-fig-6-2", "debris-fig-6-3"]),
+        (
+            4,
+            &[
+                "disk-fig-4-1",
+                "disk-fig-4-2-compact",
+                "disk-fig-4-2-porous",
+                "disk-fig-4-5",
+                "disk-fig-4-7",
+                "disk-fig-4-8",
+                "disk-fig-4-13",
+                "disk-fig-4-13-erosion",
+            ],
+        ),
+        (
+            5,
+            &[
+                "batch-fig-5-1",
+                "batch-fig-5-3",
+                "batch-fig-5-4",
+                "batch-fig-5-5",
+                "batch-fig-5-6",
+                "batch-fig-5-7",
+                "batch-fig-5-8-extended",
+                "batch-fig-5-8-weak",
+                "batch-fig-5-9",
+                "batch-fig-5-10",
+                "batch-fig-5-11",
+                "batch-fig-5-12",
+                "batch-fig-5-13",
+                "batch-fig-5-14",
+                "batch-fig-5-15",
+            ],
+        ),
+    ];
+    for name in figures.iter().filter(|(c, _)| wanted(*c)).flat_map(|(_, names)| names.iter()) {
         let p = resolve(name)?;
         let out = scene::compute(&p.scene, &Progress::default())?;
         write_outputs(&out, Some(&p), &dir.join(name))?;

@@ -38,6 +38,12 @@ fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() 
             // Capped kernel tests take seconds per run: one run here.
             quick.set("runs", "1").expect("runs");
         }
+        // The other heavy scenes run at their preview's setting (fewer
+        // batches, a coarser grid): `.ci/run` runs every preset at its full
+        // size with the release binary, and `reproduce` checks their numbers.
+        if quick.info().heavy && !file.starts_with("mc-") {
+            quick = quick.coarse().unwrap_or(quick);
+        }
         let out = scene::compute(&quick, &Progress::default()).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(!out.figures.is_empty(), "{file}");
         // Every character of every label must exist in the bundled font,

@@ -33,16 +33,31 @@ fn cancelled_computation_reports_cancellation() {
     assert!(matches!(err, scene::SceneError::Cancelled));
 }
 
+/// Every scene computed once at its defaults (the Monte Carlo scenes with
+/// one short run), shared by the tests that need a scene's full result.
+fn defaults() -> &'static std::collections::BTreeMap<&'static str, scene::SceneOutput> {
+    static DEFAULTS: std::sync::OnceLock<std::collections::BTreeMap<&'static str, scene::SceneOutput>> =
+        std::sync::OnceLock::new();
+    DEFAULTS.get_or_init(|| {
+        SCENES
+            .iter()
+            .map(|info| {
+                let mut quick = SceneParams::default_for(info.id).expect("scene");
+                // The Monte Carlo scenes run for minutes by default: one short run here.
+                if quick.set("max_events_millions", "0.02").is_ok() {
+                    quick.set("runs", "1").expect("runs");
+                }
+                (info.id, scene::compute(&quick, &Progress::default()).expect(info.id))
+            })
+            .collect()
+    })
+}
+
 #[test]
 fn every_scene_computes_with_defaults_and_documents_its_parameters() {
     for info in SCENES {
         let mut p = SceneParams::default_for(info.id).expect("scene");
-        let mut quick = p.clone();
-        // The Monte Carlo scenes run for minutes by default: one short run here.
-        if quick.set("max_events_millions", "0.02").is_ok() {
-            quick.set("runs", "1").expect("runs");
-        }
-        let out = scene::compute(&quick, &Progress::default()).expect(info.id);
+        let out = &defaults()[info.id];
         assert!(!out.figures.is_empty() && !out.scalars.is_empty(), "{}", info.id);
         for fig in &out.figures {
             assert!(fig.series.iter().any(|s| !s.points.is_empty()), "{}: {}", info.id, fig.id);
@@ -189,8 +204,7 @@ fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
         assert!(full_batches > batches, "{id}: the preview is not cheaper");
         let out = scene::compute(&coarse, &Progress::default()).expect("preview");
         let ids = |o: &scene::SceneOutput| o.figures.iter().map(|f| f.id.clone()).collect::<Vec<_>>();
-        let full = scene::compute(&p, &Progress::default()).expect("full");
-        assert_eq!(ids(&out), ids(&full), "{id}");
+        assert_eq!(ids(&out), ids(&defaults()[id]), "{id}");
     }
     // The restitution scene previews with fewer radii, with the same figures.
     let p = SceneParams::default_for("restitution").expect("scene");
@@ -198,19 +212,14 @@ fn batch_scenes_preview_with_at_most_40_batches_and_draw_the_same_figures() {
     assert_ne!(coarse, p, "the preview is the full computation");
     let ids = |o: &scene::SceneOutput| o.figures.iter().map(|f| f.id.clone()).collect::<Vec<_>>();
     let out = scene::compute(&coarse, &Progress::default()).expect("preview");
-    let full = scene::compute(&p, &Progress::default()).expect("full");
-    assert_eq!(ids(&out), ids(&full));
+    assert_eq!(ids(&out), ids(&defaults()["restitution"]));
     // Capped kernel tests preview with the uncapped method.
     let mut k = SceneParams::default_for("kernel-tests").expect("scene");
     k.set("group_mass_cap", "1e-3").expect("valid");
     let coarse = k.coarse().expect("a capped kernel test has a preview");
     let SceneParams::KernelTests(c) = &coarse else { panic!("not a kernel test") };
     assert_eq!(c.group_mass_cap, 1.0);
-    let uncapped = SceneParams::default_for("kernel-tests").expect("scene");
-    assert_eq!(
-        ids(&scene::compute(&coarse, &Progress::default()).expect("preview")),
-        ids(&scene::compute(&uncapped, &Progress::default()).expect("uncapped"))
-    );
+    assert_eq!(ids(&scene::compute(&coarse, &Progress::default()).expect("preview")), ids(&defaults()["kernel-tests"]));
     // Light scenes have none.
     assert!(SceneParams::default_for("hysteresis").expect("scene").coarse().is_none());
 }

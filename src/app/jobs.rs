@@ -383,6 +383,17 @@ impl ThreadRunner {
     }
 }
 
+/// A runner that goes away (its window closed, a test's app dropped) stops
+/// its jobs: nothing reads their results, and they would hold the shared
+/// thread pool from the jobs of other runners in the process.
+impl Drop for ThreadRunner {
+    fn drop(&mut self) {
+        for (_, progress) in &self.running {
+            progress.cancel();
+        }
+    }
+}
+
 impl Runner for ThreadRunner {
     fn submit(&mut self, job: Job) {
         let lane = job.lane();
@@ -521,6 +532,17 @@ mod tests {
         let mut p = SceneParams::default_for("hysteresis").expect("scene");
         p.set("velocity", &velocity.to_string()).expect("valid");
         Job::Scene { scene: 0, params: Box::new(p), coarse: None }
+    }
+
+    /// A runner that is dropped cancels the jobs it still runs.
+    #[test]
+    fn a_dropped_runner_cancels_its_jobs() {
+        let mut r = ThreadRunner::new(|| {});
+        r.submit(scene_job(2.0));
+        let progress = r.running.first().map(|(_, p)| p.clone()).expect("a running job");
+        assert!(!progress.cancelled());
+        drop(r);
+        assert!(progress.cancelled());
     }
 
     /// A newer job on a lane wins: the older one's result never lands.

@@ -54,6 +54,16 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
                   0.17–0.63 with 640); read it as an order of magnitude, as the thesis does (~0.1)",
             resolution: None,
         },
+        Declared {
+            scalar: "loading_top_tenth",
+            parameter: "dlnm",
+            kind: Irregularity::Step,
+            why: "the growth step moves each batch's path a little, and the frames catch its passage into the \
+                  10⁻² ≤ Ωt_s ≤ 1 window (where its loading jumps from 0) a frame earlier or later: steps of 2–3 % along \
+                  dlnm at every batch count (batch-fig-5-4: 0.0746–0.0770 at 40 batches, 0.0756–0.0788 at 160, \
+                  0.0773–0.0800 at 640 for dlnm 0.185–0.189), the size of the scalar's own step error",
+            resolution: None,
+        },
         BATCH_STEPS,
     ];
 
@@ -153,6 +163,12 @@ mark the present orbits of Jupiter, Saturn, Uranus and Neptune.",
                 unit: "AU",
             },
             Scalar { key: "max_loading", label: "largest midplane ρ*_d/ρ_g", value: max_loading, unit: "" },
+            Scalar {
+                key: "loading_top_tenth",
+                label: "midplane ρ*_d/ρ_g reached by a tenth of the dust",
+                value: run.loading_reached_by(0.1),
+                unit: "",
+            },
             Scalar {
                 key: "si_samples",
                 label: "batch samples meeting SI conditions i, ii, iv",

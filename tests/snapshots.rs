@@ -6,8 +6,8 @@
 //! first scene also in the ordinary layout, dark and light, at 1024 × 768 and
 //! 1920 × 1080, and a family drawn by the "Draw family" tool over the smallest
 //! fragment scene, in the window and in lecture mode. The Monte Carlo column scenes run one short run (2 × 10⁴
-//! events) so that the suite stays quick; everything else is drawn at its
-//! defaults. A figure that changes on purpose is refreshed with
+//! events) and the formation zone 200 batches a disk so that the suite stays
+//! quick; everything else is drawn at its defaults. A figure that changes on purpose is refreshed with
 //! `UPDATE_SNAPSHOTS=1 cargo test --release --test snapshots`; a failing
 //! comparison leaves `NAME.new.png` and `NAME.diff.png` beside the kept image.
 //! The kept images were drawn by Mesa's software Vulkan driver (lavapipe),
@@ -66,11 +66,15 @@ fn harness(w: f32, h: f32) -> Option<Harness<'static, GrainscopeApp>> {
 }
 
 /// The parameters a scene is drawn with: its defaults, with the Monte Carlo
-/// column cut to one short run.
+/// column cut to one short run and the formation zone's 30 disks to 200
+/// batches each (the same figure within a few per cent; its full size is a minute of each test).
 fn snapshot_params(id: &str) -> SceneParams {
     let mut p = SceneParams::default_for(id).expect("a registered scene");
     if p.set("max_events_millions", "0.02").is_ok() {
         p.set("runs", "1").expect("a Monte Carlo scene has runs");
+    }
+    if id == "formation-zone" {
+        p.set("batches", "200").expect("the formation zone has batches");
     }
     p
 }
@@ -141,10 +145,14 @@ fn every_slide_of_the_shipped_decks_in_presenter_mode_at_projector_size() {
     for (file, _) in grainscope::deck::SHIPPED {
         let name = file.trim_end_matches(".ron");
         let mut deck = grainscope::deck::resolve(name).expect("a shipped deck");
-        // Monte Carlo slides cut to one short run, as in the scene snapshots.
+        // Monte Carlo slides cut to one short run and the formation zone to
+        // 200 batches a disk, as in the scene snapshots.
         for p in &mut deck.params {
             if p.set("max_events_millions", "0.02").is_ok() {
                 p.set("runs", "1").expect("a Monte Carlo scene has runs");
+            }
+            if matches!(p, SceneParams::FormationZone(_)) {
+                p.set("batches", "200").expect("the formation zone has batches");
             }
         }
         let n = deck.deck.slides.len();

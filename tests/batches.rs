@@ -375,3 +375,32 @@ fn the_loading_a_tenth_of_the_dust_reaches_is_converged_at_the_default_batch_cou
         );
     }
 }
+
+/// The formation zone's quick path to its largest edge (no runs with half
+/// the batches) equals the whole computation, and a dashed disk set equal to
+/// the solid one (the same R_c) gives the same edges.
+#[test]
+fn the_formation_zone_quick_path_and_a_repeated_disk_set_give_the_same_edges() {
+    use grainscope::scene::batches::formation_zone::Params;
+    let p = Params {
+        mass_min: 0.05,
+        mass_max: 0.2,
+        n_mass: 2,
+        z_min: 0.03,
+        z_max: 0.03,
+        n_z: 1,
+        r_c_1: 30.0,
+        r_c_2: 30.0,
+        run: BatchParams { batches: 40, ..BatchParams::default() },
+        ..Params::default()
+    };
+    let params = SceneParams::FormationZone(p);
+    let out = scene::compute(&params, &Progress::default()).expect("valid grid");
+    let fig = &out.figures[0];
+    assert_eq!(fig.series.len(), 2);
+    assert_eq!(fig.series[0].points, fig.series[1].points);
+    let widest = out.scalar("widest_zone").expect("widest");
+    assert!(widest > 0.0);
+    let quick = scene::scalar(&params, "widest_zone", &Progress::default()).expect("computes").expect("a quick path");
+    assert_eq!(quick, widest);
+}

@@ -4,7 +4,7 @@
 use super::common::{BATCH_STEPS, BatchParams, batch_quantised, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
 use crate::physics::constants::AU;
-use crate::scene::core::{Censored, Context, Declared, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
+use crate::scene::core::{Censored, Context, Declared, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::disk::common::DiskProfile;
 use crate::scene::schema::{Choice, ParamSet};
 use rayon::prelude::*;
@@ -112,15 +112,20 @@ disks run in parallel, each also with half the batches: the change estimates the
         Some(Params { run: p.run.coarse_over(2 * n_mass * p.n_z), n_mass, ..p.clone() })
     }
 
+    /// The largest edge alone needs no run with half the batches.
+    fn scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
+        match key {
+            "widest_zone" => Some(self.edges(&[self.run.batches], progress).map(|e| widest_of(&e))),
+            "disks" => Some(Ok(self.disks().len() as f64)),
+            _ => None,
+        }
+    }
+
     /// Computes the scene.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         let (p, progress) = (self, ctx.progress);
         let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
         let zs = log_grid(p.z_min, p.z_max, p.n_z);
-        let (nz, nm) = (zs.len(), masses.len());
-        let combos: Vec<(usize, usize, usize)> =
-            (0..2).flat_map(|c| (0..nz).flat_map(move |zi| (0..nm).map(move |mi| (c, zi, mi)))).collect();
-        let done = std::sync::atomic::AtomicUsize::new(0);
         // Every disk also runs with half the batches: the change says how far
         // the edges are from converged (it can understate it where the edge
         // still drifts with the batch count, see the README). Below
@@ -128,29 +133,9 @@ disks run in parallel, each also with half the batches: the change estimates the
         // preview's few batches among them): the change is undefined.
         let half = p.run.batches / 2;
         let counts: &[usize] = if p.run.batches >= MIN_COMPARED { &[p.run.batches, half] } else { &[p.run.batches] };
-        let runs: Vec<(usize, usize, usize, usize)> =
-            counts.iter().flat_map(|&n| combos.iter().map(move |&(c, zi, mi)| (c, zi, mi, n))).collect();
-        let total = runs.len();
-        let all: Vec<f64> = runs
-            .par_iter()
-            .map(|&(c, zi, mi, batches)| {
-                let mut b = BatchParams { batches, ..p.run.clone() };
-                b.disk.profile = DiskProfile::PowerLaw;
-                b.disk.disk_mass = masses[mi];
-                b.disk.metallicity = zs[zi];
-                b.disk.r_c = p.r_c_1;
-                if c == 1 {
-                    match p.contrast {
-                        Contrast::Cold => b.disk.cold = !b.disk.cold,
-                        Contrast::Slope => b.disk.slope = 1.5,
-                        Contrast::Alpha => b.disk.alpha = 1e-5,
-                        Contrast::RC => b.disk.r_c = p.r_c_2,
-                    }
-                }
-                b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU)
-            })
-            .collect::<Result<_, _>>()?;
-        let (edges, coarser) = all.split_at(combos.len());
+        let all = p.edges(counts, progress)?;
+        let combos = all.len() / counts.len();
+        let (edges, coarser) = all.split_at(combos);
         let coarser: Vec<f64> = if coarser.is_empty() { vec![f64::NAN; edges.len()] } else { coarser.to_vec() };
         let coarser = &coarser[..];
         let mut fig = Figure::new(
@@ -188,9 +173,6 @@ disks run in parallel, each also with half the batches: the change estimates the
                 );
             }
         }
-        // NaN (undefined) where no disk of the grid forms planetesimals.
-        let widest_of =
-            |e: &[f64]| Some(e.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN);
         let widest = widest_of(edges);
         let widest_error = (widest - widest_of(coarser)).abs();
         let largest_error = if p.run.batches >= MIN_COMPARED {
@@ -213,5 +195,71 @@ disks run in parallel, each also with half the batches: the change estimates the
         });
         scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
         Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
+    }
+}
+
+/// The largest edge of a grid, AU; NaN (undefined) where no disk of the grid
+/// forms planetesimals.
+fn widest_of(edges: &[f64]) -> f64 {
+    Some(edges.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN)
+}
+
+impl Params {
+    /// The run of every disk of the grid: both disk sets (solid, then
+    /// dashed), each metallicity, each disk mass.
+    fn disks(&self) -> Vec<BatchParams> {
+        let p = self;
+        let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
+        let zs = log_grid(p.z_min, p.z_max, p.n_z);
+        let mut disks = Vec::with_capacity(2 * zs.len() * masses.len());
+        for c in 0..2 {
+            for &z in &zs {
+                for &m in &masses {
+                    let mut b = p.run.clone();
+                    b.disk.profile = DiskProfile::PowerLaw;
+                    b.disk.disk_mass = m;
+                    b.disk.metallicity = z;
+                    b.disk.r_c = p.r_c_1;
+                    if c == 1 {
+                        match p.contrast {
+                            Contrast::Cold => b.disk.cold = !b.disk.cold,
+                            Contrast::Slope => b.disk.slope = 1.5,
+                            Contrast::Alpha => b.disk.alpha = 1e-5,
+                            Contrast::RC => b.disk.r_c = p.r_c_2,
+                        }
+                    }
+                    disks.push(b);
+                }
+            }
+        }
+        disks
+    }
+
+    /// The outer edge of every disk of [`Params::disks`], AU (0 where none
+    /// forms), at each batch count of `counts` in turn. A disk that equals
+    /// another (the dashed set with the solid set's R_c, say) runs once.
+    fn edges(&self, counts: &[usize], progress: &Progress) -> Result<Vec<f64>, SceneError> {
+        let runs: Vec<BatchParams> = counts
+            .iter()
+            .flat_map(|&batches| self.disks().into_iter().map(move |d| BatchParams { batches, ..d }))
+            .collect();
+        let mut distinct: Vec<BatchParams> = Vec::new();
+        let which: Vec<usize> = runs
+            .iter()
+            .map(|r| match distinct.iter().position(|d| d == r) {
+                Some(i) => i,
+                None => {
+                    distinct.push(r.clone());
+                    distinct.len() - 1
+                }
+            })
+            .collect();
+        let done = std::sync::atomic::AtomicUsize::new(0);
+        let total = distinct.len();
+        let edges: Vec<f64> = distinct
+            .par_iter()
+            .map(|b| b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU))
+            .collect::<Result<_, _>>()?;
+        Ok(which.into_iter().map(|i| edges[i]).collect())
     }
 }

@@ -41,7 +41,10 @@ fn draw(p: &mut SceneParams, rng: &mut StdRng) {
         }
     }
     p.material_changed();
-    // A range's ends in order: "x_min" never above "x_max".
+    // A range's ends in order: "x_min" never above "x_max", the innermost
+    // batch ("r_in_au") never outside the outermost ("r_out_au"). Swapped in
+    // the controls themselves: `set` checks the whole set, which another
+    // pair still out of order would fail.
     let numbers: Vec<(&str, f64)> = p
         .controls()
         .iter()
@@ -50,14 +53,29 @@ fn draw(p: &mut SceneParams, rng: &mut StdRng) {
             _ => None,
         })
         .collect();
-    for (key, lo) in &numbers {
-        let Some(stem) = key.strip_suffix("_min") else { continue };
-        let max_key = format!("{stem}_max");
-        if let Some((_, hi)) = numbers.iter().find(|(k, _)| *k == max_key)
-            && lo > hi
-        {
-            p.set(key, &format!("{hi:e}")).expect("a documented key");
-            p.set(&max_key, &format!("{lo:e}")).expect("a documented key");
+    let partner = |key: &str| -> Option<String> {
+        match key {
+            "r_in_au" => Some("r_out_au".to_string()),
+            "r_out_au" => Some("r_in_au".to_string()),
+            _ => key
+                .strip_suffix("_min")
+                .map(|stem| format!("{stem}_max"))
+                .or_else(|| key.strip_suffix("_max").map(|stem| format!("{stem}_min"))),
+        }
+    };
+    let lower = |key: &str| key == "r_in_au" || key.ends_with("_min");
+    let swapped: Vec<(String, f64)> = numbers
+        .iter()
+        .filter_map(|(key, v)| {
+            let other = partner(key)?;
+            let (_, w) = numbers.iter().find(|(k, _)| *k == other)?;
+            let out_of_order = if lower(key) { v > w } else { w > v };
+            out_of_order.then(|| (key.to_string(), *w))
+        })
+        .collect();
+    for c in p.controls() {
+        if let (Some((_, w)), ControlKind::Number { value, .. }) = (swapped.iter().find(|(k, _)| k == c.key), c.kind) {
+            *value = *w;
         }
     }
 }

@@ -239,9 +239,10 @@ impl Params {
     /// forms), at each batch count of `counts` in turn. A disk that equals
     /// another (the dashed set with the solid set's R_c, say) runs once.
     fn edges(&self, counts: &[usize], progress: &Progress) -> Result<Vec<f64>, SceneError> {
+        let disks = self.disks();
         let runs: Vec<BatchParams> = counts
             .iter()
-            .flat_map(|&batches| self.disks().into_iter().map(move |d| BatchParams { batches, ..d }))
+            .flat_map(|&batches| disks.iter().map(move |d| BatchParams { batches, ..d.clone() }))
             .collect();
         let mut distinct: Vec<BatchParams> = Vec::new();
         let which: Vec<usize> = runs

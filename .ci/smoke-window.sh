@@ -3,7 +3,8 @@
 # screenshot and checks that it is not blank.
 # Usage: .ci/smoke-window.sh PATH-TO-GRAINSCOPE [SCREENSHOT.png [ARGUMENTS...]]
 # ARGUMENTS go to grainscope (e.g. `gui some-preset.ron`); the screen is
-# $SCREEN (default 1440x920); the window's output is kept in $APP_LOG if set.
+# $SCREEN (default 1440x920), the screenshot taken $WAIT seconds after the start
+# (default 10); the window's output is kept in $APP_LOG if set.
 set -euo pipefail
 bin=$1
 shot=${2:-$(mktemp -d)/grainscope-window.png}
@@ -26,7 +27,7 @@ trap 'kill $app $xvfb 2>/dev/null || true' EXIT
 sleep 2
 HOME=$home DISPLAY=$display LIBGL_ALWAYS_SOFTWARE=1 "$bin" "$@" >"$home/app.log" 2>&1 &
 app=$!
-sleep 10
+sleep "${WAIT:-10}"
 if ! kill -0 "$app" 2>/dev/null; then
     echo "smoke test: the window exited early:" >&2
     cat "$home/app.log" >&2

@@ -29,7 +29,7 @@
 //! Scenes of random runs (Monte Carlo) change their random path with every
 //! parameter, so their scalars are noisy at every scale: a step there must
 //! also exceed [`NOISE`] times the spread of the scalar over independent
-//! seeds at the preset's point.
+//! seeds, at the preset's point and at both ends of the step's bracket.
 
 use crate::scene::schema::Spec;
 use crate::scene::schema::{SpecKind, Value};
@@ -75,8 +75,13 @@ struct Finer {
 }
 
 /// For a scene of random runs: a step must also exceed this many standard
-/// deviations of the scalar over independent seeds.
+/// deviations of the scalar over independent seeds, at the preset's point
+/// and at both ends of the step's last bracket.
 pub const NOISE: f64 = 4.0;
+
+/// Independent seeds (sets of the scene's runs) that estimate a scalar's
+/// scatter.
+const SEEDS: usize = 4;
 
 /// Why an ignored parameter declared `figure_only` in its spec is no defect.
 pub const FIGURE_ONLY: &str = "it sets only what a figure shows (its spec says so)";
@@ -90,11 +95,30 @@ pub struct Options {
     pub refine: usize,
     /// Only these parameters (keys); every parameter when empty.
     pub only: Vec<String>,
+    /// Numbers swept no higher than these values (keys and SI values): the
+    /// resolution parameters a coarse setting lowered ([`ceilings`]), whose
+    /// range beyond it costs more than the audited point itself.
+    pub ceilings: Vec<(String, f64)>,
+}
+
+/// The numeric parameters that `coarse` sets below `full` (a resolution such
+/// as the groups per decade of a Monte Carlo run), each with its coarse
+/// value: the audit of a coarse setting sweeps them from their smallest
+/// value up to there, as it sweeps counts up to the preset's.
+pub fn ceilings(full: &SceneParams, coarse: &SceneParams) -> Vec<(String, f64)> {
+    coarse
+        .specs()
+        .iter()
+        .filter_map(|s| match (coarse.get(s.key)?, full.get(s.key)?) {
+            (Value::Number(c), Value::Number(f)) if c < f => Some((s.key.to_string(), c)),
+            _ => None,
+        })
+        .collect()
 }
 
 impl Default for Options {
     fn default() -> Self {
-        Options { points: 24, refine: 10, only: Vec::new() }
+        Options { points: 24, refine: 10, only: Vec::new(), ceilings: Vec::new() }
     }
 }
 
@@ -264,6 +288,8 @@ fn plan(base: &SceneParams, options: &Options) -> Vec<Planned> {
             let here = base.get(s.key)?;
             match (&s.kind, here) {
                 (SpecKind::Number { min, max, log, .. }, Value::Number(_)) => {
+                    let ceiling = options.ceilings.iter().find(|(k, _)| k == s.key).map(|c| c.1);
+                    let max = &ceiling.map_or(*max, |c| c.min(*max));
                     let (a, b) = if *log { (min.ln(), max.ln()) } else { (*min, *max) };
                     if !(a.is_finite() && b.is_finite() && b > a) {
                         return None;
@@ -500,7 +526,8 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
     }
 
     // Bisect the candidates: a jump stays, a steep slope shrinks.
-    let steps: Vec<Option<Bracket>> = candidates
+    let random = !noise.is_empty();
+    let steps: Vec<(Option<Bracket>, usize)> = candidates
         .into_par_iter()
         .map(|c| {
             let (mut a, mut b) = (c.a, c.b);
@@ -511,11 +538,11 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
             for _ in 0..options.refine {
                 let u = 0.5 * (a.0 + b.0);
                 let x = if c.log { u.exp() } else { u };
-                let Some(p) = with(base, c.line, &Value::Number(x)) else { return Ok(None) };
+                let Some(p) = with(base, c.line, &Value::Number(x)) else { return Ok((None, 0)) };
                 let Some(y) = compute(&p, progress)?.scalar(c.scalar).filter(|y| y.is_finite()) else {
                     // The scalar leaves its defined range inside: a stated
                     // boundary, not a step.
-                    return Ok(None);
+                    return Ok((None, 0));
                 };
                 let whole = (b.1 - a.1).abs();
                 let (left, right) = ((y - a.1).abs(), (b.1 - y).abs());
@@ -528,11 +555,24 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
             }
             let d = (b.1 - a.1).abs();
             let jump = d > KEEPS * d0 && d > RELEVANT * scale && d > NOISE * c.sd && share >= ONE_SIDED;
-            Ok(jump.then_some((c, a, b)))
+            if !jump || !random {
+                return Ok((jump.then_some((c, a, b)), 0));
+            }
+            // Random runs scatter by different amounts in different regimes
+            // (a steady state of erosion or fragmentation scatters more than
+            // the preset's growth): the jump must also stand out from the
+            // scatter over seeds at both ends of its bracket.
+            let mut local = 0.0f64;
+            for u in [a.0, b.0] {
+                let x = if c.log { u.exp() } else { u };
+                let Some(p) = with(base, c.line, &Value::Number(x)) else { return Ok((None, 0)) };
+                local = local.max(spread(&p, &[c.scalar], progress)?.get(c.scalar).copied().unwrap_or(0.0));
+            }
+            Ok(((d > NOISE * local).then_some((c, a, b)), 2 * SEEDS))
         })
         .collect::<Result<_, SceneError>>()?;
-    report.computations += steps.len() * options.refine;
-    let steps: Vec<Bracket> = steps.into_iter().flatten().collect();
+    report.computations += steps.len() * options.refine + steps.iter().map(|s| s.1).sum::<usize>();
+    let steps: Vec<Bracket> = steps.into_iter().filter_map(|s| s.0).collect();
     // A step declared as the model's resolution is held to it: at four times
     // the count that sets the resolution, the same bracket must change by
     // less than half as much. The change there, relative to the step's.
@@ -664,7 +704,7 @@ fn spread(
 ) -> Result<BTreeMap<&'static str, f64>, SceneError> {
     let mut p = base.clone();
     let Some((first, runs)) = p.seeds().map(|s| (*s.first, *s.runs)) else { return Ok(BTreeMap::new()) };
-    let points: Vec<SceneParams> = (1..=4)
+    let points: Vec<SceneParams> = (1..=SEEDS)
         .map(|k| {
             let mut q = base.clone();
             if let Some(s) = q.seeds() {
@@ -688,4 +728,54 @@ fn spread(
             (*key, sd)
         })
         .collect())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A ceiling ends a number's grid at itself (from the documented
+    /// smallest value, in the control's own spacing); without one the grid
+    /// spans the documented range.
+    #[test]
+    fn a_ceiling_ends_a_numbers_grid() {
+        let base = SceneParams::default_for("restitution").expect("scene");
+        let key = "velocity";
+        let Some(SpecKind::Number { min, max, log: true, .. }) = base.spec(key).map(|s| &s.kind) else {
+            panic!("{key} is a logarithmic number")
+        };
+        let grid = |ceilings: Vec<(String, f64)>| -> Vec<f64> {
+            let options = Options { points: 5, only: vec![key.into()], ceilings, ..Options::default() };
+            plan(&base, &options)[0]
+                .2
+                .iter()
+                .map(|(_, v)| if let Value::Number(x) = v { *x } else { f64::NAN })
+                .collect()
+        };
+        let full = grid(Vec::new());
+        assert!((full[0] / min - 1.0).abs() < 1e-12 && (full[4] / max - 1.0).abs() < 1e-12, "{full:?}");
+        let capped = grid(vec![(key.into(), 3.0)]);
+        assert_eq!(capped.len(), 5);
+        assert!((capped[0] / min - 1.0).abs() < 1e-12 && (capped[4] / 3.0 - 1.0).abs() < 1e-12, "{capped:?}");
+        // Evenly spaced in ln v, as the control is.
+        assert!(((capped[2] / capped[1]) / (capped[1] / capped[0]) - 1.0).abs() < 1e-9, "{capped:?}");
+        // A ceiling at or below the smallest value leaves nothing to sweep.
+        let options =
+            Options { points: 5, only: vec![key.into()], ceilings: vec![(key.into(), *min)], ..Options::default() };
+        assert!(plan(&base, &options).is_empty());
+    }
+
+    /// The ceilings of a Monte Carlo column's coarse setting are the
+    /// resolution it lowers: the groups per decade and the event limit.
+    #[test]
+    fn a_monte_carlo_columns_coarse_setting_caps_its_resolution() {
+        let mut full = SceneParams::default_for("mass-distribution").expect("scene");
+        full.set("groups_per_decade", "60").expect("w*");
+        full.set("runs", "4").expect("runs");
+        let coarse = full.coarse().expect("a preview");
+        assert_eq!(
+            ceilings(&full, &coarse),
+            vec![("groups_per_decade".to_string(), 10.0), ("max_events_millions".to_string(), 0.2)]
+        );
+    }
 }

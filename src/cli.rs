@@ -173,7 +173,8 @@ pub enum Command {
         /// Override a parameter of every preset by its documented key, e.g. `--set crack_law=thesis`.
         #[arg(long = "set", value_name = "KEY=VALUE")]
         set: Vec<String>,
-        /// Audit heavy scenes at the cheaper setting of their preview.
+        /// Audit heavy scenes at the cheaper setting of their preview (the numbers that setting
+        /// lowers, such as the Monte Carlo groups per decade, are swept only up to it).
         #[arg(long)]
         coarse: bool,
         /// Leave heavy scenes out.
@@ -436,7 +437,8 @@ pub fn run(command: Command) -> Result<()> {
             } else {
                 presets
             };
-            let options = crate::audit::Options { points: points as usize, refine: refine as usize, only };
+            let options =
+                crate::audit::Options { points: points as usize, refine: refine as usize, only, ceilings: Vec::new() };
             let mut failing = Vec::new();
             for name in &names {
                 let mut p = resolve(name)?;
@@ -445,10 +447,14 @@ pub fn run(command: Command) -> Result<()> {
                 if heavy && light {
                     continue;
                 }
-                let base = match p.scene.coarse() {
-                    Some(c) if heavy && coarse => c,
-                    _ => p.scene.clone(),
+                let (base, ceilings) = match p.scene.coarse() {
+                    Some(c) if heavy && coarse => {
+                        let ceilings = crate::audit::ceilings(&p.scene, &c);
+                        (c, ceilings)
+                    }
+                    _ => (p.scene.clone(), Vec::new()),
                 };
+                let options = crate::audit::Options { ceilings, ..options.clone() };
                 let started = std::time::Instant::now();
                 let report = crate::audit::audit(&base, &options, &Progress::default())
                     .with_context(|| format!("auditing {name}"))?;

@@ -32,7 +32,7 @@ fn every_light_preset_passes() {
 
 #[test]
 fn the_thesis_crack_law_makes_v_stick_jump_and_the_full_relation_does_not() {
-    let options = Options { points: 24, refine: 12, only: vec!["k".into()] };
+    let options = Options { points: 24, refine: 12, only: vec!["k".into()], ceilings: Vec::new() };
     let mut thesis = shipped("restitution-ice.ron");
     thesis.set_value("crack_law", &Value::Text("thesis".into())).expect("a documented option");
     let report = audit(&thesis, &options, &Progress::default()).expect("the audit runs");

@@ -79,7 +79,7 @@ pub struct ColumnParams {
     #[param(label = "last snapshot", unit = "yr", shown("yr", 1.0), range(1e-1, 1e7), log, default = 1e4)]
     pub t_end_yr: f64,
     /// log-spaced in time
-    #[param(label = "snapshots", range(1.0, 12.0), default = 7)]
+    #[param(figure_only, label = "snapshots", range(1.0, 12.0), default = 7)]
     pub snapshots: usize,
     /// the run ends when m_p reaches it
     #[param(label = "stop at peak mass", unit = "kg", shown("g", 1e3), range(1e-10, 1e25), log, default = 1e15)]
@@ -89,7 +89,34 @@ pub struct ColumnParams {
     pub max_events_millions: f64,
 }
 
+/// The preview's resolution: at most this many groups per decade w*.
+pub const COARSE_GROUPS_PER_DECADE: f64 = 10.0;
+
+/// The preview's number of runs at most.
+pub const COARSE_RUNS: usize = 2;
+
+/// The preview's event limit per run at most, in millions (a column with
+/// erosion at w* = 10 reaches it in about 5 s on one core; without erosion a
+/// thesis column needs a quarter of it).
+pub const COARSE_EVENTS_MILLIONS: f64 = 0.2;
+
 impl ColumnParams {
+    /// The cheaper setting a heavy Monte Carlo scene shows first and audits
+    /// at: w* ≤ [`COARSE_GROUPS_PER_DECADE`], at most [`COARSE_RUNS`] runs and
+    /// at most [`COARSE_EVENTS_MILLIONS`] million events a run (about a
+    /// second for a thesis column without erosion on two cores, at most
+    /// about five with erosion, against a minute or more at w* = 40–60);
+    /// None where the runs are already that light.
+    pub fn coarse(&self) -> Option<ColumnParams> {
+        let c = ColumnParams {
+            groups_per_decade: self.groups_per_decade.min(COARSE_GROUPS_PER_DECADE),
+            runs: self.runs.min(COARSE_RUNS),
+            max_events_millions: self.max_events_millions.min(COARSE_EVENTS_MILLIONS),
+            ..self.clone()
+        };
+        (c != *self).then_some(c)
+    }
+
     /// The seeds of the runs.
     pub fn seeds(&mut self) -> Seeds<'_> {
         Seeds { first: &mut self.seed, runs: &mut self.runs }
@@ -98,8 +125,10 @@ impl ColumnParams {
     /// The run configuration.
     pub fn config(&self) -> Result<RunConfig, SceneError> {
         if self.t_end_yr < self.t_first_yr {
-            return Err(SceneError::Physics(crate::physics::PhysicsError::Invalid(
-                "the last snapshot must not come before the first".into(),
+            // Two settings that contradict each other, as a range's ends the
+            // wrong way round: the input's fault, not the model's.
+            return Err(SceneError::Param(crate::scene::ParamError::Inconsistent(
+                "t_first_yr/t_end_yr: the last snapshot must not come before the first".into(),
             )));
         }
         let disk = self.disk.disk();
@@ -275,6 +304,44 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
         })
         .collect()
 }
+
+/// What the continuity audit finds in a column's scalars that is the method
+/// or the physics, not a defect.
+pub const COLUMN_DECLARED: &[crate::scene::core::Declared] =
+    &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH];
+
+/// The number of families is a diagnostic of the distribution method: the
+/// zoom factors z* = [log₂(N₁₀/w*)] (4.26) change by whole numbers as w*
+/// (or anything that moves N₁₀) crosses a power of two, and the families
+/// merge or split with them.
+pub const FAMILY_COUNT: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "families",
+    parameter: "groups_per_decade",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "a diagnostic, the families of the method: zoom factors z* = [log₂(N₁₀/w*)] (4.26) change by whole numbers",
+    resolution: None,
+};
+
+/// Erosion acts only where a projectile hits faster than v_eros (4.13):
+/// above the fastest collision a run reaches, nothing erodes and ζ (4.34)
+/// is 1 exactly; just below it, erosion balances growth.
+pub const EROSION_ONSET: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "zeta",
+    parameter: "v_eros",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "a threshold: above the fastest collision of the run nothing erodes and ζ = 1 exactly (4.13), (4.34)",
+    resolution: None,
+};
+
+/// A run stops when its peak mass reaches the stop mass; a column holding
+/// less mass than that never does and runs to its last snapshot.
+pub const STOP_OUT_OF_REACH: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "t_end",
+    parameter: "column_mass",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "a run stops when m_p reaches the stop mass; a column lighter than it never does and runs to the last snapshot",
+    resolution: None,
+};
 
 /// The Monte Carlo scenes' event count is a diagnostic: a whole number per
 /// run (the mean over runs), which steps with the grouping (`groups_per_decade`)

@@ -64,8 +64,13 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
+    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
     const PAUSABLE: bool = true;
+
+    /// The runs at w* ≤ 10, at most two seeds and 0.2 million events a run.
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse()?, ..self.clone() })
+    }
 
     fn seeds(&mut self) -> Option<Seeds<'_>> {
         Some(self.run.seeds())

@@ -55,7 +55,7 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
+    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
     const PAUSABLE: bool = true;
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
@@ -109,6 +109,11 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
             actions: Vec::new(),
             point: [f.mass * 1e3, f.filling],
         })
+    }
+
+    /// The runs at w* ≤ 10, at most two seeds and 0.2 million events a run.
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse()?, ..self.clone() })
     }
 
     fn seeds(&mut self) -> Option<Seeds<'_>> {

@@ -20,7 +20,7 @@ pub struct Params {
     #[param(flatten)]
     pub run: ColumnParams,
     /// histogram
-    #[param(label = "bins per decade", range(1.0, 10.0), default = 2)]
+    #[param(figure_only, label = "bins per decade", range(1.0, 10.0), default = 2)]
     pub bins_per_decade: usize,
     /// time marked on the peak mass and the nearest snapshot, as a fraction of the run in log time
     #[param(quantity = quantities::time_cursor, style_only, default = 0.0)]
@@ -64,7 +64,7 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[super::common::EVENT_COUNT];
+    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
     const PAUSABLE: bool = true;
 
     fn time_cursor(&mut self) -> Option<&mut f64> {
@@ -82,6 +82,11 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
             label.push_str(&format!(" (snapshot {} yr)", crate::figure::human(shown)));
         }
         Some(Cursor { fraction: p.cursor, label, marks, optional: true })
+    }
+
+    /// The runs at w* ≤ 10, at most two seeds and 0.2 million events a run.
+    fn coarse(&self) -> Option<Self> {
+        Some(Params { run: self.run.coarse()?, ..self.clone() })
     }
 
     fn seeds(&mut self) -> Option<Seeds<'_>> {

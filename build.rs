@@ -48,13 +48,16 @@ fn main() {
 }
 
 /// The bundled font, zlib-compressed into `OUT_DIR` (about half its size),
-/// for `figure::font_ttf` to inflate once: the browser's module carries it.
+/// for `figure::font_ttf` to inflate once. The browser's module carries the
+/// subset `assets/fonts/subset.sh` makes (the blocks the explorer and a
+/// user's Latin, Greek or Cyrillic text use), the desktop the whole font.
 fn compress_font() {
-    let font = "assets/fonts/DejaVuSans.ttf";
+    let web = std::env::var("CARGO_CFG_TARGET_ARCH").is_ok_and(|a| a == "wasm32");
+    let font = if web { "assets/fonts/DejaVuSans-web.ttf" } else { "assets/fonts/DejaVuSans.ttf" };
     println!("cargo:rerun-if-changed={font}");
     let root = std::env::var("CARGO_MANIFEST_DIR").unwrap_or_else(|_| ".".into());
-    let bytes =
-        std::fs::read(std::path::Path::new(&root).join(font)).expect("the bundled font assets/fonts/DejaVuSans.ttf");
+    let bytes = std::fs::read(std::path::Path::new(&root).join(font))
+        .unwrap_or_else(|e| panic!("the bundled font {font}: {e}"));
     let packed = miniz_oxide::deflate::compress_to_vec_zlib(&bytes, 10);
     let out = std::path::Path::new(&std::env::var("OUT_DIR").expect("cargo sets OUT_DIR")).join("DejaVuSans.ttf.zlib");
     std::fs::write(out, packed).expect("OUT_DIR is writable");

@@ -160,21 +160,87 @@ pub fn movie_files(
     Ok(files)
 }
 
+/// The size of one figure in a [`movie_sheet`], pixels.
+pub const SHEET_CELL: (u32, u32) = (800, 550);
+
+/// A played history as one file: an animated PNG showing every figure of
+/// the scene side by side (two to a row), `n_frames` frames at `fps`
+/// (what a browser downloads, where a folder of frames would be a download
+/// each). Returns the file's name and bytes.
+pub fn movie_sheet(
+    preset: &Preset,
+    n_frames: usize,
+    fps: u16,
+    cancelled: &dyn Fn() -> bool,
+) -> Result<(String, Vec<u8>)> {
+    let out = scene::compute(&preset.scene, &Progress::default())?;
+    let played = frames(&preset.scene, &out, n_frames)?;
+    let ids: Vec<&str> = out.figures.iter().map(|f| f.id.as_str()).collect();
+    let stamp = Stamp::of(preset)?;
+    let cols = ids.len().clamp(1, 2) as u32;
+    let rows = ids.len().div_ceil(2).max(1) as u32;
+    let (cw, ch) = SHEET_CELL;
+    let (w, h) = (cw * cols, ch * rows);
+    let mut sheets = Vec::with_capacity(played.len());
+    for figs in &played {
+        if cancelled() {
+            bail!("cancelled; nothing was written");
+        }
+        let mut sheet = vec![255u8; (w * h * 3) as usize];
+        for (k, id) in ids.iter().enumerate() {
+            let Some(fig) = figs.iter().find(|f| f.id == *id) else { continue };
+            let (fw, fh, rgb) = decoded_rgb(&figure_bytes(fig, "png", SHEET_CELL, Some(&stamp))?)?;
+            let (x0, y0) = ((k as u32 % cols) * cw, (k as u32 / cols) * ch);
+            for y in 0..fh.min(ch) {
+                let from = (y * fw * 3) as usize;
+                let to = (((y0 + y) * w + x0) * 3) as usize;
+                let n = (fw.min(cw) * 3) as usize;
+                sheet[to..to + n].copy_from_slice(&rgb[from..from + n]);
+            }
+        }
+        sheets.push(sheet);
+    }
+    let name = format!("{}-movie.png", preset.scene.info().id);
+    Ok((name, encode_apng(w, h, &sheets, fps, &stamp)?))
+}
+
+/// A PNG's pixels as 8-bit RGB (width, height, bytes).
+fn decoded_rgb(bytes: &[u8]) -> Result<(u32, u32, Vec<u8>)> {
+    let mut decoder = png::Decoder::new(std::io::Cursor::new(bytes));
+    decoder.set_transformations(png::Transformations::EXPAND | png::Transformations::STRIP_16);
+    let mut reader = decoder.read_info()?;
+    let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
+    let info = reader.next_frame(&mut buf)?;
+    buf.truncate(info.buffer_size());
+    let rgb = match info.color_type {
+        png::ColorType::Rgb => buf,
+        png::ColorType::Rgba => buf.chunks_exact(4).flat_map(|p| [p[0], p[1], p[2]]).collect(),
+        png::ColorType::Grayscale => buf.iter().flat_map(|&g| [g, g, g]).collect(),
+        png::ColorType::GrayscaleAlpha => buf.chunks_exact(2).flat_map(|p| [p[0], p[0], p[0]]).collect(),
+        png::ColorType::Indexed => bail!("an indexed PNG was not expanded"),
+    };
+    Ok((info.width, info.height, rgb))
+}
+
 /// Joins PNG frames of equal size into one animated PNG (APNG) that loops,
 /// each frame shown for 1/`fps` s; viewers without APNG show the first frame.
 fn animated_png(frames: &[Vec<u8>], fps: u16, stamp: &Stamp) -> Result<Vec<u8>> {
-    let decoded: Vec<(u32, u32, Vec<u8>)> = frames
-        .iter()
-        .map(|bytes| {
-            let mut reader = png::Decoder::new(std::io::Cursor::new(bytes.as_slice())).read_info()?;
-            let mut buf = vec![0; reader.output_buffer_size().unwrap_or(0)];
-            let info = reader.next_frame(&mut buf)?;
-            buf.truncate(info.buffer_size());
-            Ok((info.width, info.height, buf))
-        })
-        .collect::<Result<_, png::DecodingError>>()?;
+    let decoded: Vec<(u32, u32, Vec<u8>)> = frames.iter().map(|bytes| decoded_rgb(bytes)).collect::<Result<_>>()?;
     let Some((w, h, _)) = decoded.first() else { bail!("no frames") };
     let (w, h) = (*w, *h);
+    if decoded.iter().any(|(fw, fh, _)| (*fw, *fh) != (w, h)) {
+        bail!("frames differ in size");
+    }
+    let raw: Vec<Vec<u8>> = decoded.into_iter().map(|(_, _, data)| data).collect();
+    encode_apng(w, h, &raw, fps, stamp)
+}
+
+/// Encodes 8-bit RGB frames of `w` × `h` pixels as an animated PNG that
+/// loops at `fps`, with the stamp's text chunks.
+fn encode_apng(w: u32, h: u32, frames: &[Vec<u8>], fps: u16, stamp: &Stamp) -> Result<Vec<u8>> {
+    if frames.is_empty() {
+        bail!("no frames");
+    }
     let mut out = Vec::new();
     {
         let mut encoder = png::Encoder::new(&mut out, w, h);
@@ -183,13 +249,10 @@ fn animated_png(frames: &[Vec<u8>], fps: u16, stamp: &Stamp) -> Result<Vec<u8>> 
         for (k, v) in stamp.png_text() {
             encoder.add_itxt_chunk(k.to_string(), v.to_string())?;
         }
-        encoder.set_animated(decoded.len() as u32, 0)?;
+        encoder.set_animated(frames.len() as u32, 0)?;
         encoder.set_frame_delay(1, fps.max(1))?;
         let mut writer = encoder.write_header()?;
-        for (fw, fh, data) in &decoded {
-            if (*fw, *fh) != (w, h) {
-                bail!("frames differ in size");
-            }
+        for data in frames {
             writer.write_image_data(data)?;
         }
         writer.finish()?;
@@ -220,6 +283,29 @@ mod tests {
         let marks =
             budget.series.len() - out.figures.iter().find(|f| f.id == "energy-budget").map_or(0, |f| f.series.len());
         assert!(marks >= 6, "a time line and five energies: {marks}");
+    }
+
+    /// A movie as one file: every figure of the played collision side by
+    /// side in one looping animated PNG, its frames differing.
+    #[test]
+    fn a_movie_sheet_is_one_animated_png_of_every_figure() {
+        let preset = crate::preset::resolve("ice-bounce-8ms").expect("shipped");
+        let figures = scene::compute(&preset.scene, &Progress::default()).expect("computes").figures.len();
+        let (name, bytes) = movie_sheet(&preset, 4, 12, &|| false).expect("sheet");
+        assert!(name.ends_with("-movie.png"), "{name}");
+        let mut reader = png::Decoder::new(std::io::Cursor::new(bytes.as_slice())).read_info().expect("decodes");
+        let info = reader.info();
+        let control = info.animation_control().expect("animated");
+        assert_eq!(control.num_frames, 4);
+        let cols = figures.clamp(1, 2) as u32;
+        assert_eq!((info.width, info.height), (SHEET_CELL.0 * cols, SHEET_CELL.1 * figures.div_ceil(2) as u32));
+        let mut first = vec![0; reader.output_buffer_size().unwrap_or(0)];
+        reader.next_frame(&mut first).expect("frame 1");
+        let mut last = first.clone();
+        for _ in 1..4 {
+            reader.next_frame(&mut last).expect("frame");
+        }
+        assert_ne!(first, last, "the frames move");
     }
 
     /// A scene without a history is refused with the scenes that have one.

@@ -46,6 +46,23 @@ fn every_shipped_preset_loads_runs_round_trips_and_has_glyphs_for_every_label() 
         }
         let out = scene::compute(&quick, &Progress::default()).unwrap_or_else(|e| panic!("{file}: {e}"));
         assert!(!out.figures.is_empty(), "{file}");
+        // The browser's workers send results to the page as RON
+        // (web/src/wire.rs): every number reads back to the same bits.
+        let wire = ron::to_string(&out).unwrap_or_else(|e| panic!("{file}: {e}"));
+        let back: scene::SceneOutput = ron::from_str(&wire).unwrap_or_else(|e| panic!("{file}: {e}"));
+        assert_eq!(ron::to_string(&back).expect("again"), wire, "{file}");
+        let bits = |o: &scene::SceneOutput| -> Vec<u64> {
+            o.scalars
+                .iter()
+                .map(|s| s.value.to_bits())
+                .chain(
+                    o.figures
+                        .iter()
+                        .flat_map(|f| f.series.iter().flat_map(|s| s.points.iter().flatten().map(|x| x.to_bits()))),
+                )
+                .collect()
+        };
+        assert_eq!(bits(&back), bits(&out), "{file}: the wire changed a number");
         // Every character of every label must exist in the bundled font,
         // which draws the exported files and the window's text.
         for fig in &out.figures {
@@ -224,4 +241,38 @@ fn saving_to_an_unwritable_path_fails_and_keeps_the_old_file() {
     std::fs::write(&path, "old").expect("write");
     preset.save(&path).expect("save");
     assert!(Preset::load(&path).is_ok());
+}
+
+/// The browser's font (`assets/fonts/DejaVuSans-web.ttf`, a subset of the
+/// bundled DejaVu Sans) holds every character the sources, the presets and
+/// the decks use: the explorer's labels, the figures' titles and units.
+#[test]
+fn the_browsers_font_has_every_character_the_sources_use() {
+    use skrifa::MetadataProvider;
+    let root = std::path::Path::new(env!("CARGO_MANIFEST_DIR"));
+    let bytes = std::fs::read(root.join("assets/fonts/DejaVuSans-web.ttf")).expect("the browser's font");
+    let font = skrifa::FontRef::new(&bytes).expect("a font");
+    let charmap = font.charmap();
+    let mut texts = Vec::new();
+    let mut dirs = vec![root.join("src"), root.join("presets"), root.join("web/src")];
+    while let Some(dir) = dirs.pop() {
+        for entry in std::fs::read_dir(&dir).expect("a folder").filter_map(Result::ok) {
+            let path = entry.path();
+            if path.is_dir() {
+                dirs.push(path);
+            } else if path.extension().is_some_and(|e| e == "rs" || e == "ron") {
+                texts.push((path.clone(), std::fs::read_to_string(&path).expect("text")));
+            }
+        }
+    }
+    assert!(texts.len() > 50, "{} files", texts.len());
+    let mut missing = std::collections::BTreeSet::new();
+    for (path, text) in &texts {
+        for c in text.chars().filter(|c| !c.is_control()) {
+            if charmap.map(c).is_none() {
+                missing.insert((c, path.strip_prefix(root).unwrap_or(path).display().to_string()));
+            }
+        }
+    }
+    assert!(missing.is_empty(), "characters without a glyph in the browser's font: {missing:?}");
 }

@@ -1135,3 +1135,75 @@ fn a_study_over_whole_ranges_gives_the_models_indices() {
     h.get_by_label("Parameters and their ranges");
     h.get_by_label("18 runs analysed; 0 undefined (left out), 0 at a bound (entered at it)");
 }
+
+/// A platform's lighter defaults (the browser's Monte Carlo columns) are
+/// said while the scene runs at them; a link that sets those parameters
+/// wins, and the panel says what it runs instead.
+#[test]
+fn a_links_parameters_win_over_lighter_defaults_and_are_said() {
+    let mut app = new_app();
+    let sets = [("runs", "1"), ("groups_per_decade", "14"), ("f_limit", "0.3")];
+    app.lighten_defaults("mass-distribution", &sets, "starts lighter").expect("lighter");
+    let open = |app: &mut GrainscopeApp, query: &str| match grainscope::links::open(query).expect("link") {
+        grainscope::links::Opened::Preset(preset, name) => app.apply(Command::ApplyPreset(preset, name)),
+        _ => panic!("{query} opens no preset"),
+    };
+    open(&mut app, "?scene=mass-distribution&runs=1&groups_per_decade=14&f_limit=0.3");
+    assert_eq!(app.state.lighter_note().as_deref(), Some("starts lighter"));
+    open(&mut app, "?scene=mass-distribution&groups_per_decade=60&runs=4&f_limit=0.3");
+    let p = app.state.params();
+    assert_eq!(p.get("groups_per_decade"), Some(60.0.into()));
+    assert_eq!(p.get("runs"), Some(4usize.into()));
+    let note = app.state.lighter_note().expect("a note");
+    assert!(note.starts_with("Runs as set:") && note.contains("runs 4") && note.contains("60"), "{note}");
+    assert!(!note.contains("f = 0.3") && !note.contains("starts lighter"), "{note}");
+    // A scene without lighter defaults says nothing.
+    open(&mut app, "?preset=ice-bounce-8ms");
+    assert_eq!(app.state.lighter_note(), None);
+}
+
+/// A platform without typed paths (the browser) shows no path fields: no
+/// preset path with its Load and Save, no data path, no export folder; the
+/// desktop shows them.
+#[test]
+fn a_platform_without_paths_shows_no_path_fields() {
+    let build = |app: GrainscopeApp| {
+        let mut h = Harness::builder()
+            .with_size(egui::vec2(1400.0, 1000.0))
+            .build_ui_state(|ui, app: &mut GrainscopeApp| app.show(ui), app);
+        h.run();
+        h
+    };
+    let desktop = build(new_app());
+    desktop.get_by_label("Load");
+    desktop.get_by_label("export folder");
+    let page = build(GrainscopeApp::new(
+        egui::Context::default(),
+        Box::new(grainscope::app::platform::NullPlatform::default()),
+    ));
+    page.get_by_label("Open preset…");
+    for label in ["Load", "Save", "export folder", "or path", "Load data"] {
+        assert!(page.query_by_label(label).is_none(), "{label} is shown");
+    }
+}
+
+/// A phone's screen (390 × 844 points): the figure takes the width, the
+/// parameters wait in a drawer that the bar's "Parameters" opens in place
+/// of the figures and closes again; held sideways (844 × 390) as well.
+#[test]
+fn a_phones_screen_shows_the_figure_across_and_the_parameters_in_a_drawer() {
+    for (w, h) in [(390.0, 844.0), (844.0, 390.0)] {
+        let mut h = harness_sized(w, h);
+        h.run();
+        assert!(h.query_by_label("Reset to defaults").is_none(), "{w}: the parameters are out of the way");
+        let area = h.state().plot_area().expect("a plot");
+        assert!(area.width() > 0.6 * w && area.right() <= w, "{w}: the plots span {area:?}");
+        h.get_by(|n| n.role() != Role::Label && n.label().as_deref() == Some("Parameters")).click();
+        h.run();
+        h.get_by_label("Reset to defaults");
+        assert!(h.state().state.drawer);
+        h.get_by(|n| n.role() != Role::Label && n.label().as_deref() == Some("Parameters")).click();
+        h.run();
+        assert!(h.query_by_label("Reset to defaults").is_none(), "{w}: the drawer closes");
+    }
+}

@@ -56,6 +56,14 @@ else
     echo "(no npm: the module is not optimised by binaryen and is about 15 % larger)" >&2
 fi
 cp web/index.html web/worker.js "$staging/"
+# The page loads the module gzipped and unpacks it itself (index.html), so
+# that any static server sends a third of its bytes; the plain module stays
+# for browsers without DecompressionStream.
+gzip -9 -n -c "$staging/grainscope_bg.wasm" >"$staging/grainscope_bg.wasm.gz"
+# The service worker keeps the files of this version, named by their hash.
+version=$(cat "$staging"/index.html "$staging"/grainscope.js "$staging"/grainscope_bg.wasm.gz "$staging"/worker.js |
+    sha256sum | cut -c1-16)
+sed "s/@VERSION@/$version/" web/sw.js >"$staging/sw.js"
 chmod 755 "$staging"
 rm -rf web/dist
 mv "$staging" web/dist

@@ -90,8 +90,13 @@ impl AppState {
                 if !self.movie_running {
                     let preset = self.current_preset();
                     self.movie_running = true;
-                    self.status = format!("writing the movie to {}…", self.movie_folder());
-                    fx.push(Effect::Submit(Job::Movie { preset: Box::new(preset), frames: 48 }));
+                    let sheet = !self.paths;
+                    self.status = if sheet {
+                        "making the movie (one animated PNG of every figure)…".to_string()
+                    } else {
+                        format!("writing the movie to {}…", self.movie_folder())
+                    };
+                    fx.push(Effect::Submit(Job::Movie { preset: Box::new(preset), frames: 48, sheet }));
                 }
             }
             Command::Pin => self.pin_current(),
@@ -135,6 +140,7 @@ impl AppState {
             Command::SetPalette(filter) => self.palette = filter,
             Command::SetLecture(on) => self.session.lecture = on,
             Command::SetLectureParams(on) => self.lecture_params = on,
+            Command::SetDrawer(open) => self.drawer = open,
             Command::SetHelp(on) => self.help = on,
             Command::HideLink => self.link = None,
             Command::SetText(field, text) => match field {

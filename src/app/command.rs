@@ -186,9 +186,10 @@ impl Action {
             Action::Palette => ("Commands", "find and run any command by name"),
             Action::Pin => ("Pin", "keep the scene's curves to compare with the next change"),
             Action::ClearPins => ("Clear pins", "remove the scene's pinned curves"),
-            Action::Movie => {
-                ("Movie", "write 48 frames of the history (PNG) and an animated PNG into the export folder")
-            }
+            Action::Movie => (
+                "Movie",
+                "write 48 frames of the history (PNG) and an animated PNG into the export folder (in a browser: one animated PNG of every figure)",
+            ),
             Action::ResetAll => ("Reset all", "every scene's parameters to their defaults (Undo brings them back)"),
             Action::OpenFile => ("Open…", "open a preset, deck, exported figure or measurements file"),
             Action::SavePreset => ("Save preset…", "save this scene's state as a preset file"),
@@ -366,6 +367,8 @@ pub enum Command {
     SetLecture(bool),
     /// The parameter panel over the plots in lecture mode on or off.
     SetLectureParams(bool),
+    /// On a phone's screen: the parameters drawer open (over the figures) or closed.
+    SetDrawer(bool),
     /// The shortcut list on or off.
     SetHelp(bool),
     /// The command palette open with this filter text, or closed (None).

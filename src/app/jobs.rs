@@ -109,12 +109,16 @@ pub enum Job {
         /// Prefix of every file name.
         prefix: String,
     },
-    /// A played history as frames and an animated PNG per figure.
+    /// A played history as frames and an animated PNG per figure, or (with
+    /// `sheet`) as one animated PNG of every figure.
     Movie {
         /// The scene's state.
         preset: Box<Preset>,
         /// Frames per figure.
         frames: usize,
+        /// One file (a platform that saves by downloads) rather than a folder.
+        #[serde(default)]
+        sheet: bool,
     },
 }
 
@@ -265,11 +269,16 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
             }
             Ok(Done::Files("export".into(), files))
         }
-        Job::Movie { preset, frames } => {
-            let files = crate::handout::movie_files(&preset, frames, None, true, 12, &|| progress.cancelled())
-                .map_err(
-                    |e| if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) },
-                )?;
+        Job::Movie { preset, frames, sheet } => {
+            let failed = |e: anyhow::Error| {
+                if progress.cancelled() { JobError::Cancelled } else { JobError::Failed(format!("{e:#}")) }
+            };
+            let files = if sheet {
+                vec![crate::handout::movie_sheet(&preset, frames, 12, &|| progress.cancelled()).map_err(failed)?]
+            } else {
+                crate::handout::movie_files(&preset, frames, None, true, 12, &|| progress.cancelled())
+                    .map_err(failed)?
+            };
             Ok(Done::Files("movie".into(), files))
         }
     }

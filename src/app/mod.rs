@@ -69,8 +69,9 @@ impl GrainscopeApp {
     /// browser's Web Worker, for example).
     pub fn with_runner(platform: Box<dyn Platform>, runner: Box<dyn Runner>) -> Self {
         let n = crate::scene::SCENES.len();
+        let state = AppState { paths: platform.paths(), ..AppState::default() };
         GrainscopeApp {
-            state: AppState::default(),
+            state,
             memo: Memo::default(),
             computing: Computing { requested: vec![None; n], ..Computing::default() },
             runner,
@@ -96,6 +97,7 @@ impl GrainscopeApp {
             *p = lighter;
         }
         self.state.default_notes[i] = Some(note.to_string());
+        self.state.lighter_keys[i] = sets.iter().map(|(key, _)| key.to_string()).collect();
         Ok(())
     }
 
@@ -244,6 +246,11 @@ impl GrainscopeApp {
     pub fn show(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         self.poll(&ctx);
+        // A phone's screen: one column, the parameters in a drawer (not in
+        // lecture mode or presenting, whose layouts are the projector's).
+        let presenting = self.state.presenter.is_some();
+        self.memo.compact = ui::compact(ctx.content_rect().size()) && !self.state.session.lecture && !presenting;
+        let compact = self.memo.compact;
         ui::look::apply(&ctx, &mut self.memo, self.state.session.lecture, self.state.session.light);
         // The keyboard shortcuts; none while a text field has the keyboard.
         if !ctx.egui_wants_keyboard_input() {
@@ -265,7 +272,6 @@ impl GrainscopeApp {
             self.apply(Command::Clock(now - before));
             ctx.request_repaint_after(std::time::Duration::from_secs(1));
         }
-        let presenting = self.state.presenter.is_some();
         egui::Panel::top("top").show(ui, |ui| {
             self.panel(|cx| if presenting { ui::presenter::bar(ui, cx) } else { ui::top_bar::show(ui, cx) })
         });
@@ -283,7 +289,7 @@ impl GrainscopeApp {
                 .exact_size(height)
                 .show(ui, |ui| self.panel(|cx| ui::presenter::notes(ui, cx)));
         }
-        if !self.state.session.lecture {
+        if !self.state.session.lecture && !compact {
             // A width the user drags within bounds: never more than ~40 % of
             // the window, so that the figures keep the larger part of it.
             let widest = (0.4 * ctx.content_rect().width()).max(320.0);
@@ -304,8 +310,20 @@ impl GrainscopeApp {
             );
         }
         self.request();
-        let figures =
-            egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx))).response.rect;
+        let figures = if compact && self.state.drawer {
+            // The drawer: the parameters over the whole width, in place of the figures.
+            egui::CentralPanel::default()
+                .show(ui, |ui| {
+                    egui::ScrollArea::vertical()
+                        .id_salt("drawer")
+                        .auto_shrink([false, false])
+                        .show(ui, |ui| self.panel(|cx| ui::scene_panel::show(ui, cx)));
+                })
+                .response
+                .rect
+        } else {
+            egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx))).response.rect
+        };
         if self.state.session.lecture && self.state.lecture_params {
             let mut open = true;
             egui::Window::new("Parameters")

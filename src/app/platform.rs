@@ -80,6 +80,13 @@ pub trait Platform {
     fn save_session(&mut self, bytes: &[u8]) -> Result<(), String>;
     /// Seconds since an arbitrary start, never going back.
     fn now(&self) -> f64;
+    /// Whether the user can name files and folders by path (a typed preset
+    /// or data path, an export folder). A browser cannot: it saves by
+    /// downloads and opens by its file picker or a drop, and the window
+    /// shows no path fields there.
+    fn paths(&self) -> bool {
+        true
+    }
     /// Offers a link to the present state, `query` being its query part
     /// (see [`crate::links`]): the whole address and where it went, or why
     /// there is none.
@@ -105,6 +112,9 @@ pub struct NullPlatform {
 }
 
 impl Platform for NullPlatform {
+    fn paths(&self) -> bool {
+        false
+    }
     fn pick_file(&mut self, _kind: FileKind) {
         self.answers.push(Answer::Cancelled);
     }

@@ -263,6 +263,11 @@ pub struct AppState {
     /// Where a platform starts a scene from lighter defaults than the
     /// scene's own: what it says about them, in the order of [`SCENES`].
     pub default_notes: Vec<Option<String>>,
+    /// The parameters (keys) the lighter defaults of [`AppState::default_notes`]
+    /// change, in the order of [`SCENES`].
+    pub lighter_keys: Vec<Vec<String>>,
+    /// Whether the platform takes typed paths ([`crate::app::platform::Platform::paths`]).
+    pub paths: bool,
     /// Every scene's last good result, in the order of [`SCENES`].
     pub outputs: Vec<Option<Arc<SceneOutput>>>,
     /// The status line.
@@ -281,6 +286,8 @@ pub struct AppState {
     pub locked: Option<HashMap<String, View>>,
     /// Whether the parameter panel is open over the plots in lecture mode.
     pub lecture_params: bool,
+    /// On a phone's screen, whether the parameters drawer covers the figures.
+    pub drawer: bool,
     /// Playing the open scene's history.
     pub playback: Playback,
     /// Scenes (by index) whose optional time-cursor marks are shown: those
@@ -320,6 +327,31 @@ impl Default for AppState {
 }
 
 impl AppState {
+    /// What the current scene says about the platform's lighter defaults:
+    /// their note while the scene runs at them; where a link, a preset or the
+    /// user set any of those parameters otherwise, what it runs instead.
+    pub fn lighter_note(&self) -> Option<String> {
+        let i = self.index();
+        let note = self.default_notes[i].as_ref()?;
+        let (p, d) = (self.params(), &self.defaults[i]);
+        let differing: Vec<String> = self.lighter_keys[i]
+            .iter()
+            .filter(|k| p.get(k) != d.get(k))
+            .filter_map(|k| {
+                let (spec, value) = (p.spec(k)?, p.get(k)?);
+                Some(format!("{} {}", spec.label, spec.display(&value)))
+            })
+            .collect();
+        Some(if differing.is_empty() {
+            note.clone()
+        } else {
+            format!(
+                "Runs as set: {}, heavier than the browser's lighter start (it computes on one thread, so this can take minutes).",
+                differing.join(", ")
+            )
+        })
+    }
+
     /// The state of a window opening `session`.
     pub fn new(session: Session) -> Self {
         let n = SCENES.len();
@@ -327,6 +359,8 @@ impl AppState {
             session,
             defaults: SCENES.iter().filter_map(|s| SceneParams::default_for(s.id)).collect(),
             default_notes: vec![None; n],
+            lighter_keys: vec![Vec::new(); n],
+            paths: true,
             outputs: vec![None; n],
             status: String::new(),
             error: None,
@@ -336,6 +370,7 @@ impl AppState {
             matters: Matters::default(),
             locked: None,
             lecture_params: false,
+            drawer: false,
             playback: Playback::default(),
             timeline_shown: HashSet::new(),
             history: History::default(),

@@ -114,6 +114,11 @@ async fn answer_for(kind: FileKind, file: web_sys::File) -> Answer {
 }
 
 impl Platform for WebPlatform {
+    /// Files go to the downloads and come from the picker or a drop.
+    fn paths(&self) -> bool {
+        false
+    }
+
     fn pick_file(&mut self, kind: FileKind) {
         let (answers, wake) = (Rc::clone(&self.answers), Rc::clone(&self.wake));
         let input = web_sys::window()

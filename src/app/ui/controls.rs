@@ -47,13 +47,15 @@ fn measurements(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         {
             cx.send(Command::Pick(FileKind::Measurements));
         }
-        let label = ui.label("or path");
-        let mut path = cx.state.session.data_path.clone();
-        if ui.text_edit_singleline(&mut path).labelled_by(label.id).changed() {
-            cx.send(Command::SetText(Field::DataPath, path));
-        }
-        if ui.button("Load data").clicked() {
-            cx.send(Command::LoadDataPath);
+        if cx.state.paths {
+            let label = ui.label("or path");
+            let mut path = cx.state.session.data_path.clone();
+            if ui.text_edit_singleline(&mut path).labelled_by(label.id).changed() {
+                cx.send(Command::SetText(Field::DataPath, path));
+            }
+            if ui.button("Load data").clicked() {
+                cx.send(Command::LoadDataPath);
+            }
         }
     });
 }

@@ -63,6 +63,7 @@ fn strip(
     alone: Option<usize>,
     fits: bool,
     lecture: bool,
+    compact: bool,
 ) -> Option<Command> {
     let text = super::look::body_size(lecture);
     let mut picked = None;
@@ -80,8 +81,9 @@ fn strip(
         .zip(&shorts)
         .map(|((_, t), s)| if shorts.iter().filter(|o| *o == s).count() > 1 { t.clone() } else { s.clone() })
         .collect();
-    // Many panels (a grid of experiments): a menu instead of a strip of tabs.
-    if ids.len() > 4 {
+    // Many panels (a grid of experiments), or a phone's width: a menu
+    // instead of a strip of tabs.
+    if ids.len() > 4 || compact {
         ui.horizontal(|ui| {
             let label = ui.label(egui::RichText::new("Show").size(text));
             let shown = alone.and_then(|k| names.get(k).cloned()).unwrap_or_else(|| "all panels".into());
@@ -146,7 +148,12 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
         ui.add(egui::Label::new(text).wrap());
     }
     let lecture = state.session.lecture;
-    if !lecture {
+    let compact = cx.memo.compact;
+    if compact {
+        // A phone: the transport on lines of its own, no axis lock (a
+        // swipe over a plot scrolls rather than pans).
+        super::transport::row(ui, cx);
+    } else if !lecture {
         ui.horizontal_wrapped(|ui| {
             lock_axes(ui, cx);
             ui.separator();
@@ -216,7 +223,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
     };
     // (A slide that enlarges a figure shows it alone, the others a click away.)
     if n_panels > 1
-        && let Some(c) = strip(ui, &ids, alone, fits, lecture)
+        && let Some(c) = strip(ui, &ids, alone, fits, lecture, compact)
     {
         cx.out.push(c);
     }
@@ -243,6 +250,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
         commands.push(Command::LockAxes(locked_views.clone()));
     }
     let mut export_dir = state.session.export_dir.clone();
+    let save_hint = if state.paths { "save into the export folder" } else { "download" };
     let mut legends_shown: Vec<Vec<(String, figure::Style, [u8; 3])>> = Vec::new();
     let memo = &mut *cx.memo;
     let stale = cx.work.stale;
@@ -281,7 +289,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
                 }
                 ui.horizontal(|ui| {
                     for ext in ["png", "svg", "csv"] {
-                        if ui.small_button(ext.to_uppercase()).on_hover_text("save into the export folder").clicked() {
+                        if ui.small_button(ext.to_uppercase()).on_hover_text(save_hint).clicked() {
                             commands.push(Command::ExportFigure(Box::new(drawn(fig)), ext));
                         }
                     }
@@ -302,10 +310,12 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
                         return;
                     }
                     ui.small("play the collision or move its time above the plots");
-                    ui.horizontal(|ui| {
-                        let label = ui.label("export folder");
-                        ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
-                    });
+                    if state.paths {
+                        ui.horizontal(|ui| {
+                            let label = ui.label("export folder");
+                            ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);
+                        });
+                    }
                 });
             }
             (None, None) => {
@@ -356,7 +366,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
             });
         }
     });
-    if trajectory.is_none() && !lecture {
+    if trajectory.is_none() && !lecture && state.paths {
         ui.horizontal(|ui| {
             let label = ui.label("export folder");
             ui.text_edit_singleline(&mut export_dir).labelled_by(label.id);

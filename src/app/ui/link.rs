@@ -26,7 +26,8 @@ pub fn card(ctx: &egui::Context, cx: &mut Cx<'_>) {
             ui.add_space(6.0);
             match &link.modules {
                 Some(modules) => {
-                    let side = (screen.height() - 260.0).clamp(160.0, 420.0);
+                    // Within the card on a phone's narrow screen as well.
+                    let side = (screen.height() - 260.0).clamp(160.0, 420.0).min(screen.width() * 0.8 - 24.0);
                     ui.vertical_centered(|ui| draw(ui, modules, side));
                 }
                 None => {

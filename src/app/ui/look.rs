@@ -13,11 +13,12 @@ pub fn apply(ctx: &egui::Context, memo: &mut Memo, lecture: bool, light: bool) {
         memo.fonts_installed = true;
         install_fonts(ctx);
     }
-    let want = (lecture, light);
+    let compact = memo.compact;
+    let want = (lecture, light, compact);
     if memo.look_applied == Some(want) {
         return;
     }
-    let lecture_changed = memo.look_applied.is_none_or(|(l, _)| l != want.0);
+    let lecture_changed = memo.look_applied.is_none_or(|(l, _, _)| l != want.0);
     memo.look_applied = Some(want);
     let light = want.0 || want.1;
     ctx.set_theme(if light { egui::Theme::Light } else { egui::Theme::Dark });
@@ -33,7 +34,9 @@ pub fn apply(ctx: &egui::Context, memo: &mut Memo, lecture: bool, light: bool) {
             (TextStyle::Monospace, FontId::new(sizes[4], FontFamily::Monospace)),
         ]
         .into();
-        style.spacing.interact_size.y = if lecture { 26.0 } else { 18.0 };
+        style.spacing.interact_size.y = if lecture || compact { 26.0 } else { 18.0 };
+        // On a phone a swipe scrolls; it does not select the text it starts on.
+        style.interaction.selectable_labels = !compact;
     });
     if lecture {
         // High contrast: black text on white, strong strokes.

@@ -41,6 +41,13 @@ pub struct Work {
     pub pausable: bool,
 }
 
+/// Whether a window of this size is a phone's screen (portrait or
+/// landscape): narrower than 640 points or lower than 480. The figures then
+/// take the whole width and the parameters open in a drawer over them.
+pub fn compact(size: egui::Vec2) -> bool {
+    size.x < 640.0 || size.y < 480.0
+}
+
 /// What the panels remember between frames that is not state: layout of
 /// the last frame and values kept so as not to compute them every frame.
 #[derive(Default)]
@@ -53,8 +60,11 @@ pub struct Memo {
     pub shipped_menu: Option<Vec<(crate::scene::Chapter, String, &'static str, &'static str)>>,
     /// The monomer card last shown and its derived values.
     pub card: Option<(Card, Vec<Scalar>)>,
-    /// The (lecture, light) look last applied to the context.
-    pub look_applied: Option<(bool, bool)>,
+    /// The (lecture, light, compact) look last applied to the context.
+    pub look_applied: Option<(bool, bool, bool)>,
+    /// Whether this frame lays the window out for a phone's screen
+    /// ([`compact`]): one column, the parameters in a drawer.
+    pub compact: bool,
     /// Whether the bundled font was given to the context.
     pub fonts_installed: bool,
     /// The stroke of ink being drawn (points as fractions of the window).

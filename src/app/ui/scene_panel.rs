@@ -12,11 +12,16 @@ use crate::sensitivity::Knob;
 
 /// The whole side panel.
 pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
-    navigator(ui, cx, 230.0);
+    // On a phone the navigator stays in the bar above the drawer.
+    if !cx.memo.compact {
+        navigator(ui, cx, 230.0);
+    }
     let info = cx.state.params().info();
     ui.small(format!("{} · {}", scene::chapter(cx.state.index()).heading, info.source));
-    headline(ui, cx);
-    if let Some(note) = &cx.state.default_notes[cx.state.index()] {
+    if !cx.memo.compact {
+        headline(ui, cx);
+    }
+    if let Some(note) = cx.state.lighter_note() {
         ui.add(egui::Label::new(egui::RichText::new(note).small().weak()).wrap());
     }
     ui.separator();
@@ -99,7 +104,7 @@ pub fn headline(ui: &mut egui::Ui, cx: &Cx<'_>) {
     if text.is_empty() {
         return;
     }
-    ui.label(egui::RichText::new(text).size(20.0).strong());
+    ui.add(egui::Label::new(egui::RichText::new(text).size(20.0).strong()).wrap());
 }
 
 /// The scene's numbers and notes.

@@ -18,22 +18,40 @@ pub fn notices(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
 
 /// The status line along the bottom.
 pub fn bar(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
-    ui.horizontal(|ui| {
-        let work = cx.work;
-        if work.running {
-            ui.add(egui::ProgressBar::new(work.progress as f32).desired_width(160.0).show_percentage());
-            if work.pausable && ui.button(if work.paused { "Resume" } else { "Pause" }).clicked() {
-                cx.send(Command::PauseJob(!work.paused));
-            }
-            if ui.button("Cancel").clicked() {
-                cx.send(Command::CancelJob);
-            }
+    // On a phone the message has a line of its own below the progress.
+    if cx.memo.compact {
+        ui.vertical(|ui| {
+            ui.horizontal(|ui| progress(ui, cx));
+            message(ui, cx);
+        });
+    } else {
+        ui.horizontal(|ui| {
+            progress(ui, cx);
+            message(ui, cx);
+        });
+    }
+}
+
+/// The running job's progress, with Pause (where it can) and Cancel.
+fn progress(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let work = cx.work;
+    if work.running {
+        ui.add(egui::ProgressBar::new(work.progress as f32).desired_width(160.0).show_percentage());
+        if work.pausable && ui.button(if work.paused { "Resume" } else { "Pause" }).clicked() {
+            cx.send(Command::PauseJob(!work.paused));
         }
-        // Long messages wrap instead of running off the window's edge.
-        if let Some(e) = &cx.state.error {
-            ui.add(egui::Label::new(egui::RichText::new(e).color(egui::Color32::from_rgb(200, 40, 40))).wrap());
-        } else {
-            ui.add(egui::Label::new(&cx.state.status).wrap());
+        if ui.button("Cancel").clicked() {
+            cx.send(Command::CancelJob);
         }
-    });
+    }
+}
+
+/// The last error, else the status; long messages wrap instead of running
+/// off the window's edge.
+fn message(ui: &mut egui::Ui, cx: &Cx<'_>) {
+    if let Some(e) = &cx.state.error {
+        ui.add(egui::Label::new(egui::RichText::new(e).color(egui::Color32::from_rgb(200, 40, 40))).wrap());
+    } else {
+        ui.add(egui::Label::new(&cx.state.status).wrap());
+    }
 }

@@ -12,6 +12,10 @@ use crate::scene::{self, SCENES};
 
 /// The bar above the plots outside presenter mode.
 pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    if cx.memo.compact {
+        phone(ui, cx);
+        return;
+    }
     let session = &cx.state.session;
     if session.lecture {
         ui.horizontal(|ui| {
@@ -53,21 +57,23 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         if ui.button("Save preset…").clicked() {
             cx.send(Command::SavePresetAs);
         }
-        let mut path = cx.state.session.preset_path.clone();
-        if ui
-            .add(egui::TextEdit::singleline(&mut path).desired_width(220.0).hint_text("preset path"))
-            .on_hover_text(
-                "path for Load/Save when no file dialog is available; presets can also be dropped on the window",
-            )
-            .changed()
-        {
-            cx.send(Command::SetText(Field::PresetPath, path.clone()));
-        }
-        if ui.button("Load").clicked() {
-            cx.send(Command::OpenPath(path));
-        }
-        if ui.button("Save").clicked() {
-            cx.send(Command::SavePresetPath);
+        if cx.state.paths {
+            let mut path = cx.state.session.preset_path.clone();
+            if ui
+                .add(egui::TextEdit::singleline(&mut path).desired_width(220.0).hint_text("preset path"))
+                .on_hover_text(
+                    "path for Load/Save when no file dialog is available; presets can also be dropped on the window",
+                )
+                .changed()
+            {
+                cx.send(Command::SetText(Field::PresetPath, path.clone()));
+            }
+            if ui.button("Load").clicked() {
+                cx.send(Command::OpenPath(path));
+            }
+            if ui.button("Save").clicked() {
+                cx.send(Command::SavePresetPath);
+            }
         }
         ui.menu_button("Shipped presets", |ui| presets_menu(ui, cx));
         ui.separator();
@@ -100,6 +106,51 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         }
         super::classroom::menu(ui, cx, false);
     });
+}
+
+/// The bar on a phone's screen: the parameters drawer's button, the scene
+/// navigator and a menu of the rest; below them the headline result.
+fn phone(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
+    let screen = ui.ctx().content_rect().width();
+    ui.horizontal_wrapped(|ui| {
+        let mut open = cx.state.drawer;
+        if ui.toggle_value(&mut open, "Parameters").on_hover_text("the parameters in place of the figures").changed() {
+            cx.send(Command::SetDrawer(open));
+        }
+        ui.menu_button("More", |ui| {
+            if ui.button("Open preset…").clicked() {
+                cx.send(Command::Pick(FileKind::Preset));
+            }
+            if ui.button("Save preset…").clicked() {
+                cx.send(Command::SavePresetAs);
+            }
+            ui.menu_button("Shipped presets", |ui| presets_menu(ui, cx));
+            ui.menu_button("Present", |ui| decks_menu(ui, cx));
+            let mut light = cx.state.session.light;
+            if ui.checkbox(&mut light, "Light theme").changed() {
+                cx.send(Command::SetLight(light));
+            }
+            let (undo, redo) = cx.state.history.depth();
+            if ui.add_enabled(undo > 0, egui::Button::new("Undo")).clicked() {
+                cx.send(Command::Act(Action::Undo));
+            }
+            if ui.add_enabled(redo > 0, egui::Button::new("Redo")).clicked() {
+                cx.send(Command::Act(Action::Redo));
+            }
+            for action in [Action::ResetAll, Action::CopyLink, Action::Palette, Action::Help] {
+                action_button(ui, cx, action, action.text().name);
+            }
+        });
+        // Beside the buttons where it fits (a phone held sideways).
+        if screen > 600.0 {
+            navigator(ui, cx, 320.0);
+        }
+    });
+    if screen <= 600.0 {
+        // ◀, "Scene" and ▶ take about 110 points beside the list.
+        navigator(ui, cx, (screen - 130.0).max(100.0));
+    }
+    headline(ui, cx);
 }
 
 /// A tooltip for `action` in the explorer: what it does and its keys, from the action table.

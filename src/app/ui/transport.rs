@@ -38,7 +38,13 @@ fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, label: &str) {
             cx.send(Command::StopPlaying);
             t = playback::step(t, 1.0);
         }
-        let width = if lecture { 200.0 } else { 160.0 };
+        let width = if lecture {
+            200.0
+        } else if cx.memo.compact {
+            100.0
+        } else {
+            160.0
+        };
         ui.spacing_mut().slider_width = width;
         let scrub =
             ui.add(egui::Slider::new(&mut t, 0.0..=1.0).show_value(false)).on_hover_text("scrub through the history");

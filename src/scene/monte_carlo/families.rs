@@ -55,7 +55,26 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
+    const DECLARED: &'static [crate::scene::core::Declared] = &[
+        super::common::EVENT_COUNT,
+        super::common::FAMILY_COUNT,
+        super::common::EROSION_ONSET,
+        super::common::STOP_OUT_OF_REACH,
+        crate::scene::core::Declared {
+            scalar: "*",
+            parameter: "t_first_yr",
+            kind: crate::scene::core::Irregularity::Ignored,
+            why: "it sets only when the first dots are drawn: the scalars come from the end of the runs",
+            resolution: None,
+        },
+        crate::scene::core::Declared {
+            scalar: "*",
+            parameter: "track",
+            kind: crate::scene::core::Irregularity::Ignored,
+            why: "it only draws the semi-analytical track beside the runs",
+            resolution: None,
+        },
+    ];
     const PAUSABLE: bool = true;
 
     fn inspect(&self, out: &SceneOutput, figure: &str, at: [f64; 2]) -> Option<Inspection> {
@@ -162,5 +181,20 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
         figures: vec![fig],
         notes,
         extra: crate::scene::core::Extra::None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The scene declares what every column declares, and its own two
+    /// display parameters.
+    #[test]
+    fn the_scene_declares_what_every_column_declares() {
+        let own = <Params as Scene>::DECLARED;
+        let shared = super::super::common::COLUMN_DECLARED;
+        assert_eq!(&own[..shared.len()], shared);
+        assert_eq!(own.len(), shared.len() + 2);
     }
 }

@@ -35,8 +35,13 @@ fn rgb(c: [u8; 3], faded: bool) -> Color32 {
 /// top where there is room, else along the bottom.
 fn provisional(ui: &egui::Ui, frame: Rect, look: Look, legend: Option<Rect>) {
     let painter = ui.painter_at(frame);
-    let text = "provisional: the full result is computing";
-    let galley = painter.layout_no_wrap(text.into(), egui::FontId::proportional(look.text), Color32::BLACK);
+    let font = egui::FontId::proportional(look.text);
+    let mut galley =
+        painter.layout_no_wrap("provisional: the full result is computing".into(), font.clone(), Color32::BLACK);
+    // A narrow plot (a phone) gets the short form.
+    if galley.size().x + 28.0 > frame.width() {
+        galley = painter.layout_no_wrap("provisional".into(), font, Color32::BLACK);
+    }
     let size = galley.size() + Vec2::new(16.0, 8.0);
     let at = |x: f32, y: f32| Rect::from_min_size(egui::pos2(x, y), size);
     let top = at(frame.center().x - size.x / 2.0, frame.top() + 6.0);

@@ -246,12 +246,14 @@ impl GrainscopeApp {
     pub fn show(&mut self, ui: &mut egui::Ui) {
         let ctx = ui.ctx().clone();
         self.poll(&ctx);
-        // A phone's screen: one column, the parameters in a drawer (not in
-        // lecture mode or presenting, whose layouts are the projector's).
+        // A phone's screen: one column, the parameters in a drawer (not
+        // while presenting a deck, whose layout is the projector's).
         let presenting = self.state.presenter.is_some();
-        self.memo.compact = ui::compact(ctx.content_rect().size()) && !self.state.session.lecture && !presenting;
+        // lecture mode is the projector's: a phone keeps its layout and look.
+        self.memo.compact = ui::compact(ctx.content_rect().size()) && !presenting;
         let compact = self.memo.compact;
-        ui::look::apply(&ctx, &mut self.memo, self.state.session.lecture, self.state.session.light);
+        let lecture = self.state.session.lecture && !compact;
+        ui::look::apply(&ctx, &mut self.memo, lecture, self.state.session.light);
         // The keyboard shortcuts; none while a text field has the keyboard.
         if !ctx.egui_wants_keyboard_input() {
             let mode = if self.state.presenter.is_some() { Mode::Presenter } else { Mode::Explorer };
@@ -280,7 +282,7 @@ impl GrainscopeApp {
         }
         // In lecture mode the status line shows only while something runs
         // or went wrong, so that the plots keep the bottom of the screen.
-        if !self.state.session.lecture || self.work().running || self.state.error.is_some() {
+        if !lecture || self.work().running || self.state.error.is_some() {
             egui::Panel::bottom("status").show(ui, |ui| self.panel(|cx| ui::status::bar(ui, cx)));
         }
         if self.state.presenter.as_ref().is_some_and(|p| p.notes) {
@@ -289,7 +291,7 @@ impl GrainscopeApp {
                 .exact_size(height)
                 .show(ui, |ui| self.panel(|cx| ui::presenter::notes(ui, cx)));
         }
-        if !self.state.session.lecture && !compact {
+        if !lecture && !compact {
             // A width the user drags within bounds: never more than ~40 % of
             // the window, so that the figures keep the larger part of it.
             let widest = (0.4 * ctx.content_rect().width()).max(320.0);
@@ -324,7 +326,7 @@ impl GrainscopeApp {
         } else {
             egui::CentralPanel::default().show(ui, |ui| self.panel(|cx| ui::figures::show(ui, cx))).response.rect
         };
-        if self.state.session.lecture && self.state.lecture_params {
+        if lecture && self.state.lecture_params {
             let mut open = true;
             egui::Window::new("Parameters")
                 .open(&mut open)

@@ -29,7 +29,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         panels(ui, cx, Some(rungs));
         return;
     }
-    let text = super::look::body_size(cx.state.session.lecture);
+    let text = super::look::body_size(cx.lecture());
     // The figure shown alone (a slide's enlarged one, or the user's pick):
     // its rung is scrolled into view.
     let alone = match &cx.state.presenter {
@@ -147,7 +147,7 @@ fn panels(ui: &mut egui::Ui, cx: &mut Cx<'_>, ladder: Option<Arc<Vec<scene::Rung
         let text = egui::RichText::new(format!("Warning: {warning}")).color(ui.visuals().warn_fg_color).strong();
         ui.add(egui::Label::new(text).wrap());
     }
-    let lecture = state.session.lecture;
+    let lecture = cx.lecture();
     let compact = cx.memo.compact;
     if compact {
         // A phone: the transport on lines of its own, no axis lock (a

@@ -21,7 +21,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let offset = egui::vec2(if right { -12.0 } else { 12.0 }, if bottom { -36.0 } else { 60.0 });
     let mut open = true;
     let mut chosen: Option<(SceneParams, String)> = None;
-    let lecture = cx.state.session.lecture;
+    let lecture = cx.lecture();
     let text = super::look::body_size(lecture);
     egui::Window::new("Inspect")
         .open(&mut open)

@@ -19,7 +19,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     if !m.open {
         return;
     }
-    let lecture = cx.state.session.lecture;
+    let lecture = cx.lecture();
     let text = super::look::body_size(lecture);
     let factor = m.factor;
     let scalars: Vec<(&'static str, &'static str, &'static str)> =

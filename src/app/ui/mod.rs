@@ -86,6 +86,12 @@ pub struct Cx<'a> {
 }
 
 impl Cx<'_> {
+    /// Whether the lecture look applies: lecture mode, except on a phone's
+    /// screen, which keeps its own layout (lecture mode is the projector's).
+    pub fn lecture(&self) -> bool {
+        self.state.session.lecture && !self.memo.compact
+    }
+
     /// Reports a user action.
     pub fn send(&mut self, command: Command) {
         self.out.push(command);

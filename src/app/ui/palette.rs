@@ -50,7 +50,7 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
     let presenting = cx.state.presenter.is_some();
     let mode = if presenting { Mode::Presenter } else { Mode::Explorer };
     let found = matching(&filter, presenting);
-    let text_size = super::look::body_size(cx.state.session.lecture);
+    let text_size = super::look::body_size(cx.lecture());
     let mut text = filter;
     let mut run = None;
     let mut close = false;

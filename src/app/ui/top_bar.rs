@@ -16,8 +16,7 @@ pub fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>) {
         phone(ui, cx);
         return;
     }
-    let session = &cx.state.session;
-    if session.lecture {
+    if cx.lecture() {
         ui.horizontal(|ui| {
             navigator(ui, cx, 290.0);
             ui.separator();

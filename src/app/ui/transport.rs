@@ -19,7 +19,7 @@ fn show(ui: &mut egui::Ui, cx: &mut Cx<'_>, label: &str) {
     let Some(mut t) = cx.state.time() else { return };
     let before = t;
     let state = cx.state;
-    let lecture = state.session.lecture;
+    let lecture = cx.lecture();
     let mode = if state.presenter.is_some() { Mode::Presenter } else { Mode::Explorer };
     ui.horizontal_wrapped(|ui| {
         if ui.button("|◀").on_hover_text(shortcuts::hint(Action::Rewind, mode)).clicked() {

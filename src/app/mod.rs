@@ -247,9 +247,9 @@ impl GrainscopeApp {
         let ctx = ui.ctx().clone();
         self.poll(&ctx);
         // A phone's screen: one column, the parameters in a drawer (not
-        // while presenting a deck, whose layout is the projector's).
+        // while presenting a deck, whose layout is the projector's). Lecture
+        // mode is the projector's look: a phone keeps its own.
         let presenting = self.state.presenter.is_some();
-        // lecture mode is the projector's: a phone keeps its layout and look.
         self.memo.compact = ui::compact(ctx.content_rect().size()) && !presenting;
         let compact = self.memo.compact;
         let lecture = self.state.session.lecture && !compact;

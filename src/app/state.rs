@@ -346,7 +346,7 @@ impl AppState {
             note.clone()
         } else {
             format!(
-                "Runs as set: {}, heavier than the browser's lighter start (it computes on one thread, so this can take minutes).",
+                "Runs as set: {}, not the browser's lighter start (it computes on one thread: a heavier setting can take minutes).",
                 differing.join(", ")
             )
         })

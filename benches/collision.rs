@@ -3,6 +3,7 @@
 //! Run with `cargo bench --bench collision`. For each tolerance it prints the
 //! time per collision (median of repeated runs) and |e − e_ref|, where e_ref
 //! comes from a run at rtol = 1e-11; then the time of whole scenes.
+//! `cargo bench --bench collision -- solver` prints the solver's tables alone.
 
 use grainscope::physics::collision::{Options, Setup, collide, sticking_search};
 use grainscope::physics::crack::CrackLaw;
@@ -59,6 +60,9 @@ fn main() {
     viscous.t_vis = 1e-10;
     solver_table("viscous, T_vis = 1e-10 s", &viscous, 100.0);
 
+    if std::env::args().skip(1).any(|a| a == "solver") {
+        return;
+    }
     println!("\nscenes (default parameters, {} threads):", rayon::current_num_threads());
     let hysteresis = SceneParams::default_for("hysteresis").expect("scene");
     let t = time(|| scene::compute(&hysteresis, &Progress::default()).expect("scene"));

@@ -422,7 +422,8 @@ pub fn run(command: Command) -> Result<()> {
                         serde_json::json!({"key": r.key, "unit": r.unit, "value": r.value, "elasticity": r.elasticity,
                             "converged": r.converged, "low": r.range[0], "high": r.range[1],
                             "low_sd": r.range_sd[0], "high_sd": r.range_sd[1], "below_noise": r.below_noise,
-                            "low_status": r.range_status[0], "high_status": r.range_status[1]})
+                            "low_status": r.range_status[0], "high_status": r.range_status[1],
+                            "numerical": r.numerical})
                     })
                     .collect();
                 return say(serde_json::json!({"output": output, "value": m.here.mean, "sd": m.here.sd,

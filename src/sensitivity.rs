@@ -213,6 +213,12 @@ pub struct Influence {
     /// "refused or failed" (the point could not be computed).
     #[serde(default)]
     pub range_status: [String; 2],
+    /// Whether the parameter sets a numerical resolution or sample of the
+    /// method (a step, a count, a tolerance, a seed) rather than the physics:
+    /// a converged answer does not depend on it, and its row says how far
+    /// this one is from converged.
+    #[serde(default)]
+    pub numerical: bool,
 }
 
 /// What an end of a parameter's range is, where it has no value.
@@ -264,10 +270,13 @@ pub struct Knob {
     pub max: f64,
     /// Whether the control is logarithmic.
     pub log: bool,
+    /// Whether it sets a numerical resolution or sample of the method
+    /// rather than the physics (its spec's `numerical`).
+    pub numerical: bool,
 }
 
-/// The numeric parameters of `base` that change the physics (style-only
-/// ones aside).
+/// The numeric parameters of `base` that change a result (style-only ones
+/// aside); numerical resolutions among them say so.
 pub fn knobs(base: &SceneParams) -> Vec<Knob> {
     base.specs()
         .iter()
@@ -283,6 +292,7 @@ pub fn knobs(base: &SceneParams) -> Vec<Knob> {
                 min: *min,
                 max: *max,
                 log: *log,
+                numerical: s.numerical,
             }),
             _ => None,
         })
@@ -385,6 +395,7 @@ pub fn what_matters(base: &SceneParams, output: &str, factor: f64, progress: &Pr
                         end_status(points[k * offsets.len() + e].as_ref(), output, progress)
                     }
                 }),
+                numerical: knob.numerical,
             }
         })
         .collect();
@@ -392,9 +403,14 @@ pub fn what_matters(base: &SceneParams, output: &str, factor: f64, progress: &Pr
         let xs: Vec<f64> = [i.range[0], Some(x0), i.range[1]].into_iter().flatten().collect();
         xs.iter().copied().fold(f64::NEG_INFINITY, f64::max) - xs.iter().copied().fold(f64::INFINITY, f64::min)
     };
-    rows.sort_by(|a, b| spread(b).total_cmp(&spread(a)));
+    // The physics first, then the numerical resolutions, each by its spread.
+    rows.sort_by(|a, b| a.numerical.cmp(&b.numerical).then(spread(b).total_cmp(&spread(a))));
     Ok(Matters { here, rows })
 }
+
+/// The heading of the rows of numerical resolutions in a "what matters" table.
+pub const NUMERICAL_HEADING: &str =
+    "numerical resolution (a converged answer does not depend on these; their effect is the resolution error)";
 
 /// The "what matters" answer as an aligned text table (the command line's).
 pub fn matters_text(m: &Matters, output: &str, factor: f64) -> String {
@@ -408,7 +424,10 @@ pub fn matters_text(m: &Matters, output: &str, factor: f64) -> String {
     let _ =
         writeln!(t, "{:<26} {:>12} {:>11} {:>12} {:>12}", "parameter", "value", "elasticity", "X at p/f", "X at p*f");
     let num = |x: Option<f64>| x.map_or("-".to_string(), |x| format!("{x:.5e}"));
-    for r in &m.rows {
+    for (i, r) in m.rows.iter().enumerate() {
+        if r.numerical && (i == 0 || !m.rows[i - 1].numerical) {
+            let _ = writeln!(t, "{NUMERICAL_HEADING}:");
+        }
         let e = r.elasticity.map_or("-".to_string(), |e| format!("{e:+.4}{}", if r.converged { "" } else { "?" }));
         let mut noise = if r.below_noise { "  below the noise".to_string() } else { String::new() };
         for (end, why) in ["p/f", "p*f"].iter().zip(&r.range_status) {
@@ -436,14 +455,15 @@ pub fn matters_csv(m: &Matters, output: &str, factor: f64) -> String {
     let mut t = format!("# {output} = {} (sd {}), factor {factor}\n", num(m.here.mean), num(m.here.sd));
     t.push_str(
         "parameter,unit,value,elasticity,converged,x_at_p_over_factor,x_at_p_times_factor,\
-         sd_at_p_over_factor,sd_at_p_times_factor,below_noise,status_at_p_over_factor,status_at_p_times_factor\n",
+         sd_at_p_over_factor,sd_at_p_times_factor,below_noise,status_at_p_over_factor,status_at_p_times_factor,\
+         numerical\n",
     );
     let quoted =
         |s: &str| if s.contains([',', '"']) { format!("\"{}\"", s.replace('"', "\"\"")) } else { s.to_string() };
     for r in &m.rows {
         let _ = writeln!(
             t,
-            "{},{},{},{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{},{},{},{}",
             r.key,
             r.unit,
             r.value,
@@ -455,7 +475,8 @@ pub fn matters_csv(m: &Matters, output: &str, factor: f64) -> String {
             num(r.range_sd[1]),
             r.below_noise,
             quoted(&r.range_status[0]),
-            quoted(&r.range_status[1])
+            quoted(&r.range_status[1]),
+            r.numerical
         );
     }
     t

@@ -379,6 +379,27 @@ fn matters_reports_the_jkr_exponent_of_the_sticking_velocity() {
 }
 
 #[test]
+fn matters_reports_the_numerical_resolution_apart_from_the_physics() {
+    let out = grainscope(&["matters", "restitution-ice", "--output", "v_stick", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    let rows = v["parameters"].as_array().expect("rows");
+    let numerical: Vec<bool> = rows.iter().map(|r| r["numerical"].as_bool().expect("flag")).collect();
+    let keys: Vec<&str> = rows.iter().map(|r| r["key"].as_str().expect("key")).collect();
+    let at = |key: &str| keys.iter().position(|k| *k == key).unwrap_or_else(|| panic!("no row {key}: {keys:?}"));
+    assert!(numerical[at("rtol")] && !numerical[at("surface_energy")] && !numerical[at("t_vis")], "{keys:?}");
+    // Every physical parameter comes before every numerical one.
+    assert!(numerical.windows(2).all(|w| w[0] <= w[1]), "{keys:?} {numerical:?}");
+    let text = grainscope(&["matters", "restitution-ice", "--output", "v_stick"]);
+    let text = String::from_utf8_lossy(&text.stdout);
+    let heading = text.find("numerical resolution").expect("the heading");
+    assert!(
+        heading < text.find("\nrtol").expect("rtol's row") && heading > text.find("\nt_vis").expect("a row"),
+        "{text}"
+    );
+}
+
+#[test]
 fn audit_passes_a_light_preset_and_fails_the_thesis_crack_law_with_status_1() {
     let out = grainscope(&["audit", "ice-bounce-8ms", "--points", "8"]);
     assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));

@@ -25,6 +25,7 @@
 //! | `default = expr` | the default value |
 //! | `style_only` | changing it restyles the output; nothing is recomputed |
 //! | `figure_only` | it sets only what a figure shows (an axis range, a curve's resolution, an overlay): no scalar depends on it (the audit holds it to that) |
+//! | `numerical` | it sets a numerical resolution or sample of the method (a count, a step, a tolerance, a seed), not the physics: a converged answer does not depend on it, and sensitivity tools report it apart |
 //! | `choices = expr` | a `String` field that holds one of these (key, label) options |
 //! | `quantity = path` | a shared quantity: `path(&mut field)` gives the control; `label`, `doc` and the rest refine it |
 //! | `below = field` | the value must be below that of the sibling field `field` (a range's two ends) |
@@ -70,6 +71,7 @@ struct FieldSpec {
     default: Option<Expr>,
     style_only: bool,
     figure_only: bool,
+    numerical: bool,
     below: Option<syn::Ident>,
     choices: Option<Expr>,
     quantity: Option<Path>,
@@ -115,6 +117,8 @@ fn field_spec(field: &syn::Field) -> syn::Result<FieldSpec> {
                 spec.style_only = true;
             } else if p.is_ident("figure_only") {
                 spec.figure_only = true;
+            } else if p.is_ident("numerical") {
+                spec.numerical = true;
             } else if p.is_ident("below") {
                 spec.below = Some(meta.value()?.parse()?);
             } else if p.is_ident("choices") {
@@ -253,6 +257,9 @@ fn expand(input: &DeriveInput) -> syn::Result<Tokens> {
         }
         if spec.figure_only {
             chain = quote!(#chain.figure_only());
+        }
+        if spec.numerical {
+            chain = quote!(#chain.numerical());
         }
         match doc {
             Some(doc) => chain = quote!(#chain.doc(#doc)),

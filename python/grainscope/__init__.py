@@ -98,6 +98,10 @@ class Parameter:
     meaning: str
     #: Whether it changes only the figures' look, not the numbers.
     style_only: bool
+    #: Whether it sets a numerical resolution, sample or limit of the method
+    #: (a tolerance, a count, a step, a seed) rather than the physics: a
+    #: converged answer does not depend on it.
+    numerical: bool = False
 
 
 @dataclass(frozen=True)

@@ -174,6 +174,7 @@ struct Parameter {
     choices: Vec<&'static str>,
     meaning: &'static str,
     style_only: bool,
+    numerical: bool,
 }
 
 /// One scene, as `gs.scenes()` lists it.
@@ -224,6 +225,7 @@ fn scenes(py: Python<'_>) -> PyResult<Bound<'_, PyAny>> {
                     choices,
                     meaning: c.doc,
                     style_only: c.style_only,
+                    numerical: c.numerical,
                 }
             })
             .collect();

@@ -104,6 +104,8 @@ def test_scenes_and_presets_are_listed_with_units_ranges_and_meaning():
     v = scenes["hysteresis"].parameter("velocity")
     assert (v.unit, v.kind) == ("m s^-1", "number")
     assert v.min < v.default < v.max and v.meaning
+    # A numerical resolution says so; the physics does not.
+    assert scenes["hysteresis"].parameter("rtol").numerical and not v.numerical
     presets = {p.name: p for p in gs.presets()}
     assert presets["ice-bounce-8ms"].scene == "hysteresis"
     assert len(presets) == len(list((ROOT / "presets").glob("*.ron")))

@@ -78,6 +78,9 @@ pub struct Control<'a> {
     /// It sets only what a figure shows (an axis range, a curve's
     /// resolution, an overlay): no scalar depends on it.
     pub figure_only: bool,
+    /// It sets a numerical resolution or sample of the method (a count, a
+    /// step, a tolerance, a seed), not the physics.
+    pub numerical: bool,
     /// The value.
     pub kind: ControlKind<'a>,
 }
@@ -94,6 +97,7 @@ impl<'a> Control<'a> {
             default: None,
             style_only: false,
             figure_only: false,
+            numerical: false,
             kind,
         }
     }
@@ -195,6 +199,13 @@ impl<'a> Control<'a> {
         self
     }
 
+    /// Marks the control as a numerical resolution or sample of the method
+    /// (a converged answer does not depend on it).
+    pub fn numerical(mut self) -> Self {
+        self.numerical = true;
+        self
+    }
+
     /// The spec of the control (its value aside).
     pub fn spec(&self) -> Spec {
         let c = self;
@@ -216,6 +227,7 @@ impl<'a> Control<'a> {
             default: c.default.clone(),
             style_only: c.style_only,
             figure_only: c.figure_only,
+            numerical: c.numerical,
             kind,
         }
     }

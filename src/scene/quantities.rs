@@ -50,6 +50,7 @@ pub fn solver_tolerance(value: &mut f64) -> Control<'_> {
         .range(1e-12, 1e-3)
         .log()
         .doc("relative tolerance of the integrator (smaller: more accurate, slower)")
+        .numerical()
 }
 
 /// A time cursor over a computed history, as a fraction of the run (styling only).
@@ -63,6 +64,7 @@ pub fn groups_per_decade(value: &mut f64) -> Control<'_> {
         .range(5.0, 400.0)
         .log()
         .doc("resolution of the distribution method (4.26); the cost grows as about w*²")
+        .numerical()
 }
 
 /// Mass of a power-law gas disk (5.1).

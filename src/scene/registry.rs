@@ -422,6 +422,8 @@ of the \"SI unit\" column; the window shows them in the unit of the default.\n",
                     " (display only)"
                 } else if s.figure_only {
                     " (sets only what a figure shows)"
+                } else if s.numerical {
+                    " (numerical resolution)"
                 } else {
                     ""
                 };

@@ -186,6 +186,10 @@ pub struct Spec {
     /// It sets only what a figure shows (an axis range, a curve's
     /// resolution, an overlay): no scalar depends on it.
     pub figure_only: bool,
+    /// It sets a numerical resolution or sample of the method (a count, a
+    /// step, a tolerance, a seed), not the physics: a converged answer does
+    /// not depend on it, and the sensitivity tools report it apart.
+    pub numerical: bool,
     /// Kind and valid values.
     pub kind: SpecKind,
 }

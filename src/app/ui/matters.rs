@@ -206,9 +206,10 @@ pub fn window(ctx: &egui::Context, cx: &mut Cx<'_>) {
                 ui.small(
                     "elasticity ∂ln X/∂ln p at the current value (? where steps of 1 % and 0.5 % disagree: a jump or \
                      noise); bars: X with the parameter divided (blue) and multiplied (orange) by the factor, \
-                     within its range, on a log scale of X/X₀; sorted by the change of X. Monte Carlo results are \
-                     means over the seeds, with σ; “~” marks an effect below that noise. Click a parameter to draw X \
-                     against it over its whole range.",
+                     within its range, on a log scale of X/X₀; sorted by the change of X, the physics first, then \
+                     the numerical resolutions (a converged answer does not depend on them). Monte Carlo results \
+                     are means over the seeds, with σ; “~” marks an effect below that noise. Click a parameter to \
+                     draw X against it over its whole range.",
                 );
             }
         });
@@ -514,7 +515,12 @@ fn chart(
             ui.label(egui::RichText::new(h).strong().size(text));
         }
         ui.end_row();
-        for r in rows {
+        for (i, r) in rows.iter().enumerate() {
+            if r.numerical && (i == 0 || !rows[i - 1].numerical) {
+                ui.label(egui::RichText::new("numerical resolution").italics().size(text))
+                    .on_hover_text(crate::sensitivity::NUMERICAL_HEADING);
+                ui.end_row();
+            }
             if ui
                 .link(egui::RichText::new(&r.label).size(text))
                 .on_hover_text(format!("{}: click to draw X against it over its whole range", r.key))

@@ -79,7 +79,7 @@ pub struct BatchParams {
     /// within 5 % of its converged value with the kernel estimate). A preset
     /// without this key was written when the default was 250 and keeps it.
     #[serde(default = "batches_in_presets_without_the_key")]
-    #[param(label = "batches", range(10.0, 2000.0), default = 500)]
+    #[param(numerical, label = "batches", range(10.0, 2000.0), default = 500)]
     pub batches: usize,
     /// how the dust surface density (5.7) is read from the batches: a kernel of fixed width (converges with the batch count) or the annuli of earlier versions
     ///
@@ -108,7 +108,7 @@ pub struct BatchParams {
     /// Growth per step, Δln m (default 0.2; the disk's own step is not used
     /// here). With the kernel estimate of Σ_d the zone edge of 500 batches
     /// moves by under 5 % from 0.2 to 0.1.
-    #[param(label = "step Δln m", range(0.01, 1.0), log, default = 0.2)]
+    #[param(numerical, label = "step Δln m", range(0.01, 1.0), log, default = 0.2)]
     pub dlnm: f64,
 }
 

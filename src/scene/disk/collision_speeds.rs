@@ -190,7 +190,7 @@ pub struct Params {
     #[param(quantity = quantities::max_monomers, default = 1e32)]
     pub max_monomers: f64,
     /// per axis
-    #[param(label = "grid points", range(10.0, 400.0), default = 100)]
+    #[param(numerical, label = "grid points", range(10.0, 400.0), default = 100)]
     pub cells: usize,
     /// full closed form instead of (4.11)
     #[param(label = "Ormel & Cuzzi form", default = false)]

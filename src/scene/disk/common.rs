@@ -156,7 +156,7 @@ pub struct GrowthParams {
     #[param(label = "Newton drag", default = true)]
     pub newton: bool,
     /// mass growth per step
-    #[param(label = "step Δln m", range(0.01, 1.0), log, default = 0.1)]
+    #[param(numerical, label = "step Δln m", range(0.01, 1.0), log, default = 0.1)]
     pub dlnm: f64,
 }
 

@@ -42,7 +42,7 @@ pub struct Params {
     #[param(label = "outermost start", unit = "AU", range(1.1, 1000.0), log, default = 300.0)]
     pub r_max_au: f64,
     /// starting radii, log-spaced
-    #[param(label = "tracks", range(1.0, 200.0), default = 30)]
+    #[param(numerical, label = "tracks", range(1.0, 200.0), default = 30)]
     pub tracks: usize,
     /// time followed
     #[param(quantity = quantities::duration, default = 1e6)]

@@ -37,19 +37,19 @@ pub struct Params {
     #[param(label = "time t", shown("", 1.0), range(1e-3, 1e5), log, default = 1000.0)]
     pub time: f64,
     /// monomers in the simulated volume
-    #[param(label = "initial particles N₀V", shown("", 1.0), range(1e3, 1e100), log, default = 1e20)]
+    #[param(numerical, label = "initial particles N₀V", shown("", 1.0), range(1e3, 1e100), log, default = 1e20)]
     pub particles: f64,
     /// resolution of the distribution method (4.26)
     #[param(quantity = quantities::groups_per_decade, default = 60.0)]
     pub groups_per_decade: f64,
     /// (4.22)
-    #[param(label = "sequence limit f_m", shown("", 1.0), range(0.01, 1.0), log, default = 0.1)]
+    #[param(numerical, label = "sequence limit f_m", shown("", 1.0), range(0.01, 1.0), log, default = 0.1)]
     pub f_m: f64,
     /// independent seeds, run in parallel
-    #[param(label = "runs", range(1.0, 64.0), default = 8)]
+    #[param(numerical, label = "runs", range(1.0, 64.0), default = 8)]
     pub runs: usize,
     /// runs use seed, seed + 1, …
-    #[param(label = "first seed", range(0.0, 1_000_000.0), default = 1)]
+    #[param(numerical, label = "first seed", range(0.0, 1_000_000.0), default = 1)]
     pub seed: usize,
     /// histogram
     #[param(label = "bins per decade", range(1.0, 10.0), default = 2)]
@@ -58,7 +58,7 @@ pub struct Params {
     ///
     /// Largest share of the total mass one group may hold, ε_M
     /// (dimensionless, 10⁻⁴–1; default 1: no cap, the method of Sect. 4.3).
-    #[param(label = "largest group mass share ε_M", shown("", 1.0), range(1e-4, 1.0), log, default = 1.0)]
+    #[param(numerical, label = "largest group mass share ε_M", shown("", 1.0), range(1e-4, 1.0), log, default = 1.0)]
     pub group_mass_cap: f64,
 }
 

@@ -61,16 +61,16 @@ pub struct ColumnParams {
     #[param(quantity = quantities::groups_per_decade, default = 40.0)]
     pub groups_per_decade: f64,
     /// largest relative change of a particle per group event (4.22)–(4.24)
-    #[param(label = "sequence limit f_m = f_φ", range(0.01, 1.0), log, default = 0.1)]
+    #[param(numerical, label = "sequence limit f_m = f_φ", range(0.01, 1.0), log, default = 0.1)]
     pub f_limit: f64,
     /// mass in the simulated column; sets its area M/Σ_d
-    #[param(label = "column mass", unit = "kg", range(1e10, 1e30), log, default = 1e21)]
+    #[param(numerical, label = "column mass", unit = "kg", range(1e10, 1e30), log, default = 1e21)]
     pub column_mass: f64,
     /// independent seeds, run in parallel
-    #[param(label = "runs", range(1.0, 16.0), default = 2)]
+    #[param(numerical, label = "runs", range(1.0, 16.0), default = 2)]
     pub runs: usize,
     /// runs use seed, seed + 1, …
-    #[param(label = "first seed", range(0.0, 1_000_000.0), default = 1)]
+    #[param(numerical, label = "first seed", range(0.0, 1_000_000.0), default = 1)]
     pub seed: usize,
     /// time of the first snapshot
     #[param(label = "first snapshot", unit = "yr", shown("yr", 1.0), range(1e-2, 1e6), log, default = 10.0)]
@@ -85,7 +85,7 @@ pub struct ColumnParams {
     #[param(label = "stop at peak mass", unit = "kg", shown("g", 1e3), range(1e-10, 1e25), log, default = 1e15)]
     pub stop_mass_g: f64,
     /// group events per run at most
-    #[param(label = "event limit", shown("million", 1.0), range(0.01, 1000.0), log, default = 5.0)]
+    #[param(numerical, label = "event limit", shown("million", 1.0), range(0.01, 1000.0), log, default = 5.0)]
     pub max_events_millions: f64,
 }
 

@@ -31,7 +31,7 @@ pub struct Params {
     #[param(label = "duration", unit = "periods", range(1.0, 200.0), log, default = 20.0)]
     pub periods: f64,
     /// Runge–Kutta steps per period
-    #[param(label = "steps per period", range(20.0, 5000.0), default = 400)]
+    #[param(numerical, label = "steps per period", range(20.0, 5000.0), default = 400)]
     pub steps_per_period: usize,
     /// time of the marker, fraction of the run
     #[param(quantity = quantities::time_cursor, style_only, default = 0.1)]

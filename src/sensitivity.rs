@@ -251,6 +251,7 @@ pub struct Matters {
 }
 
 /// A numeric parameter of a scene, as the sensitivity tools vary it.
+#[derive(Debug, Clone)]
 pub struct Knob {
     /// Parameter key.
     pub key: &'static str,
@@ -299,6 +300,32 @@ pub fn knobs(base: &SceneParams) -> Vec<Knob> {
         .collect()
 }
 
+/// The counts among `base`'s parameters that set a numerical resolution (a
+/// number of batches, runs, steps, tracks or grid points; not a seed, which
+/// picks a sample and has no scale): "what matters" shows the result at half
+/// and twice each, the resolution error, beside the physics.
+fn resolution_counts(base: &SceneParams) -> Vec<Knob> {
+    base.specs()
+        .iter()
+        .filter(|s| s.numerical && !s.style_only && !s.figure_only && s.key != "seed")
+        .filter_map(|s| match (&s.kind, base.get(s.key)?) {
+            (SpecKind::Count { min, max }, DefaultValue::Count(value)) => Some(Knob {
+                key: s.key,
+                label: s.label,
+                unit: s.si_unit,
+                shown_unit: s.unit,
+                display_scale: 1.0,
+                value: value as f64,
+                min: *min as f64,
+                max: *max as f64,
+                log: false,
+                numerical: true,
+            }),
+            _ => None,
+        })
+        .collect()
+}
+
 /// `base` with parameter `key` set to `v`, or None where it is refused.
 fn with(base: &SceneParams, key: &str, v: f64) -> Option<SceneParams> {
     let mut p = base.clone();
@@ -338,13 +365,26 @@ pub fn what_matters(base: &SceneParams, output: &str, factor: f64, progress: &Pr
             return Err(PhysicsError::Invalid(why).into());
         }
     };
-    let knobs: Vec<Knob> = knobs(base).into_iter().filter(|k| k.value > 0.0).collect();
+    let counts = resolution_counts(base);
+    let knobs: Vec<Knob> = knobs(base).into_iter().chain(counts.iter().cloned()).filter(|k| k.value > 0.0).collect();
     // Per parameter: ln p ± h and ± h/2 (h = ln 1.01), then p / factor and p × factor.
+    // A count (a number of batches, runs, steps) has no elasticity: only its
+    // ends, rounded to whole numbers.
     let h = 1.01_f64.ln();
     let offsets = [-h, h, -h / 2.0, h / 2.0, -factor.ln(), factor.ln()];
     let points: Vec<Option<SceneParams>> = knobs
         .iter()
-        .flat_map(|k| offsets.iter().map(move |o| with(base, k.key, (k.value * o.exp()).clamp(k.min, k.max))))
+        .flat_map(|k| {
+            let count = counts.iter().any(|c| c.key == k.key);
+            offsets.iter().enumerate().map(move |(i, o)| {
+                let v = (k.value * o.exp()).clamp(k.min, k.max);
+                match (count, i) {
+                    (false, _) => with(base, k.key, v),
+                    (true, 4 | 5) => with(base, k.key, v.round().clamp(k.min, k.max)),
+                    (true, _) => None,
+                }
+            })
+        })
         .collect();
     let wanted: Vec<SceneParams> = points.iter().flatten().cloned().collect();
     let mut got = values(&wanted, output, progress)?.into_iter();

@@ -397,6 +397,20 @@ fn matters_reports_the_numerical_resolution_apart_from_the_physics() {
         heading < text.find("\nrtol").expect("rtol's row") && heading > text.find("\nt_vis").expect("a row"),
         "{text}"
     );
+    // A count that sets the resolution shows the result at half and twice
+    // it (here the rocking frequency at 200 and 800 steps a period, equal to
+    // 10⁻⁹: converged), with no elasticity.
+    let out = grainscope(&["matters", "rolling-psl-aluminium-rocking", "--output", "f_measured", "--json"]);
+    assert!(out.status.success(), "{}", String::from_utf8_lossy(&out.stderr));
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).expect("json");
+    let rows = v["parameters"].as_array().expect("rows");
+    let steps = rows.iter().find(|r| r["key"] == "steps_per_period").expect("the steps' row");
+    assert!(steps["numerical"].as_bool().expect("flag") && steps["elasticity"].is_null(), "{steps}");
+    let here = v["value"].as_f64().expect("value");
+    for end in ["low", "high"] {
+        let x = steps[end].as_f64().expect("an end");
+        assert!(x != here && ((x - here) / here).abs() < 1e-8, "{end}: {x} against {here}");
+    }
 }
 
 #[test]

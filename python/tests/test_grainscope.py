@@ -258,8 +258,11 @@ def test_the_gil_is_released_while_computing():
 
 
 def test_ctrl_c_interrupts_a_long_run():
+    # Python leaves SIGINT ignored when it starts with SIGINT ignored (as a
+    # shell's background jobs do): the child installs the usual handler.
     code = (
         "import os, signal, threading, time, grainscope as gs\n"
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "threading.Timer(1.0, lambda: os.kill(os.getpid(), signal.SIGINT)).start()\n"
         "t0 = time.perf_counter()\n"
         "try:\n"

@@ -310,6 +310,17 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 pub const COLUMN_DECLARED: &[crate::scene::core::Declared] =
     &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH];
 
+/// The first snapshot's time sets what the figures draw, not the scalars:
+/// those come from the end of the runs, and the runs take the same random
+/// path whatever the snapshot times.
+pub const FIRST_SNAPSHOT: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "*",
+    parameter: "t_first_yr",
+    kind: crate::scene::core::Irregularity::Ignored,
+    why: "it sets only when the first snapshot is drawn: the scalars come from the end of the runs",
+    resolution: None,
+};
+
 /// The number of families is a diagnostic of the distribution method: the
 /// zoom factors z* = [log₂(N₁₀/w*)] (4.26) change by whole numbers as w*
 /// (or anything that moves N₁₀) crosses a power of two, and the families

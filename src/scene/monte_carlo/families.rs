@@ -60,13 +60,7 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         super::common::FAMILY_COUNT,
         super::common::EROSION_ONSET,
         super::common::STOP_OUT_OF_REACH,
-        crate::scene::core::Declared {
-            scalar: "*",
-            parameter: "t_first_yr",
-            kind: crate::scene::core::Irregularity::Ignored,
-            why: "it sets only when the first dots are drawn: the scalars come from the end of the runs",
-            resolution: None,
-        },
+        super::common::FIRST_SNAPSHOT,
         crate::scene::core::Declared {
             scalar: "*",
             parameter: "track",

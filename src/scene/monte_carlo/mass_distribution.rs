@@ -64,7 +64,13 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
+    const DECLARED: &'static [crate::scene::core::Declared] = &[
+        super::common::EVENT_COUNT,
+        super::common::FAMILY_COUNT,
+        super::common::EROSION_ONSET,
+        super::common::STOP_OUT_OF_REACH,
+        super::common::FIRST_SNAPSHOT,
+    ];
     const PAUSABLE: bool = true;
 
     fn time_cursor(&mut self) -> Option<&mut f64> {
@@ -173,5 +179,20 @@ fn output(p: &Params, runs: &[Run]) -> SceneOutput {
         figures: vec![dist, times, peak],
         notes: endings(runs),
         extra: crate::scene::core::Extra::None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The scene declares what every column declares, and the first
+    /// snapshot's time, which only the figure shows.
+    #[test]
+    fn the_scene_declares_what_every_column_declares() {
+        let own = <Params as Scene>::DECLARED;
+        let shared = super::super::common::COLUMN_DECLARED;
+        assert_eq!(&own[..shared.len()], shared);
+        assert_eq!(&own[shared.len()..], &[super::super::common::FIRST_SNAPSHOT]);
     }
 }

@@ -118,26 +118,42 @@ pub fn gas_relative_velocity(eta_vk: f64, st: f64) -> f64 {
 
 /// Drag coefficient of (4.10).
 pub fn drag_coefficient(re: f64) -> f64 {
+    drag_coefficient_and_slope(re).0
+}
+
+/// Drag coefficient of (4.10) and its logarithmic slope d ln C_D/d ln Re.
+fn drag_coefficient_and_slope(re: f64) -> (f64, f64) {
     if re < 1.0 {
-        24.0 / re
+        (24.0 / re, -1.0)
     } else if re < 800.0 {
-        24.0 * re.powf(-0.6)
+        (24.0 * re.powf(-0.6), -0.6)
     } else {
-        0.44
+        (0.44, 0.0)
     }
+}
+
+/// d ln v/d ln St of [`gas_relative_velocity`]: 1 + St²/(4 + St²) − 2St²/(1 + St²).
+fn gas_relative_velocity_slope(st: f64) -> f64 {
+    let s2 = st * st;
+    1.0 + s2 / (4.0 + s2) - 2.0 * s2 / (1.0 + s2)
 }
 
 /// Stopping time at the midplane at radius r (4.8)–(4.10). With `newton` off
 /// only Epstein and Stokes drag are used (Re_p < 1). In the Newton regime t_s
 /// depends on the velocity relative to the gas, which depends on t_s: the
-/// fixed point is found by bisection in log t_s, which converges for every mass.
+/// fixed point is found by Newton's method in log t_s, kept inside a bracket,
+/// which converges for every mass.
 pub fn stopping_time(env: &Local, mono: &Monomer, agg: &Aggregate, newton: bool) -> Stopping {
+    stopping_time_of(env, agg.mass, agg.radius(mono), agg.area(mono), newton)
+}
+
+/// [`stopping_time`] of a particle of mass `mass` (kg), radius `a` (m) and
+/// projected area `area` (m²).
+fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> Stopping {
     let rho = env.density;
     let v_th = env.thermal_speed;
     let lambda = env.mean_free_path;
-    let a = agg.radius(mono);
-    let area = agg.area(mono);
-    let t_ep = 3.0 * agg.mass / (4.0 * rho * v_th * area);
+    let t_ep = 3.0 * mass / (4.0 * rho * v_th * area);
     let omega = env.omega;
     let eta_vk = env.eta_vk;
     let reynolds = |t: f64| 4.0 * a * gas_relative_velocity(eta_vk, omega * t) / (v_th * lambda);
@@ -149,32 +165,45 @@ pub fn stopping_time(env: &Local, mono: &Monomer, agg: &Aggregate, newton: bool)
     if !newton || re < 1.0 {
         return Stopping { time: t_st, regime: DragRegime::Stokes, reynolds: re, iterations: 0 };
     }
-    // Solve t = 2m/(C_D(Re(t)) ρ v_dg(t) A) for t in (0, t_st]: the drag only grows with Re.
-    let implied = |t: f64| {
-        let v = gas_relative_velocity(eta_vk, omega * t).max(1e-300);
-        2.0 * agg.mass / (drag_coefficient(reynolds(t)) * rho * v * area)
+    // Solve t = 2m/(C_D(Re(t)) ρ v_dg(t) A) for t in (0, t_st]: the drag only
+    // grows with Re. With x = ln t, g(x) = ln[2m/(C_D ρ v_dg A)] − x has the
+    // slope −(1 + d ln C_D/d ln Re)(d ln v_dg/d ln St) − 1, between −2 and
+    // −0.88 in every regime: Newton's method from x = ln t_st (where g ≤ 0)
+    // converges in a few steps. The bracket [lo, hi] (g(lo) > 0 ≥ g(hi))
+    // catches a step across the small jump of C_D at Re = 800.
+    let re_per_v = 4.0 * a / (v_th * lambda);
+    let g = |x: f64| {
+        let st = omega * x.exp();
+        let v = gas_relative_velocity(eta_vk, st).max(1e-300);
+        let (cd, slope_cd) = drag_coefficient_and_slope(re_per_v * v);
+        ((2.0 * mass / (cd * rho * v * area)).ln() - x, -(1.0 + slope_cd) * gas_relative_velocity_slope(st) - 1.0)
     };
-    // Illinois regula falsi on g(ln t) = ln implied(t) − ln t, bracketed by
-    // g(ln t_st) ≤ 0 and the first of ln t_st − 2, −6, −14, … where g > 0
-    // (down to t_st·1e-30).
-    let g = |x: f64| implied(x.exp()).ln() - x;
-    let (floor, mut hi) = ((t_st * 1e-30).ln(), t_st.ln());
-    let mut g_hi = g(hi);
-    let mut reach = 2.0;
-    let mut lo = (hi - reach).max(floor);
-    let mut g_lo = g(lo);
-    let mut iterations = 2;
-    while g_lo <= 0.0 && lo > floor {
-        (hi, g_hi) = (lo, g_lo);
-        reach *= 2.0;
-        lo = (hi - reach).max(floor);
-        g_lo = g(lo);
+    let floor = (t_st * 1e-30).ln();
+    let (mut lo, mut hi) = (floor, t_st.ln());
+    let mut x = hi;
+    let mut iterations = 0;
+    while iterations < 100 {
+        let (gx, slope) = g(x);
         iterations += 1;
+        if gx == 0.0 {
+            break;
+        }
+        if gx > 0.0 {
+            lo = x;
+        } else {
+            hi = x;
+        }
+        let mut next = x - gx / slope;
+        if !(next > lo && next < hi) {
+            next = if lo > floor { 0.5 * (lo + hi) } else { next.clamp(floor, hi) };
+        }
+        let step = (next - x).abs();
+        x = next;
+        if step <= 1e-12 * (1.0 + x.abs()) || hi - lo <= 1e-12 || x <= floor {
+            break;
+        }
     }
-    let root = crate::solver::illinois(g, [lo, hi], [g_lo, g_hi], 1e-10, 200);
-    iterations += root.evaluations;
-    let [lo, hi] = root.bracket;
-    let t = (0.5 * (lo + hi)).exp();
+    let t = x.exp();
     let re = reynolds(t);
     let regime = if re < 800.0 { DragRegime::Intermediate } else { DragRegime::Newton };
     Stopping { time: t, regime, reynolds: re, iterations }
@@ -450,36 +479,99 @@ pub fn hit_and_stick_volume(v1: f64, v2: f64) -> f64 {
     a + b + void
 }
 
+/// The geometry of aggregates of one mass at any filling factor: what
+/// [`Aggregate::radius`] and [`Aggregate::area`] compute from the mass alone
+/// (the BCCA fits), taken once.
+struct FixedMass {
+    /// Radius of the compact sphere a₀ N^{1/3}, m.
+    compact_radius: f64,
+    /// 1/A_BCCA(N) − 1/(πa_BCCA(N)²), m⁻².
+    bcca_inverse: f64,
+    /// The monomers' summed cross-section Nπa₀², m².
+    monomers_area: f64,
+}
+
+impl FixedMass {
+    fn new(mono: &Monomer, mass: f64) -> FixedMass {
+        let n = (mass / mono.mass()).max(1.0);
+        let a_bcca = bcca_radius(n, mono.radius);
+        FixedMass {
+            compact_radius: mono.radius * (mass / mono.mass()).cbrt(),
+            bcca_inverse: 1.0 / bcca_area(n, mono.radius) - 1.0 / (PI * a_bcca * a_bcca),
+            monomers_area: n * PI * mono.radius * mono.radius,
+        }
+    }
+
+    /// Radius (m) and projected area (m²) at ln φ, as [`Aggregate::radius`]
+    /// and [`Aggregate::area`].
+    fn at(&self, ln_phi: f64) -> (f64, f64) {
+        let a = self.compact_radius * (-ln_phi / 3.0).exp();
+        let sphere = PI * a * a;
+        if ln_phi >= 0.0 {
+            return (a, sphere);
+        }
+        let inverse = self.bcca_inverse + 1.0 / sphere;
+        let area = if inverse > 0.0 { (1.0 / inverse).min(sphere) } else { sphere };
+        (a, area.min(self.monomers_area))
+    }
+}
+
 /// Filling factor at which the compressive strength P_c = E_roll φ³/a₀³ (4.15)
-/// equals the gas ram pressure P_gas = v_dg m/(πa²t_s) (4.16); found by
-/// bisection in log φ since t_s and a depend on φ. `hint` (a nearby solution,
-/// e.g. the previous step's) narrows the bracket; pass 0 for none.
+/// equals the gas ram pressure P_gas = v_dg m/(πa²t_s) (4.16); found in log φ
+/// since t_s and a depend on φ. `hint` (a nearby solution, e.g. the previous
+/// step's) starts secant steps from there; pass 0 for none (a bracketed
+/// search over 10⁻¹² ≤ φ ≤ 1).
 pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bool, hint: f64) -> f64 {
     let eta_vk = env.eta_vk;
     let omega = env.omega;
+    let shape = FixedMass::new(mono, mass);
+    let strength = (mono.rolling_energy() / mono.radius.powi(3)).ln();
     let excess = |ln_phi: f64| {
-        let phi = ln_phi.exp();
-        let agg = Aggregate { mass, filling: phi };
-        let ts = stopping_time(env, mono, &agg, newton).time;
-        let p_gas = gas_relative_velocity(eta_vk, omega * ts) * mass / (PI * agg.radius(mono).powi(2) * ts);
-        // In logarithms the two pressures differ almost linearly in ln φ.
-        (mono.rolling_energy() / mono.radius.powi(3)).ln() + 3.0 * ln_phi - p_gas.ln()
+        let (a, area) = shape.at(ln_phi);
+        let ts = stopping_time_of(env, mass, a, area, newton).time;
+        let p_gas = gas_relative_velocity(eta_vk, omega * ts) * mass / (PI * a * a * ts);
+        // In logarithms the two pressures differ almost linearly in ln φ,
+        // with a slope between about 2 and 4.
+        strength + 3.0 * ln_phi - p_gas.ln()
     };
     let (full_lo, full_hi) = (1e-12f64.ln(), 0.0f64);
-    let (mut lo, mut hi) =
-        if hint > 0.0 { ((hint * 0.7).ln().max(full_lo), (hint * 1.5).ln().min(full_hi)) } else { (full_lo, full_hi) };
-    let (mut e_lo, mut e_hi) = (excess(lo), excess(hi));
-    if !(e_lo < 0.0 && e_hi >= 0.0) {
-        (lo, hi) = (full_lo, full_hi);
-        (e_lo, e_hi) = (excess(lo), excess(hi));
-        if e_lo >= 0.0 {
-            return 1e-12;
-        }
-        if e_hi < 0.0 {
-            return 1.0;
+    if hint > 0.0 {
+        // Secant steps from the hint (the first with a slope of 3); the
+        // bracketed search below takes over should they leave 10⁻¹² < φ < 1
+        // or not settle.
+        let mut x0 = hint.ln().clamp(full_lo, full_hi);
+        let mut e0 = excess(x0);
+        let mut x1 = (x0 - e0 / 3.0).clamp(full_lo, full_hi);
+        for _ in 0..16 {
+            if x1 == x0 {
+                break;
+            }
+            let e1 = excess(x1);
+            if e1 == 0.0 {
+                return x1.exp();
+            }
+            if e1 == e0 {
+                break;
+            }
+            let x2 = x1 - e1 * (x1 - x0) / (e1 - e0);
+            if !(x2 > full_lo && x2 < full_hi) {
+                break;
+            }
+            if (x2 - x1).abs() <= 1e-11 {
+                return x2.exp();
+            }
+            (x0, e0, x1) = (x1, e1, x2);
         }
     }
-    crate::solver::illinois(excess, [lo, hi], [e_lo, e_hi], 1e-8, 100).x().exp()
+    let (lo, hi) = (full_lo, full_hi);
+    let (e_lo, e_hi) = (excess(lo), excess(hi));
+    if e_lo >= 0.0 {
+        return 1e-12;
+    }
+    if e_hi < 0.0 {
+        return 1.0;
+    }
+    crate::solver::illinois(excess, [lo, hi], [e_lo, e_hi], 1e-10, 200).x().exp()
 }
 
 /// Filling factor set by self-gravity, φ = (Gm₀²/(πa₀E_roll))^{3/5}(m/m₀)^{2/5} (4.15 = 4.16).

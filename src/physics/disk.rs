@@ -47,14 +47,21 @@ impl GasDisk {
 
     /// Gas surface density Σ_g at radius r, kg m⁻².
     pub fn surface_density(&self, r: f64) -> f64 {
+        self.surface_density_and_slope(r).0
+    }
+
+    /// Gas surface density Σ_g at radius r (kg m⁻²) and its logarithmic
+    /// slope d ln Σ_g/d ln R.
+    fn surface_density_and_slope(&self, r: f64) -> (f64, f64) {
         match self.profile {
-            Profile::Mmsn => 1520.0 * (r / (5.0 * AU)).powf(-1.5),
+            Profile::Mmsn => (1520.0 * (r / (5.0 * AU)).powf(-1.5), -1.5),
             Profile::TruncatedPowerLaw { mass, r_c, slope } => {
                 let rc = r_c * AU;
                 // Σ₀ from M_D = ∫2πrΣ dr = 2πΣ₀R_c²/(2 − γ).
                 let sigma0 = mass * M_SUN * (2.0 - slope) / (2.0 * PI * rc * rc);
                 let x = r / rc;
-                sigma0 * x.powf(-slope) * (-x.powf(2.0 - slope)).exp()
+                let taper = x.powf(2.0 - slope);
+                (sigma0 * x.powf(-slope) * (-taper).exp(), -slope - (2.0 - slope) * taper)
             }
         }
     }
@@ -115,19 +122,23 @@ impl GasDisk {
         self.reynolds(r).powf(-0.5) / self.omega(r)
     }
 
-    /// Pressure-gradient parameter η = −½(c_s/v_K)² ∂ln(ρ_g c_s²)/∂ln R (5.9),
-    /// with the logarithmic derivative taken numerically.
+    /// Pressure-gradient parameter η = −½(c_s/v_K)² ∂ln(ρ_g c_s²)/∂ln R (5.9).
+    /// With ρ_g c_s² ∝ Σ_g c_s Ω, T ∝ R^{-1/2} and Ω ∝ R^{-3/2} the slope is
+    /// d ln Σ_g/d ln R − 7/4 (−13/4 for the MMSN).
     pub fn eta(&self, r: f64) -> f64 {
-        let p = |x: f64| (self.midplane_density(x) * self.sound_speed(x).powi(2)).ln();
-        let h = 1e-4;
-        let dlnp = (p(r * (1.0 + h)) - p(r * (1.0 - h))) / ((1.0 + h).ln() - (1.0 - h).ln());
-        -0.5 * (self.sound_speed(r) / self.kepler_velocity(r)).powi(2) * dlnp
+        eta_of(self.sound_speed(r), self.kepler_velocity(r), self.surface_density_and_slope(r).1)
     }
 
     /// Dust surface density Z₀Σ_g, kg m⁻².
     pub fn dust_surface_density(&self, r: f64) -> f64 {
         self.metallicity * self.surface_density(r)
     }
+}
+
+/// η (5.9) from the sound speed, the Kepler velocity (m s⁻¹) and
+/// d ln Σ_g/d ln R.
+fn eta_of(sound_speed: f64, kepler_velocity: f64, sigma_slope: f64) -> f64 {
+    -0.5 * (sound_speed / kepler_velocity).powi(2) * (sigma_slope - 1.75)
 }
 
 /// Midplane quantities at one radius, computed once for repeated use.
@@ -162,19 +173,31 @@ pub struct Local {
 impl GasDisk {
     /// The midplane quantities at radius r.
     pub fn local(&self, r: f64) -> Local {
+        // Each quantity as its method computes it, from the others taken once.
+        let temperature = self.temperature(r);
+        let sound_speed = (K_B * temperature / M_GAS).sqrt();
+        let omega = self.omega(r);
+        let scale_height = sound_speed / omega;
+        let (sigma, sigma_slope) = self.surface_density_and_slope(r);
+        let density = sigma / ((2.0 * PI).sqrt() * scale_height);
+        let thermal_speed = (8.0 / PI).sqrt() * sound_speed;
+        let mean_free_path = M_GAS / (SIGMA_MOL * density);
+        let viscosity = 0.5 * thermal_speed * mean_free_path;
+        let kepler_velocity = r * omega;
+        let eta = eta_of(sound_speed, kepler_velocity, sigma_slope);
         Local {
             r,
-            temperature: self.temperature(r),
-            sound_speed: self.sound_speed(r),
-            omega: self.omega(r),
-            scale_height: self.scale_height(r),
-            density: self.midplane_density(r),
-            thermal_speed: self.thermal_speed(r),
-            mean_free_path: self.mean_free_path(r),
-            reynolds: self.reynolds(r),
-            eta_vk: self.eta(r) * self.kepler_velocity(r),
+            temperature,
+            sound_speed,
+            omega,
+            scale_height,
+            density,
+            thermal_speed,
+            mean_free_path,
+            reynolds: self.alpha * sound_speed.powi(2) / (omega * viscosity),
+            eta_vk: eta * kepler_velocity,
             alpha: self.alpha,
-            dust_surface_density: self.dust_surface_density(r),
+            dust_surface_density: self.metallicity * sigma,
         }
     }
 }

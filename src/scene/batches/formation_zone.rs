@@ -200,6 +200,34 @@ disks run in parallel, each also with half the batches: the change estimates the
 
 /// The largest edge of a grid, AU; NaN (undefined) where no disk of the grid
 /// forms planetesimals.
+/// Outer edges (AU) of the runs this process has made, by the whole
+/// configuration of the run (`BatchConfig`'s `Debug` text, every number to
+/// the last digit): a run depends on nothing else, so a parameter that does
+/// not reach the run (a grid point the grid does not use, a monomer property
+/// the batch model does not read) costs no run when "what matters", a sweep
+/// or the window asks again. At most `EDGE_MEMORY` entries are kept.
+fn edge_memory() -> &'static std::sync::Mutex<std::collections::HashMap<String, f64>> {
+    static MEMORY: std::sync::OnceLock<std::sync::Mutex<std::collections::HashMap<String, f64>>> =
+        std::sync::OnceLock::new();
+    MEMORY.get_or_init(Default::default)
+}
+
+/// The most edges [`edge_memory`] keeps; it starts afresh when full.
+const EDGE_MEMORY: usize = 4096;
+
+fn remembered_edge(key: &str) -> Option<f64> {
+    edge_memory().lock().ok()?.get(key).copied()
+}
+
+fn remember_edge(key: String, edge: f64) {
+    if let Ok(mut memory) = edge_memory().lock() {
+        if memory.len() >= EDGE_MEMORY {
+            memory.clear();
+        }
+        memory.insert(key, edge);
+    }
+}
+
 fn widest_of(edges: &[f64]) -> f64 {
     Some(edges.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN)
 }
@@ -259,8 +287,18 @@ impl Params {
         let total = distinct.len();
         let edges: Vec<f64> = distinct
             .par_iter()
-            .map(|b| b.run_in_sweep(progress, &done, total).map(|r| r.outermost_planetesimals() / AU))
-            .collect::<Result<_, _>>()?;
+            .map(|b| {
+                let key = format!("{:?}", b.config());
+                if let Some(edge) = remembered_edge(&key) {
+                    let finished = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                    progress.set(finished as f64 / total.max(1) as f64);
+                    return Ok(edge);
+                }
+                let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
+                remember_edge(key, edge);
+                Ok(edge)
+            })
+            .collect::<Result<_, SceneError>>()?;
         Ok(which.into_iter().map(|i| edges[i]).collect())
     }
 }

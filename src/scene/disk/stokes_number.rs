@@ -78,6 +78,11 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
             undefined: Some("compact grains stay below Ωt_s = 1 up to the end of the mass axis"),
         },
         Censored {
+            key: "porous_st1",
+            above: None,
+            undefined: Some("the constant-φ family stays below Ωt_s = 1 up to the end of the mass axis"),
+        },
+        Censored {
             key: "fractal_stokes_onset",
             above: None,
             undefined: Some("the fractal family stays in Epstein drag up to the end of the mass axis"),
@@ -186,13 +191,18 @@ Epstein and Stokes drag only. A is the orientation-averaged projected area of Ok
                     scalars.push(Scalar { key: keys[i], label: labels[i], value, unit: "" });
                 }
             }
-            if k == 0 {
+            if k < 2 {
                 let value = match full.iter().position(|q| q[1] >= 1.0) {
                     Some(0) => ns[0],
                     Some(j) => boundary(ns[j - 1], ns[j], |n| st_at(n) >= 1.0),
                     None => f64::NAN,
                 };
-                scalars.push(Scalar { key: "compact_st1", label: "compact: Ωt_s = 1 at m/m₀", value, unit: "" });
+                let (key, label) = if k == 0 {
+                    ("compact_st1", "compact: Ωt_s = 1 at m/m₀")
+                } else {
+                    ("porous_st1", "constant φ: Ωt_s = 1 at m/m₀")
+                };
+                scalars.push(Scalar { key, label, value, unit: "" });
             }
             fig = fig.with(Series::new(name.clone(), full, Style::Line, colours[k])).with(Series::new(
                 format!("{name}, Epstein + Stokes only"),

@@ -143,7 +143,13 @@ impl BatchParams {
     /// The run of each of `disks` disks in the preview of a sweep: about 120
     /// batches in all, 12 to 40 per disk, never more than the full run.
     pub fn coarse_over(&self, disks: usize) -> BatchParams {
-        let per_disk = (PREVIEW_BATCHES / disks.max(1)).clamp(12, 40);
+        self.coarse_within(disks, 40)
+    }
+
+    /// The run of each of `disks` disks in a preview of about 120 batches in
+    /// all, 12 to `most` per disk, never more than the full run.
+    pub fn coarse_within(&self, disks: usize, most: usize) -> BatchParams {
+        let per_disk = (PREVIEW_BATCHES / disks.max(1)).clamp(12, most.max(12));
         BatchParams { batches: self.batches.min(per_disk), ..self.clone() }
     }
 

@@ -118,17 +118,12 @@ pub fn gas_relative_velocity(eta_vk: f64, st: f64) -> f64 {
 
 /// Drag coefficient of (4.10).
 pub fn drag_coefficient(re: f64) -> f64 {
-    drag_coefficient_and_slope(re).0
-}
-
-/// Drag coefficient of (4.10) and its logarithmic slope d ln C_D/d ln Re.
-fn drag_coefficient_and_slope(re: f64) -> (f64, f64) {
     if re < 1.0 {
-        (24.0 / re, -1.0)
+        24.0 / re
     } else if re < 800.0 {
-        (24.0 * re.powf(-0.6), -0.6)
+        24.0 * re.powf(-0.6)
     } else {
-        (0.44, 0.0)
+        0.44
     }
 }
 
@@ -171,12 +166,26 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
     // −0.88 in every regime: Newton's method from x = ln t_st (where g ≤ 0)
     // converges in a few steps. The bracket [lo, hi] (g(lo) > 0 ≥ g(hi))
     // catches a step across the small jump of C_D at Re = 800.
+    // In logarithms, with C_D = 24/Re, 24 Re^{-3/5} or 0.44 and Re = k v_dg,
+    // ln[2m/(C_D ρ v_dg A)] = ln[2m/(ρA)] − ln C_D − ln v_dg is a constant of
+    // each regime plus a multiple of ln v_dg: one logarithm an evaluation.
     let re_per_v = 4.0 * a / (v_th * lambda);
+    let base = (2.0 * mass / (rho * area)).ln();
+    let ln_k = re_per_v.ln();
+    let (stokes_c, intermediate_c, newton_c) =
+        (base - 24f64.ln() + ln_k, base - 24f64.ln() + 0.6 * ln_k, base - 0.44f64.ln());
     let g = |x: f64| {
         let st = omega * x.exp();
         let v = gas_relative_velocity(eta_vk, st).max(1e-300);
-        let (cd, slope_cd) = drag_coefficient_and_slope(re_per_v * v);
-        ((2.0 * mass / (cd * rho * v * area)).ln() - x, -(1.0 + slope_cd) * gas_relative_velocity_slope(st) - 1.0)
+        let re = re_per_v * v;
+        let (ln_implied, slope_cd) = if re < 1.0 {
+            (stokes_c, -1.0)
+        } else if re < 800.0 {
+            (intermediate_c - 0.4 * v.ln(), -0.6)
+        } else {
+            (newton_c - v.ln(), 0.0)
+        };
+        (ln_implied - x, -(1.0 + slope_cd) * gas_relative_velocity_slope(st) - 1.0)
     };
     let floor = (t_st * 1e-30).ln();
     let (mut lo, mut hi) = (floor, t_st.ln());
@@ -576,8 +585,13 @@ pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bo
 
 /// Filling factor set by self-gravity, φ = (Gm₀²/(πa₀E_roll))^{3/5}(m/m₀)^{2/5} (4.15 = 4.16).
 pub fn gravity_compaction_filling(mono: &Monomer, mass: f64) -> f64 {
+    gravity_filling(mono, mono.rolling_energy(), mass)
+}
+
+/// [`gravity_compaction_filling`] with the rolling energy `e_roll` (J) given.
+pub(crate) fn gravity_filling(mono: &Monomer, e_roll: f64, mass: f64) -> f64 {
     let m0 = mono.mass();
-    ((G * m0 * m0 / (PI * mono.radius * mono.rolling_energy())).powf(0.6) * (mass / m0).powf(0.4)).min(1.0)
+    (0.6 * (G * m0 * m0 / (PI * mono.radius * e_roll)).ln() + 0.4 * (mass / m0).ln()).exp().min(1.0)
 }
 
 #[cfg(test)]

@@ -233,13 +233,14 @@ fn kernel_cdf(u: f64) -> f64 {
 /// extent `[a, b]` in ln R, kg m⁻².
 fn kernel_density(r: f64, points: impl Iterator<Item = (f64, f64)>, h: f64, (a, b): (f64, f64)) -> f64 {
     let x = r.ln();
+    let inv_h = 1.0 / h;
     let sum: f64 = points
         .map(|(xj, m)| {
-            let u = (x - xj).abs() / h;
+            let u = (x - xj).abs() * inv_h;
             if u < 1.0 { m * (1.0 - u) } else { 0.0 }
         })
         .sum::<f64>()
-        / h;
+        * inv_h;
     let covered = kernel_cdf((b - x) / h) - kernel_cdf((a - x) / h);
     let least = 0.5 * ((b - a) / h).min(1.0);
     sum / (2.0 * PI * r * r * covered.max(least))
@@ -552,7 +553,7 @@ struct Ranks {
     step: Vec<[f64; 4]>,
     /// ln R of the radii, in the same order.
     x: Vec<f64>,
-    /// Each batch's last step in ln R: (t₀, ln R₀, t₁, ln R₁).
+    /// Each batch's last step in ln R: (t₀, ln R₀, d ln R/dt over the step, ln R₁).
     ln_step: Vec<[f64; 4]>,
     /// The region the batches represent, ln R (the kernel is renormalised on it).
     domain: (f64, f64),
@@ -623,8 +624,8 @@ impl Ranks {
     /// ln R of batch `j` at time `t`, interpolated in ln R within its last
     /// step (see [`Ranks::at`]).
     fn ln_at(&self, j: usize, t: f64) -> f64 {
-        let [t0, x0, t1, x1] = self.ln_step[j];
-        if t1 > t0 { (x0 + (x1 - x0) * ((t - t0) / (t1 - t0)).max(0.0)).max(x1 - std::f64::consts::LN_2) } else { x1 }
+        let [t0, x0, rate, x1] = self.ln_step[j];
+        (x0 + rate * (t - t0).max(0.0)).max(x1 - std::f64::consts::LN_2)
     }
 
     /// The annuli estimate of earlier versions at batch `i`.
@@ -661,7 +662,8 @@ impl Ranks {
         let r0 = self.r[self.rank[i]];
         self.step[i] = [t0, r0, t1, r];
         let mut p = self.rank[i];
-        self.ln_step[i] = [t0, self.x[p], t1, r.ln()];
+        let (x0, x1) = (self.x[p], r.ln());
+        self.ln_step[i] = if t1 > t0 { [t0, x0, (x1 - x0) / (t1 - t0), x1] } else { [t0, x1, 0.0, x1] };
         self.r[p] = r;
         self.x[p] = r.ln();
         while p > 0 && self.r[p - 1] > r {
@@ -739,6 +741,13 @@ fn frame_times(t_end: f64, per_decade: usize) -> Vec<f64> {
 /// instead of reading a profile from an earlier time. The result does not
 /// depend on the thread count.
 pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Result<BatchRun, PhysicsError> {
+    // On a worker of the thread pool: each wave's parallel step is then a
+    // join among the workers, not a job handed to the pool from outside and
+    // waited for (a sleep and a wake of the calling thread per wave).
+    rayon::scope(|_| run_here(cfg, cancelled))
+}
+
+fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Result<BatchRun, PhysicsError> {
     cfg.validate()?;
     let disk = cfg.model.disk;
     let n = cfg.batches;

@@ -68,7 +68,7 @@ impl GasDisk {
 
     /// Temperature T = 125 K (R/5 AU)^{-1/2} (4.2, 5.2), halved for a cold disk, K.
     pub fn temperature(&self, r: f64) -> f64 {
-        let t = 125.0 * (r / (5.0 * AU)).powf(-0.5);
+        let t = 125.0 / (r / (5.0 * AU)).sqrt();
         if self.cold { 0.5 * t } else { t }
     }
 

@@ -15,7 +15,7 @@
 
 use super::aggregate::{
     Aggregate, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel, dust_scale_height,
-    gas_compaction_filling, gravity_compaction_filling, radial_drift, relative_velocity, stopping_time,
+    gas_compaction_filling, gravity_filling, radial_drift, relative_velocity, stopping_time,
 };
 use super::disk::{GasDisk, Local};
 use serde::{Deserialize, Serialize};
@@ -238,7 +238,7 @@ impl GrowthModel {
         let sigma = sigma_d.unwrap_or(env.dust_surface_density);
         let m_dot = sigma / ((2.0 * PI).sqrt() * h_d) * PI * (2.0 * a).powi(2) * rv.total();
         let t_grow = if m_dot > 0.0 { m / m_dot } else { f64::INFINITY };
-        let first_regime = rv.dominant() == 1 && st < env.reynolds.powf(-0.5);
+        let first_regime = rv.dominant() == 1 && st < 1.0 / env.reynolds.sqrt();
         let v_drift = radial_drift(env.eta_vk, st);
         Rates { env, stopping, stokes: st, radius: a, v_rel: rv, t_grow, first_regime, v_drift }
     }
@@ -268,7 +268,7 @@ impl GrowthModel {
         let v = rv.total();
         let v_mono = self.relative_velocity(&env, &me, &mono_particle).total();
         let mut t_grow = start.t_grow;
-        let st_eta = env.reynolds.powf(-0.5);
+        let st_eta = 1.0 / env.reynolds.sqrt();
         // In the first turbulence regime same-size velocities vanish and the
         // particles grow by sweeping up smaller ones at a roughly constant
         // rate (Sect. 4.5): keep t_grow at its value on entering that regime.
@@ -419,7 +419,7 @@ impl GrowthModel {
         let m0 = mono.mass();
         let e_roll = mono.rolling_energy();
         let n = m_new / m0;
-        let phi_hs = n.powf(-0.5).min(1.0);
+        let phi_hs = (1.0 / n.sqrt()).min(1.0);
         let mut out = Filling { phi: 1.0, onset, gas: false, gravity: false };
         if self.porosity == Porosity::Compact {
             return out;
@@ -431,7 +431,9 @@ impl GrowthModel {
                 phi
             }
             None => phi_hs,
-            Some((mc, phic, ec)) => (phic * (e_per_n / ec).powf(0.3) * (n / (mc / m0)).powf(-0.2)).max(phi_hs).min(1.0),
+            Some((mc, phic, ec)) => {
+                (phic * (0.3 * (e_per_n / ec).ln() - 0.2 * (n / (mc / m0)).ln()).exp()).max(phi_hs).min(1.0)
+            }
         };
         if self.porosity != Porosity::Full {
             out.phi = collisional;
@@ -447,7 +449,7 @@ impl GrowthModel {
             let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
             if p_c < p_gas { gas_compaction_filling(&env2, &mono, m_new, self.newton, phi) } else { 0.0 }
         };
-        let grav = gravity_compaction_filling(&mono, m_new);
+        let grav = gravity_filling(&mono, e_roll, m_new);
         out.gas = gas > collisional && gas >= grav;
         out.gravity = grav > collisional && grav > gas;
         out.phi = collisional.max(gas).max(grav).min(1.0);

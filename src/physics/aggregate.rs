@@ -601,6 +601,55 @@ mod tests {
     use crate::physics::disk::GasDisk;
 
     #[test]
+    fn newton_drag_stopping_time_is_its_own_fixed_point() {
+        // t = 2m/(C_D(Re(t)) ρ v_dg(t) A) to 10⁻¹⁰ over masses, filling
+        // factors and radii in the intermediate and Newton regimes.
+        let mono = Monomer::ice();
+        let mut solved = 0;
+        for r_au in [1.0, 5.0, 30.0] {
+            let env = GasDisk::mmsn(1e-3, 1e-2).local(r_au * AU);
+            for i in 0..=60 {
+                for phi in [1e-4, 1e-2, 1.0] {
+                    let agg = Aggregate { mass: mono.mass() * 10f64.powf(i as f64 / 2.0), filling: phi };
+                    let s = stopping_time(&env, &mono, &agg, true);
+                    if !matches!(s.regime, DragRegime::Intermediate | DragRegime::Newton) {
+                        continue;
+                    }
+                    let v = gas_relative_velocity(env.eta_vk, env.omega * s.time);
+                    let implied = 2.0 * agg.mass / (drag_coefficient(s.reynolds) * env.density * v * agg.area(&mono));
+                    // Near Re = 800, where C_D jumps by 1 %, the fixed point can
+                    // fall in the jump: the bracket then closes on it.
+                    if (s.reynolds / 800.0 - 1.0).abs() > 0.02 {
+                        assert!((implied / s.time - 1.0).abs() < 1e-10, "{r_au} AU, {agg:?}: {s:?}, implied {implied}");
+                        solved += 1;
+                    }
+                    assert!(s.iterations <= 60, "{s:?}");
+                }
+            }
+        }
+        assert!(solved > 20, "{solved} cases in Newton drag");
+    }
+
+    #[test]
+    fn gas_compaction_from_a_hint_equals_the_bracketed_search() {
+        let mono = Monomer::ice();
+        for r_au in [1.0, 5.0, 30.0] {
+            let env = GasDisk::mmsn(1e-3, 1e-2).local(r_au * AU);
+            for i in 0..=30 {
+                let mass = mono.mass() * 10f64.powf(10.0 + i as f64);
+                let plain = gas_compaction_filling(&env, &mono, mass, true, 0.0);
+                for hint in [plain * 0.3, plain, plain * 3.0, 1e-9, 0.9] {
+                    let from_hint = gas_compaction_filling(&env, &mono, mass, true, hint.min(1.0));
+                    assert!(
+                        (from_hint / plain - 1.0).abs() < 1e-9,
+                        "{r_au} AU, m = {mass:e} kg, hint {hint:e}: {from_hint:e} against {plain:e}"
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
     fn rolling_energy_and_fragmentation_velocity_of_ice() {
         let m = Monomer::ice();
         assert!((m.rolling_energy() / 4e-16 - 1.0).abs() < 0.05, "{}", m.rolling_energy());

@@ -40,8 +40,7 @@ impl Aggregate {
             return sphere;
         }
         let n = self.monomers(mono).max(1.0);
-        let a_bcca = bcca_radius(n, mono.radius);
-        let inverse = 1.0 / bcca_area(n, mono.radius) + 1.0 / sphere - 1.0 / (PI * a_bcca * a_bcca);
+        let inverse = bcca_inverse(n, mono.radius) + 1.0 / sphere;
         let monomers = n * PI * mono.radius * mono.radius;
         if inverse > 0.0 { (1.0 / inverse).min(sphere).min(monomers) } else { sphere.min(monomers) }
     }
@@ -79,6 +78,19 @@ pub fn bcca_area(n: f64, a0: f64) -> f64 {
 /// give a monomer 0.72 πa₀².)
 pub fn bcca_radius(n: f64, a0: f64) -> f64 {
     a0 * n.powf(BCCA_EXPONENT)
+}
+
+/// 1/A_BCCA(N) − 1/(πa_BCCA(N)²) of [`bcca_area`] and [`bcca_radius`], m⁻²,
+/// with one logarithm of N for both (N > 16).
+fn bcca_inverse(n: f64, a0: f64) -> f64 {
+    if n <= 16.0 {
+        let a_bcca = bcca_radius(n, a0);
+        return 1.0 / bcca_area(n, a0) - 1.0 / (PI * a_bcca * a_bcca);
+    }
+    let ln_n = n.ln();
+    let area = (0.352 + 0.566 * (-0.138 * ln_n).exp()) * n * PI * a0 * a0;
+    let a_bcca = a0 * (BCCA_EXPONENT * ln_n).exp();
+    1.0 / area - 1.0 / (PI * a_bcca * a_bcca)
 }
 
 /// log₂(2.99)/3: the radius exponent of equal-mass hit-and-stick growth.
@@ -503,10 +515,9 @@ struct FixedMass {
 impl FixedMass {
     fn new(mono: &Monomer, mass: f64) -> FixedMass {
         let n = (mass / mono.mass()).max(1.0);
-        let a_bcca = bcca_radius(n, mono.radius);
         FixedMass {
             compact_radius: mono.radius * (mass / mono.mass()).cbrt(),
-            bcca_inverse: 1.0 / bcca_area(n, mono.radius) - 1.0 / (PI * a_bcca * a_bcca),
+            bcca_inverse: bcca_inverse(n, mono.radius),
             monomers_area: n * PI * mono.radius * mono.radius,
         }
     }

@@ -207,36 +207,62 @@ disks run in parallel, each also with half the batches: the change estimates the
     }
 }
 
-/// The largest edge of a grid, AU; NaN (undefined) where no disk of the grid
-/// forms planetesimals.
 /// Outer edges (AU) of the runs this process has made, by the whole
 /// configuration of the run (`BatchConfig`'s `Debug` text, every number to
 /// the last digit): a run depends on nothing else, so a parameter that does
 /// not reach the run (a grid point the grid does not use, a monomer property
 /// the batch model does not read) costs no run when "what matters", a sweep
-/// or the window asks again. At most `EDGE_MEMORY` entries are kept.
-fn edge_memory() -> &'static std::sync::Mutex<std::collections::HashMap<String, f64>> {
-    static MEMORY: std::sync::OnceLock<std::sync::Mutex<std::collections::HashMap<String, f64>>> =
-        std::sync::OnceLock::new();
-    MEMORY.get_or_init(Default::default)
-}
+/// or the window asks again. At most 4096 edges are kept; the memory starts
+/// afresh when full. The WebAssembly module has none (it keeps within its
+/// size budget without the `Debug` text of a configuration): the browser
+/// runs each edge again.
+#[cfg(not(target_arch = "wasm32"))]
+mod edge_memory {
+    use super::BatchParams;
+    use std::collections::HashMap;
+    use std::sync::{Mutex, OnceLock};
 
-/// The most edges [`edge_memory`] keeps; it starts afresh when full.
-const EDGE_MEMORY: usize = 4096;
+    fn memory() -> &'static Mutex<HashMap<String, f64>> {
+        static MEMORY: OnceLock<Mutex<HashMap<String, f64>>> = OnceLock::new();
+        MEMORY.get_or_init(Default::default)
+    }
 
-fn remembered_edge(key: &str) -> Option<f64> {
-    edge_memory().lock().ok()?.get(key).copied()
-}
+    fn key(run: &BatchParams) -> String {
+        format!("{:?}", run.config())
+    }
 
-fn remember_edge(key: String, edge: f64) {
-    if let Ok(mut memory) = edge_memory().lock() {
-        if memory.len() >= EDGE_MEMORY {
-            memory.clear();
+    /// The edge of an earlier run with the same configuration, AU.
+    pub fn recall(run: &BatchParams) -> Option<f64> {
+        memory().lock().ok()?.get(&key(run)).copied()
+    }
+
+    /// Keeps the edge (AU) of a finished run.
+    pub fn keep(run: &BatchParams, edge: f64) {
+        if let Ok(mut memory) = memory().lock() {
+            if memory.len() >= 4096 {
+                memory.clear();
+            }
+            memory.insert(key(run), edge);
         }
-        memory.insert(key, edge);
     }
 }
 
+/// The WebAssembly module's stand-in: nothing is remembered.
+#[cfg(target_arch = "wasm32")]
+mod edge_memory {
+    use super::BatchParams;
+
+    /// Always `None`.
+    pub fn recall(_: &BatchParams) -> Option<f64> {
+        None
+    }
+
+    /// Keeps nothing.
+    pub fn keep(_: &BatchParams, _: f64) {}
+}
+
+/// The largest edge of a grid, AU; NaN (undefined) where no disk of the grid
+/// forms planetesimals.
 fn widest_of(edges: &[f64]) -> f64 {
     Some(edges.iter().copied().fold(0.0, f64::max)).filter(|&r| r > 0.0).unwrap_or(f64::NAN)
 }
@@ -297,14 +323,13 @@ impl Params {
         let edges: Vec<f64> = distinct
             .par_iter()
             .map(|b| {
-                let key = format!("{:?}", b.config());
-                if let Some(edge) = remembered_edge(&key) {
+                if let Some(edge) = edge_memory::recall(b) {
                     let finished = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                     progress.set(finished as f64 / total.max(1) as f64);
                     return Ok(edge);
                 }
                 let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
-                remember_edge(key, edge);
+                edge_memory::keep(b, edge);
                 Ok(edge)
             })
             .collect::<Result<_, SceneError>>()?;

@@ -169,7 +169,10 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
     }
     let t_st = 4.0 * a / (9.0 * lambda) * t_ep;
     let re = reynolds(t_st);
-    if !newton || re < 1.0 {
+    // A degenerate particle (no area, an infinite mass or radius) has no
+    // finite Stokes time to start from: it is returned as it is, for the
+    // caller to reject.
+    if !newton || re < 1.0 || !(t_st.is_finite() && t_st > 0.0) {
         return Stopping { time: t_st, regime: DragRegime::Stokes, reynolds: re, iterations: 0 };
     }
     // Solve t = 2m/(C_D(Re(t)) ρ v_dg(t) A) for t in (0, t_st]: the drag only
@@ -216,7 +219,7 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
         }
         let mut next = x - gx / slope;
         if !(next > lo && next < hi) {
-            next = if lo > floor { 0.5 * (lo + hi) } else { next.clamp(floor, hi) };
+            next = if lo > floor { 0.5 * (lo + hi) } else { next.max(floor).min(hi) };
         }
         let step = (next - x).abs();
         x = next;
@@ -639,6 +642,17 @@ mod tests {
             }
         }
         assert!(solved > 20, "{solved} cases in Newton drag");
+    }
+
+    #[test]
+    fn degenerate_particles_give_a_value_and_no_panic() {
+        let mono = Monomer::ice();
+        let env = GasDisk::mmsn(1e-3, 1e-2).local(5.0 * AU);
+        for (mass, filling) in [(f64::INFINITY, 1.0), (1.0, 0.0), (f64::NAN, 0.5), (1e3, f64::NAN), (0.0, 1.0)] {
+            let agg = Aggregate { mass, filling };
+            let _ = stopping_time(&env, &mono, &agg, true);
+            let _ = gas_compaction_filling(&env, &mono, mass, true, filling);
+        }
     }
 
     #[test]

@@ -128,11 +128,11 @@ fn zone_edge_reference_is_converged_in_batches_and_step() {
     }
 }
 
-/// A single disk of the formation-zone scene at its default resolution:
-/// (edge, reported error), AU.
-fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
+/// The formation-zone scene of a single disk (M_D in M☉, Z₀, R_c in AU) at
+/// its default resolution, batches out to 300 AU.
+fn one_disk_zone(mass: f64, z: f64, r_c: f64) -> SceneParams {
     use grainscope::scene::batches::formation_zone::Params;
-    let p = Params {
+    SceneParams::FormationZone(Params {
         mass_min: mass,
         mass_max: mass,
         n_mass: 1,
@@ -143,8 +143,13 @@ fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
         r_c_2: r_c,
         run: BatchParams { r_out_au: 300.0, ..BatchParams::default() },
         ..Params::default()
-    };
-    let out = scene::compute(&SceneParams::FormationZone(p), &Progress::default()).expect("valid disk");
+    })
+}
+
+/// A single disk of the formation-zone scene at its default resolution:
+/// (edge, reported error), AU.
+fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
+    let out = scene::compute(&one_disk_zone(mass, z, r_c), &Progress::default()).expect("valid disk");
     (out.scalar("widest_zone").expect("edge"), out.scalar("widest_zone_error").expect("error"))
 }
 
@@ -157,20 +162,8 @@ fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
 /// 10 % of it everywhere (0.05 M☉, Z₀ = 0.02, R_c = 100 AU: +43 %).
 #[test]
 fn a_single_disk_preview_of_the_formation_zone_is_near_its_edge() {
-    use grainscope::scene::batches::formation_zone::Params;
     for (mass, z, r_c) in [(0.2, 0.05, 30.0), (0.1, 0.01, 30.0), (0.03, 0.03, 50.0)] {
-        let p = SceneParams::FormationZone(Params {
-            mass_min: mass,
-            mass_max: mass,
-            n_mass: 1,
-            z_min: z,
-            z_max: z,
-            n_z: 1,
-            r_c_1: r_c,
-            r_c_2: r_c,
-            run: BatchParams { r_out_au: 300.0, ..BatchParams::default() },
-            ..Params::default()
-        });
+        let p = one_disk_zone(mass, z, r_c);
         let preview = p.coarse().expect("the formation zone has a preview");
         let SceneParams::FormationZone(coarse) = &preview else { panic!("the preview of another scene") };
         assert_eq!(coarse.run.batches, 120, "a single disk's preview");

@@ -180,6 +180,17 @@ impl GrowthParams {
     }
 }
 
+/// The declaration every scene of a local track makes: its step in ln m
+/// sets its resolution.
+pub const TRACK_STEP: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "*",
+    parameter: "dlnm",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
+          where the track gains or loses a point",
+    resolution: None,
+};
+
 /// Local growth of one aggregate at a fixed radius: the parameters of the
 /// porosity-track scene, shared with the timescales scene.
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize, ParamSet)]

@@ -51,14 +51,7 @@ collisional, gas and self-gravity compaction. Local growth at fixed R (no drift)
     ];
 
     const DECLARED: &'static [Declared] = &[
-        Declared {
-            scalar: "*",
-            parameter: "dlnm",
-            kind: Irregularity::Step,
-            why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
-                  where the track gains or loses a point",
-            resolution: None,
-        },
+        super::common::TRACK_STEP,
         Declared {
             scalar: "phi_min_collisional",
             parameter: "v_frag",

@@ -36,14 +36,7 @@ t_grow << t_drift and outgrow the drift barrier. The dotted line is t_drift/30."
     };
 
     const DECLARED: &'static [Declared] = &[
-        Declared {
-            scalar: "*",
-            parameter: "dlnm",
-            kind: Irregularity::Step,
-            why: "the track's step in ln m sets its resolution: results move by the discretisation error, in steps \
-                  where the track gains or loses a point",
-            resolution: None,
-        },
+        super::common::TRACK_STEP,
         Declared {
             scalar: "*",
             parameter: "ormel_cuzzi",

@@ -282,9 +282,39 @@ fn pair_data_follow_the_families_as_they_are_now() {
         assert_eq!((rate, effect), *from_row);
         let v = col.velocity(&target, p);
         let filling = col.filling_after(target.body(), p.body(), v);
-        assert_eq!(effect, Effect::Stick { filling }, "projectile of {} kg", p.mass);
+        let change = col.filling_change(target.body(), p.body(), v);
+        assert_eq!(effect, Effect::Stick { change }, "projectile of {} kg", p.mass);
         assert!((filling / target.filling - 1.0).abs() < 1e-3, "φ {filling} from {}", target.filling);
+        // The change is the difference of the filling factors to their rounding.
+        let rounding = 1e-14 * target.filling;
+        assert!((target.filling + change - filling).abs() < rounding, "{change} against {filling}");
     }
+}
+
+#[test]
+fn a_monomer_on_a_large_body_changes_its_filling_factor_by_far_less_than_its_rounding() {
+    // A monomer sticking to a 1.08 × 10⁴ kg aggregate (φ = 3.9 × 10⁻⁴)
+    // raises φ by 5.4 × 10⁻²² of itself, below the rounding of φ: the
+    // difference of two filling factors is then ±1 unit in the last place,
+    // and a sequence of 2⁵³ such collisions (4.21) once extrapolated it to
+    // a filling factor below 0. The change is computed without the
+    // difference, and 2⁵³ collisions raise φ by 5 × 10⁻⁶ of itself.
+    let col = column(20.0, Compaction::Full).column;
+    let mono = Monomer::ice();
+    let target = Body { mass: 10_832.075_977_814_742, filling: 3.931_181_861_490_709_6e-4 };
+    let projectile = Body { mass: 5.864_417_352_582_794e-18, filling: 0.999_997_844_317_455_8 };
+    let family = |b: Body| Family { mass: b.mass, filling: b.filling, groups: 1.0, zoom: 0, props: col.props(b) };
+    let (t, p) = (family(target), family(projectile));
+    let v = col.velocity(&t, &p);
+    let change = col.filling_change(target, projectile, v);
+    let volume = |b: Body| b.mass / (mono.density * b.filling);
+    let expected = target.filling * (projectile.mass / target.mass - 7.94 * volume(projectile) / volume(target));
+    assert!((change / expected - 1.0).abs() < 1e-9, "{change:e} against {expected:e}");
+    let per = 2f64.powi(53);
+    let after = target.filling + per * change;
+    assert!(after > target.filling && (after / target.filling - 1.0) < 1e-5, "{after:e}");
+    let (_, effect) = col.pair(&t, &p);
+    assert_eq!(effect, Effect::Stick { change });
 }
 
 #[test]

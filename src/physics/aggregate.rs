@@ -495,12 +495,25 @@ pub fn outcome(m1: f64, m2: f64, v: f64, th: &Thresholds) -> Outcome {
 /// 2012): V₁ + V₂ + min{0.99 − 1.03 ln[2/(V₁/V₂ + 1)], 6.94}·V₂.
 pub fn hit_and_stick_volume(v1: f64, v2: f64) -> f64 {
     let (a, b) = if v1 >= v2 { (v1, v2) } else { (v2, v1) };
+    a + b + hit_and_stick_void(a, b)
+}
+
+/// What a hit-and-stick collision adds to the volume `v_target` of one of
+/// the particles: [`hit_and_stick_volume`] − V_target, the other's volume
+/// plus the void, without the cancellation of that difference (a monomer on
+/// a body of 10¹⁹ monomers adds 10⁻²⁴ of its volume).
+pub fn hit_and_stick_growth(v_target: f64, v_projectile: f64) -> f64 {
+    let (a, b) = if v_target >= v_projectile { (v_target, v_projectile) } else { (v_projectile, v_target) };
+    v_projectile + hit_and_stick_void(a, b)
+}
+
+/// The void term of [`hit_and_stick_volume`] for volumes a ≥ b.
+fn hit_and_stick_void(a: f64, b: f64) -> f64 {
     // Above V₁/V₂ = 2e^{5.95/1.03} − 1 ≈ 644 the void term is capped: no logarithm needed.
     if a > 650.0 * b {
-        return a + b + 6.94 * b;
+        return 6.94 * b;
     }
-    let void = (0.99 - 1.03 * (2.0 / (a / b + 1.0)).ln()).min(6.94) * b;
-    a + b + void
+    (0.99 - 1.03 * (2.0 / (a / b + 1.0)).ln()).min(6.94) * b
 }
 
 /// The geometry of aggregates of one mass at any filling factor: what
@@ -756,5 +769,18 @@ mod tests {
         assert!((hit_and_stick_volume(1.0, 1.0) - 2.99).abs() < 1e-12);
         // A tiny projectile adds at most 1 + 6.94 of its own volume.
         assert!((hit_and_stick_volume(1.0, 1e-9) - (1.0 + 7.94e-9)).abs() < 1e-15);
+    }
+
+    /// The growth is the volume's difference, to rounding, either way round,
+    /// and keeps a change far below the rounding of the volume itself.
+    #[test]
+    fn hit_and_stick_growth_is_the_difference_without_cancellation() {
+        for (vt, vp) in [(1.0, 1.0), (1.0, 0.3), (0.3, 1.0), (1.0, 1e-3), (1e-3, 1.0), (5.0, 5.0 / 700.0)] {
+            let growth = hit_and_stick_growth(vt, vp);
+            let difference = hit_and_stick_volume(vt, vp) - vt;
+            assert!((growth / difference - 1.0).abs() < 1e-12, "{vt} {vp}: {growth} against {difference}");
+        }
+        assert!((hit_and_stick_growth(2.75e4, 5.86e-21) / (7.94 * 5.86e-21) - 1.0).abs() < 1e-15);
+        assert_eq!(hit_and_stick_volume(2.75e4, 5.86e-21), 2.75e4);
     }
 }

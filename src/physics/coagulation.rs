@@ -29,7 +29,7 @@ use super::PhysicsError;
 use super::aggregate::{
     Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants, TurbulenceModel,
     dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
-    hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
+    hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
 };
 use super::constants::K_B;
 use super::disk::Local;
@@ -161,6 +161,16 @@ impl Column {
         filling_with(&k, (t.mass, volume(t)), (p.mass, volume(p)), v)
     }
 
+    /// The change of the target's filling factor in a sticking collision
+    /// before gas and self-gravity act: [`Column::filling_after`] − φ_t,
+    /// computed without that difference's cancellation (see
+    /// [`Model::collide`]'s sticking outcome).
+    pub fn filling_change(&self, t: Body, p: Body, v: f64) -> f64 {
+        let k = Constants::of(self);
+        let volume = |b: Body| b.mass / (k.rho0 * b.filling);
+        filling_change_with(&k, (t.mass, volume(t), t.filling), (p.mass, volume(p)), v)
+    }
+
     /// The filling factor after compression by gas ram pressure and
     /// self-gravity (4.15)–(4.16), Sect. 4.3.5: at least the value at which
     /// the compressive strength withstands both.
@@ -208,14 +218,24 @@ fn drift_terms(env: &Local, st: f64) -> (f64, f64, f64) {
 /// taken only where it can exceed the hit-and-stick filling factor: it does
 /// where φ_c¹⁰ = x³/N² (x = E/(3bN E_roll)) exceeds φ_hs¹⁰, compared in
 /// products (the same result; a near tie takes the logarithms).
-fn filling_with(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v: f64) -> f64 {
+fn filling_with(k: &Constants, target: (f64, f64), projectile: (f64, f64), v: f64) -> f64 {
+    sticking_filling(k, target, projectile, v).0
+}
+
+/// The filling factor of a sticking product (as [`filling_with`]) and
+/// whether it is the hit-and-stick value below 1 (neither compacted nor
+/// capped).
+fn sticking_filling(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v: f64) -> (f64, bool) {
     let m = mt + mp;
-    let phi_hs = (m / (k.rho0 * hit_and_stick_volume(vt, vp))).min(1.0);
+    let phi_hs = m / (k.rho0 * hit_and_stick_volume(vt, vp));
+    if phi_hs >= 1.0 {
+        return (1.0, false);
+    }
     let inv_m = 1.0 / m;
     let e = 0.5 * mt * mp * inv_m * v * v;
     let onset = 3.0 * B_COMPACT * k.e_roll;
     if e <= onset {
-        return phi_hs;
+        return (phi_hs, true);
     }
     let n = m / k.m0;
     let x = e * k.m0 * inv_m / onset;
@@ -223,10 +243,27 @@ fn filling_with(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v: f6
     let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
     let below = x * x * x < hs10 * n * n * (1.0 - 1e-9);
     if below && hs10 > 1e-250 && n < 1e100 {
-        return phi_hs;
+        return (phi_hs, true);
     }
     let phi_c = (0.3 * x.ln() - 0.2 * n.ln()).exp();
-    phi_hs.max(phi_c).min(1.0)
+    if phi_c > phi_hs { (phi_c.min(1.0), false) } else { (phi_hs, true) }
+}
+
+/// The change of the target's filling factor in a sticking collision,
+/// φ_product − φ_t, for a target (mass, volume, φ) and a projectile (mass,
+/// volume). Where the product keeps the hit-and-stick value it is
+/// φ_t (m_p/m_t − ΔV/V_t)/(1 + ΔV/V_t) with ΔV the volume the collision adds
+/// ([`hit_and_stick_growth`]): a small projectile changes φ by far less than
+/// the rounding of φ itself (10⁻²² of it for a monomer on a body of 10⁴
+/// kg), and a sequence of 2^N such collisions (4.21) extrapolates that
+/// change, not the rounding of a difference of two filling factors.
+fn filling_change_with(k: &Constants, (mt, vt, phi_t): (f64, f64, f64), (mp, vp): (f64, f64), v: f64) -> f64 {
+    let (phi, hit_and_stick) = sticking_filling(k, (mt, vt), (mp, vp), v);
+    if !hit_and_stick {
+        return phi - phi_t;
+    }
+    let grown = hit_and_stick_growth(vt, vp) / vt;
+    phi_t * (mp / mt - grown) / (1.0 + grown)
 }
 
 impl Column {
@@ -240,7 +277,8 @@ impl Column {
                 // merge may move them a little without refreshing those, and
                 // the change of φ in one collision is a small difference.
                 let volume = |f: &Family<Props>| f.mass / (k.rho0 * f.filling);
-                Effect::Stick { filling: filling_with(k, (t.mass, volume(t)), (p.mass, volume(p)), v) }
+                let change = filling_change_with(k, (t.mass, volume(t), t.filling), (p.mass, volume(p)), v);
+                Effect::Stick { change }
             }
             Outcome::Erode { efficiency } => {
                 let lost = self.c1 * efficiency * p.mass;
@@ -295,7 +333,7 @@ impl Model for Column {
         let m0 = self.monomer.mass();
         let fragments_of = |mass: f64| (projectile.mass / 10.0).max(m0).min(mass);
         match outcome(t.mass, p.mass, v, &self.thresholds) {
-            Outcome::Stick => Collision::Stick { filling: self.filling_after(t, p, v) },
+            Outcome::Stick => Collision::Stick { change: self.filling_change(t, p, v) },
             Outcome::Erode { efficiency } => {
                 let eps = self.c1 * efficiency; // erosion_efficiency(c1, v, v_eros)
                 let lost = eps * p.mass;

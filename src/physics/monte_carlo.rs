@@ -66,10 +66,12 @@ impl<P> Family<P> {
 /// the more massive particle).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Collision {
-    /// The particles merge into one of mass m_t + m_p and this filling factor.
+    /// The particles merge into one of mass m_t + m_p whose filling factor
+    /// is the target's plus `change`.
     Stick {
-        /// Filling factor of the product.
-        filling: f64,
+        /// φ_product − φ_target: a difference, so that a change far below the
+        /// rounding of φ survives a sequence of many collisions (4.21).
+        change: f64,
     },
     /// The target loses mass `loss` (its filling factor unchanged); the lost
     /// mass and the projectile leave as `count` fragments `fragment` (count
@@ -97,10 +99,10 @@ pub enum Collision {
 /// sequence limits (4.22)–(4.24) need it.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Effect {
-    /// The particles stick into one of this filling factor.
+    /// The particles stick; the target's filling factor changes by `change`.
     Stick {
-        /// Filling factor of the product.
-        filling: f64,
+        /// φ_product − φ_target (as in [`Collision::Stick`]).
+        change: f64,
     },
     /// The target loses this mass.
     Erode {
@@ -117,7 +119,7 @@ impl Effect {
     /// The effect of `collision`.
     pub fn of(collision: Collision) -> Effect {
         match collision {
-            Collision::Stick { filling } => Effect::Stick { filling },
+            Collision::Stick { change } => Effect::Stick { change },
             Collision::Erode { loss, .. } => Effect::Erode { loss },
             Collision::Shatter { .. } => Effect::Shatter,
             Collision::Bounce => Effect::Bounce,
@@ -201,8 +203,8 @@ impl Model for Analytic {
     }
 
     fn collide(&self, target: &Family<()>, projectile: &Family<()>) -> Collision {
-        let _ = (target, projectile);
-        Collision::Stick { filling: 1.0 }
+        let _ = projectile;
+        Collision::Stick { change: 1.0 - target.filling }
     }
 }
 
@@ -709,7 +711,7 @@ impl<M: Model> Engine<M> {
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
         let c = rate / self.volume;
         let (dm, dphi, c) = match effect {
-            Effect::Stick { filling } => (p.mass, (filling - t.filling).abs(), c),
+            Effect::Stick { change } => (p.mass, change.abs(), c),
             Effect::Erode { loss } => (loss, 0.0, c),
             Effect::Shatter => (t.mass, t.filling, c),
             // Nothing happens: such events are left out.
@@ -1018,21 +1020,21 @@ impl<M: Model> Engine<M> {
         let single = if lo_is_target { self.model.collide(lo, hi) } else { self.model.collide(hi, lo) };
         let target = if lo_is_target { lo } else { hi };
         let projectile = if lo_is_target { hi } else { lo };
-        let grown = |dm: f64, filling: f64| Body {
+        let grown = |dm: f64, dphi: f64| Body {
             mass: target.mass + per * dm,
-            filling: (target.filling + per * (filling - target.filling)).clamp(1e-300, 1.0),
+            filling: (target.filling + per * dphi).clamp(1e-300, 1.0),
         };
         let model = &self.model;
         let compacted = |b: Body| Body { filling: model.compact(b), ..b };
         let fragment_zoom = |count: f64| count.log2().floor().max(0.0) as i32;
         match single {
-            Collision::Stick { filling } => {
+            Collision::Stick { change } => {
                 self.tally.stick += 1;
-                made.push((compacted(grown(projectile.mass, filling)), units, zoom, Made::Stuck));
+                made.push((compacted(grown(projectile.mass, change)), units, zoom, Made::Stuck));
             }
             Collision::Erode { loss, fragment, count } => {
                 self.tally.erode += 1;
-                let remnant = grown(-loss, target.filling);
+                let remnant = grown(-loss, 0.0);
                 let lost = units * per * count;
                 if remnant.mass > 0.0 {
                     made.push((remnant, units, zoom, Made::Broken));
@@ -1420,7 +1422,7 @@ mod tests {
             self.0
         }
         fn pair(&self, _: &Family<()>, _: &Family<()>) -> (f64, Effect) {
-            (1.0, Effect::Stick { filling: 0.5 })
+            (1.0, Effect::Stick { change: 0.0 })
         }
     }
 
@@ -1432,7 +1434,7 @@ mod tests {
     fn every_outcome_of_a_sequence_keeps_the_mass() {
         let fragment = Body { mass: 0.5, filling: 1.0 };
         for collision in [
-            Collision::Stick { filling: 0.4 },
+            Collision::Stick { change: -0.1 },
             Collision::Erode { loss: 2.0, fragment, count: 16.0 },
             Collision::Shatter { fragment, count: 212.0 },
             Collision::Bounce,

@@ -213,12 +213,15 @@ pub struct Rosenbrock4<const N: usize> {
     pub h: f64,
     /// Work counters.
     pub stats: SolverStats,
+    /// The step and error norm of the last accepted step, when the step
+    /// before it was accepted too (for the predictive step-size controller).
+    last: Option<(f64, f64)>,
 }
 
 impl<const N: usize> Rosenbrock4<N> {
     /// A new integrator starting with step `h0`.
     pub fn new(rtol: f64, scale: State<N>, h0: f64) -> Self {
-        Self { rtol, scale, h_min: h0 * 1e-12, max_steps: 200_000, h: h0, stats: SolverStats::default() }
+        Self { rtol, scale, h_min: h0 * 1e-12, max_steps: 200_000, h: h0, stats: SolverStats::default(), last: None }
     }
 
     /// One attempted step of size `h` from `y`. Returns the new state and the
@@ -269,7 +272,11 @@ impl<const N: usize> Rosenbrock4<N> {
     }
 
     /// Advances `y` by one accepted step no longer than `h_max`, adapting the
-    /// step size. Returns the new state and the step taken.
+    /// step size. Returns the new state and the step taken. After two
+    /// accepted steps in a row the next step follows Gustafsson's
+    /// predictive controller (Hairer & Wanner, Sect. IV.8),
+    /// h_{n+1} = 0.9 h_n (h_n/h_{n−1}) (err_{n−1}/err_n)^{1/4} err_n^{−1/4};
+    /// otherwise h_{n+1} = 0.9 h_n err_n^{−1/4}.
     pub fn advance<S: StiffSystem<N>>(
         &mut self,
         sys: &S,
@@ -293,18 +300,28 @@ impl<const N: usize> Rosenbrock4<N> {
                 Some((y_new, err)) if err <= 1.0 => {
                     self.stats.accepted += 1;
                     let growth = if rejected { 1.0 } else { 5.0 };
-                    let factor = if err == 0.0 { growth } else { (0.9 * err.powf(-0.25)).clamp(0.2, growth) };
-                    self.h = h * factor;
+                    let err = err.max(1e-4);
+                    let mut factor = 0.9 * err.powf(-0.25);
+                    if let (Some((h_last, err_last)), false) = (self.last, rejected) {
+                        // Gustafsson's predictive controller: where the
+                        // error per step stays put while the step grows (a
+                        // power law in t), the step keeps growing.
+                        factor *= (h / h_last) * (err_last / err).powf(0.25);
+                    }
+                    self.h = h * factor.clamp(0.2, growth);
+                    self.last = if rejected { None } else { Some((h, err)) };
                     return Ok((y_new, h));
                 }
                 Some((_, err)) => {
                     self.stats.rejected += 1;
                     rejected = true;
+                    self.last = None;
                     h *= (0.9 * err.powf(-1.0 / 3.0)).clamp(0.1, 0.5);
                 }
                 None => {
                     self.stats.rejected += 1;
                     rejected = true;
+                    self.last = None;
                     h *= 0.25;
                 }
             }

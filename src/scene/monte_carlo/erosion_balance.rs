@@ -49,6 +49,25 @@ pub fn steady_state(run: &Run) -> (f64, f64) {
     (median(&|s| s.stokes_max), median(&|s| s.m_max))
 }
 
+/// The lowest ζ and the steady state are read off a run's history, whose
+/// samples include the snapshot times: more snapshots sample the same run at
+/// more times (and the run pauses there to take them, so the samples set by
+/// the growth of m_p fall elsewhere).
+const SNAPSHOT_SAMPLES: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "*",
+    parameter: "snapshots",
+    kind: crate::scene::core::Irregularity::Moves,
+    why: "the lowest ζ and the steady state are taken over the run's history, which is also sampled at every snapshot",
+    resolution: None,
+};
+
+/// The median of `values` (NaN for none; the upper of the two middle values
+/// for an even count).
+fn median(mut values: Vec<f64>) -> f64 {
+    values.sort_by(|a, b| a.total_cmp(b));
+    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+}
+
 impl Scene for Params {
     const INFO: SceneInfo = SceneInfo {
         id: "erosion-balance",
@@ -64,7 +83,13 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = super::common::COLUMN_DECLARED;
+    const DECLARED: &'static [crate::scene::core::Declared] = &[
+        super::common::EVENT_COUNT,
+        super::common::FAMILY_COUNT,
+        super::common::EROSION_ONSET,
+        super::common::STOP_OUT_OF_REACH,
+        SNAPSHOT_SAMPLES,
+    ];
     const PAUSABLE: bool = true;
 
     /// The runs at w* ≤ 10, at most two seeds and 0.2 million events a run.
@@ -166,9 +191,13 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             zeta = zeta.with(Series::new(name, pts, Style::Line, k));
         }
         if let Some(r) = runs.first() {
-            let (st, m) = steady_state(r);
+            let (st, _) = steady_state(r);
             zeta = zeta.with(Series::new("", vec![[st, r.history.last().map_or(1.0, |s| s.zeta)]], Style::Marker, k));
-            let zmin = r.history.iter().map(|s| s.zeta).fold(1.0, f64::min);
+            // Over several runs, the median of the runs' values.
+            let steady: Vec<(f64, f64)> = runs.iter().map(steady_state).collect();
+            let st = median(steady.iter().map(|s| s.0).collect());
+            let m = median(steady.iter().map(|s| s.1).collect());
+            let zmin = median(runs.iter().map(|r| r.history.iter().map(|s| s.zeta).fold(1.0, f64::min)).collect());
             scalars.push(Scalar { key: keys[k].0, label: "steady Ωt_s(m_max)", value: st, unit: "" });
             scalars.push(Scalar { key: keys[k].1, label: "steady m_max", value: m, unit: "kg" });
             scalars.push(Scalar { key: keys[k].2, label: "lowest ζ", value: zmin, unit: "" });
@@ -214,5 +243,27 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
         figures: vec![zeta, proj],
         notes,
         extra: crate::scene::core::Extra::None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The scene declares what every column declares and the snapshots'
+    /// share in its history.
+    #[test]
+    fn the_scene_declares_what_every_column_declares() {
+        let own = <Params as Scene>::DECLARED;
+        let shared = super::super::common::COLUMN_DECLARED;
+        assert_eq!(&own[..shared.len()], shared);
+        assert_eq!(own[shared.len()..], [SNAPSHOT_SAMPLES]);
+    }
+
+    #[test]
+    fn the_median_takes_the_middle_value() {
+        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
+        assert_eq!(median(vec![4.0, 1.0]), 4.0);
+        assert!(median(Vec::new()).is_nan());
     }
 }

@@ -61,11 +61,11 @@ const SNAPSHOT_SAMPLES: crate::scene::core::Declared = crate::scene::core::Decla
     resolution: None,
 };
 
-/// The median of `values` (NaN for none; the upper of the two middle values
-/// for an even count).
-fn median(mut values: Vec<f64>) -> f64 {
-    values.sort_by(|a, b| a.total_cmp(b));
-    values.get(values.len() / 2).copied().unwrap_or(f64::NAN)
+/// The mean of `values` over the runs (NaN for none), as the other column
+/// scenes average their scalars over the runs.
+fn mean(values: impl ExactSizeIterator<Item = f64>) -> f64 {
+    let n = values.len();
+    if n == 0 { f64::NAN } else { values.sum::<f64>() / n as f64 }
 }
 
 impl Scene for Params {
@@ -193,11 +193,11 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
         if let Some(r) = runs.first() {
             let (st, _) = steady_state(r);
             zeta = zeta.with(Series::new("", vec![[st, r.history.last().map_or(1.0, |s| s.zeta)]], Style::Marker, k));
-            // Over several runs, the median of the runs' values.
+            // Over several runs, the mean of the runs' values.
             let steady: Vec<(f64, f64)> = runs.iter().map(steady_state).collect();
-            let st = median(steady.iter().map(|s| s.0).collect());
-            let m = median(steady.iter().map(|s| s.1).collect());
-            let zmin = median(runs.iter().map(|r| r.history.iter().map(|s| s.zeta).fold(1.0, f64::min)).collect());
+            let st = mean(steady.iter().map(|s| s.0));
+            let m = mean(steady.iter().map(|s| s.1));
+            let zmin = mean(runs.iter().map(|r| r.history.iter().map(|s| s.zeta).fold(1.0, f64::min)));
             scalars.push(Scalar { key: keys[k].0, label: "steady Ωt_s(m_max)", value: st, unit: "" });
             scalars.push(Scalar { key: keys[k].1, label: "steady m_max", value: m, unit: "kg" });
             scalars.push(Scalar { key: keys[k].2, label: "lowest ζ", value: zmin, unit: "" });
@@ -261,9 +261,9 @@ mod tests {
     }
 
     #[test]
-    fn the_median_takes_the_middle_value() {
-        assert_eq!(median(vec![3.0, 1.0, 2.0]), 2.0);
-        assert_eq!(median(vec![4.0, 1.0]), 4.0);
-        assert!(median(Vec::new()).is_nan());
+    fn the_mean_is_over_the_runs() {
+        assert_eq!(mean([3.0, 1.0, 2.0].into_iter()), 2.0);
+        assert_eq!(mean([4.0, 1.0].into_iter()), 2.5);
+        assert!(mean(std::iter::empty()).is_nan());
     }
 }

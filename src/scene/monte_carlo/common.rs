@@ -310,6 +310,16 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 pub const COLUMN_DECLARED: &[crate::scene::core::Declared] =
     &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH];
 
+/// What a column scene declares beyond [`COLUMN_DECLARED`], after checking
+/// that its declarations start with those (a test helper: every column scene
+/// must declare what every column declares).
+#[cfg(test)]
+pub fn declared_beyond_column(own: &'static [crate::scene::core::Declared]) -> &'static [crate::scene::core::Declared] {
+    assert!(own.len() >= COLUMN_DECLARED.len(), "the scene declares less than every column declares");
+    assert_eq!(&own[..COLUMN_DECLARED.len()], COLUMN_DECLARED);
+    &own[COLUMN_DECLARED.len()..]
+}
+
 /// The first snapshot's time sets what the figures draw, not the scalars:
 /// those come from the end of the runs, and the runs take the same random
 /// path whatever the snapshot times.

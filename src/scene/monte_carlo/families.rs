@@ -186,9 +186,9 @@ mod tests {
     /// display parameters.
     #[test]
     fn the_scene_declares_what_every_column_declares() {
-        let own = <Params as Scene>::DECLARED;
-        let shared = super::super::common::COLUMN_DECLARED;
-        assert_eq!(&own[..shared.len()], shared);
-        assert_eq!(own.len(), shared.len() + 2);
+        let own = super::super::common::declared_beyond_column(<Params as Scene>::DECLARED);
+        let parameters: Vec<&str> = own.iter().map(|d| d.parameter).collect();
+        assert_eq!(parameters, ["t_first_yr", "track"]);
+        assert_eq!(own[0], super::super::common::FIRST_SNAPSHOT);
     }
 }

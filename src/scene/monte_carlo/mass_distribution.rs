@@ -190,9 +190,7 @@ mod tests {
     /// snapshot's time, which only the figure shows.
     #[test]
     fn the_scene_declares_what_every_column_declares() {
-        let own = <Params as Scene>::DECLARED;
-        let shared = super::super::common::COLUMN_DECLARED;
-        assert_eq!(&own[..shared.len()], shared);
-        assert_eq!(&own[shared.len()..], &[super::super::common::FIRST_SNAPSHOT]);
+        let own = super::super::common::declared_beyond_column(<Params as Scene>::DECLARED);
+        assert_eq!(own, [super::super::common::FIRST_SNAPSHOT]);
     }
 }

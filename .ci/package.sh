@@ -15,10 +15,40 @@
 # and ziglang from PyPI (into a virtual environment of its own).
 # `.ci/test-artifacts.sh OUT` then runs each of them.
 # Usage: .ci/package.sh [OUT]
+#   GRAINSCOPE_WINDOWS_TARGET: the cargo target of the Windows build (default
+#   CARGO_TARGET_DIR), so that it can be built beforehand in a directory of
+#   its own while other builds use CARGO_TARGET_DIR:
+#     .ci/package.sh --prepare-windows   installs what the Windows build needs
+#     .ci/package.sh --build-windows     builds grainscope.exe and nothing else
 set -euo pipefail
 cd "$(dirname "$0")/.."
-out=$(realpath -m "${1:-ci-output/release}")
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/grainscope-target}"
+windows_target="${GRAINSCOPE_WINDOWS_TARGET:-$CARGO_TARGET_DIR}"
+
+# What the Windows build needs: Debian's mingw-w64 (and zip for its archive),
+# rustup's target.
+prepare_windows() {
+    if ! command -v x86_64-w64-mingw32-gcc >/dev/null || ! command -v zip >/dev/null; then
+        apt-get update -qq
+        DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gcc-mingw-w64-x86-64 zip >/dev/null
+    fi
+    rustup target add x86_64-pc-windows-gnu >/dev/null
+}
+build_windows() {
+    CARGO_TARGET_DIR="$windows_target" CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER=x86_64-w64-mingw32-gcc \
+        cargo build --release --target x86_64-pc-windows-gnu --bin grainscope
+}
+case "${1:-}" in
+    --prepare-windows)
+        prepare_windows
+        exit 0
+        ;;
+    --build-windows)
+        build_windows
+        exit 0
+        ;;
+esac
+out=$(realpath -m "${1:-ci-output/release}")
 version=$(awk -F'"' '/^version = / { print $2; exit }' Cargo.toml)
 commit=$(git rev-parse --short=12 HEAD 2>/dev/null || echo unknown)
 # Every file in the archives carries the commit's time, so that the same
@@ -85,17 +115,12 @@ pack_tar "$stage" "$name" "$out/$name.tar.gz"
 echo "$name.tar.gz: glibc >= $glibc"
 
 echo "== Windows x86_64 (mingw-w64)"
-if ! command -v x86_64-w64-mingw32-gcc >/dev/null || ! command -v zip >/dev/null; then
-    apt-get update -qq
-    DEBIAN_FRONTEND=noninteractive apt-get install -y -qq gcc-mingw-w64-x86-64 zip >/dev/null
-fi
-rustup target add x86_64-pc-windows-gnu >/dev/null
-CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER=x86_64-w64-mingw32-gcc \
-    cargo build --release --target x86_64-pc-windows-gnu --bin grainscope
+prepare_windows
+build_windows
 name="grainscope-$version-x86_64-windows"
 dir="$stage/$name"
 common "$dir"
-install -m 755 "$CARGO_TARGET_DIR/x86_64-pc-windows-gnu/release/grainscope.exe" "$dir/grainscope.exe"
+install -m 755 "$windows_target/x86_64-pc-windows-gnu/release/grainscope.exe" "$dir/grainscope.exe"
 x86_64-w64-mingw32-strip "$dir/grainscope.exe"
 # The DLLs it needs are all part of Windows: no MinGW runtime beside it.
 if x86_64-w64-mingw32-objdump -p "$dir/grainscope.exe" | grep -iE 'DLL Name: (libgcc|libwinpthread|libstdc)'; then

@@ -308,7 +308,7 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 /// What the continuity audit finds in a column's scalars that is the method
 /// or the physics, not a defect.
 pub const COLUMN_DECLARED: &[crate::scene::core::Declared] =
-    &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH];
+    &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH, FRAGMENTATION_BARRIER];
 
 /// What a column scene declares beyond [`COLUMN_DECLARED`], after checking
 /// that its declarations start with those (a test helper: every column scene
@@ -351,6 +351,24 @@ pub const EROSION_ONSET: crate::scene::core::Declared = crate::scene::core::Decl
     parameter: "v_eros",
     kind: crate::scene::core::Irregularity::Step,
     why: "a threshold: above the fastest collision of the run nothing erodes and ζ = 1 exactly (4.13), (4.34)",
+    resolution: None,
+};
+
+/// The fragmentation barrier: collisions of particles within a mass ratio of
+/// 10⁻² shatter at v ≥ v_frag. Where the fastest of them between the peak's
+/// bodies near Ωt_s ≈ 1 exceeds v_frag, the peak stalls there and only a few
+/// lucky bodies pass; where v_frag exceeds it, the peak grows through. The
+/// end of a run (its mass, filling factor, Stokes number and time) therefore
+/// steps where v_frag crosses that speed: about 48.7 m/s at 5 AU in
+/// `mc-fig-5-2-porosity` at w* = 10, where runs of 200 000 group events
+/// mostly end with m_p = 10⁷–10⁹ kg below it (a lucky one passes) and all
+/// reach the stop mass of 10¹² kg above it, while less similar pairs still
+/// shatter on both sides.
+pub const FRAGMENTATION_BARRIER: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "*",
+    parameter: "v_frag",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "a threshold, the fragmentation barrier: below the speed of the peak's collisions with similar bodies (mass ratio ≥ 10⁻²) near Ωt_s ≈ 1 growth stalls there and only lucky bodies pass; above it the peak grows through",
     resolution: None,
 };
 

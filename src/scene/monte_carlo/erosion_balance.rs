@@ -88,6 +88,7 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         super::common::FAMILY_COUNT,
         super::common::EROSION_ONSET,
         super::common::STOP_OUT_OF_REACH,
+        super::common::FRAGMENTATION_BARRIER,
         SNAPSHOT_SAMPLES,
     ];
     const PAUSABLE: bool = true;

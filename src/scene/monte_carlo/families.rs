@@ -60,6 +60,7 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         super::common::FAMILY_COUNT,
         super::common::EROSION_ONSET,
         super::common::STOP_OUT_OF_REACH,
+        super::common::FRAGMENTATION_BARRIER,
         super::common::FIRST_SNAPSHOT,
         crate::scene::core::Declared {
             scalar: "*",

@@ -69,6 +69,7 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
         super::common::FAMILY_COUNT,
         super::common::EROSION_ONSET,
         super::common::STOP_OUT_OF_REACH,
+        super::common::FRAGMENTATION_BARRIER,
         super::common::FIRST_SNAPSHOT,
     ];
     const PAUSABLE: bool = true;

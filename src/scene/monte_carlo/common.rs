@@ -305,10 +305,25 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
         .collect()
 }
 
+/// The declarations of a column scene: every column's ([`COLUMN_DECLARED`])
+/// followed by the scene's own, as one constant slice.
+macro_rules! column_declared {
+    ($($own:expr),* $(,)?) => {
+        &[
+            $crate::scene::monte_carlo::common::EVENT_COUNT,
+            $crate::scene::monte_carlo::common::FAMILY_COUNT,
+            $crate::scene::monte_carlo::common::EROSION_ONSET,
+            $crate::scene::monte_carlo::common::STOP_OUT_OF_REACH,
+            $crate::scene::monte_carlo::common::FRAGMENTATION_BARRIER,
+            $($own),*
+        ]
+    };
+}
+pub(crate) use column_declared;
+
 /// What the continuity audit finds in a column's scalars that is the method
 /// or the physics, not a defect.
-pub const COLUMN_DECLARED: &[crate::scene::core::Declared] =
-    &[EVENT_COUNT, FAMILY_COUNT, EROSION_ONSET, STOP_OUT_OF_REACH, FRAGMENTATION_BARRIER];
+pub const COLUMN_DECLARED: &[crate::scene::core::Declared] = column_declared![];
 
 /// What a column scene declares beyond [`COLUMN_DECLARED`], after checking
 /// that its declarations start with those (a test helper: every column scene

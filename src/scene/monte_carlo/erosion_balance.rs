@@ -83,14 +83,7 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[
-        super::common::EVENT_COUNT,
-        super::common::FAMILY_COUNT,
-        super::common::EROSION_ONSET,
-        super::common::STOP_OUT_OF_REACH,
-        super::common::FRAGMENTATION_BARRIER,
-        SNAPSHOT_SAMPLES,
-    ];
+    const DECLARED: &'static [crate::scene::core::Declared] = super::common::column_declared![SNAPSHOT_SAMPLES];
     const PAUSABLE: bool = true;
 
     /// The runs at w* ≤ 10, at most two seeds and 0.2 million events a run.

@@ -55,12 +55,7 @@ inherit the fractal dimension of their target (4.14) and the distribution of φ 
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[
-        super::common::EVENT_COUNT,
-        super::common::FAMILY_COUNT,
-        super::common::EROSION_ONSET,
-        super::common::STOP_OUT_OF_REACH,
-        super::common::FRAGMENTATION_BARRIER,
+    const DECLARED: &'static [crate::scene::core::Declared] = super::common::column_declared![
         super::common::FIRST_SNAPSHOT,
         crate::scene::core::Declared {
             scalar: "*",

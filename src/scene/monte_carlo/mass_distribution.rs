@@ -64,14 +64,8 @@ drift barrier (t_grow ≪ t_drift); with erosion (v_eros) the largest bodies sta
         heavy: true,
     };
 
-    const DECLARED: &'static [crate::scene::core::Declared] = &[
-        super::common::EVENT_COUNT,
-        super::common::FAMILY_COUNT,
-        super::common::EROSION_ONSET,
-        super::common::STOP_OUT_OF_REACH,
-        super::common::FRAGMENTATION_BARRIER,
-        super::common::FIRST_SNAPSHOT,
-    ];
+    const DECLARED: &'static [crate::scene::core::Declared] =
+        super::common::column_declared![super::common::FIRST_SNAPSHOT];
     const PAUSABLE: bool = true;
 
     fn time_cursor(&mut self) -> Option<&mut f64> {

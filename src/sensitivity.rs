@@ -16,11 +16,11 @@
 //! gap, never a zero.
 
 use crate::figure::{self, Axis, Figure, Heatmap, Scale, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::PhysicsError;
 use crate::scene::schema::SpecKind;
 use crate::scene::{self, DefaultValue, Progress, SceneError, SceneParams};
 use crate::sweep::{Plan, Spacing, Vary};
-use rayon::prelude::*;
 use std::collections::HashMap;
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
@@ -166,19 +166,17 @@ fn value_or_gap(params: &SceneParams, output: &str, progress: &Progress) -> Resu
     }
 }
 
-/// The values at many points, in parallel, with progress.
+/// The values at many points, in parallel, with progress (each point a
+/// unit a browser shares among its workers).
 fn values(points: &[SceneParams], output: &str, progress: &Progress) -> Result<Vec<Value>, SceneError> {
     let done = AtomicUsize::new(0);
-    let out = points
-        .par_iter()
-        .map(|p| {
-            progress.check()?;
-            let v = value_or_gap(p, output, progress)?;
-            let n = done.fetch_add(1, Ordering::Relaxed) + 1;
-            progress.set(n as f64 / points.len().max(1) as f64);
-            Ok(v)
-        })
-        .collect::<Result<Vec<Value>, SceneError>>();
+    let out = progress.units(points, |p| {
+        progress.check()?;
+        let v = value_or_gap(p, output, progress)?;
+        let n = done.fetch_add(1, Ordering::Relaxed) + 1;
+        progress.set(n as f64 / points.len().max(1) as f64);
+        Ok(v)
+    });
     progress.check()?;
     out
 }

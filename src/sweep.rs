@@ -10,8 +10,8 @@
 //! row and the sweep goes on. Nothing here touches files: the command line
 //! reads and writes the table.
 
+use crate::parallel::prelude::*;
 use crate::scene::{self, Progress, SceneError, SceneOutput, SceneParams, Status};
-use rayon::prelude::*;
 use std::fmt::Write as _;
 use std::sync::atomic::{AtomicUsize, Ordering};
 

@@ -435,3 +435,36 @@ fn the_formation_zone_quick_path_and_a_repeated_disk_set_give_the_same_edges() {
     let quick = scene::scalar(&params, "widest_zone", &Progress::default()).expect("computes").expect("a quick path");
     assert_eq!(quick, widest);
 }
+
+/// The formation zone shared among 2 and 3 processes, as a browser shares
+/// it among its workers (each takes every n-th disk, one gathers the edges
+/// and finishes), gives the undivided result to the bit, in two rounds; the
+/// dashed set equal to the solid one runs once either way.
+#[test]
+fn the_formation_zone_shared_among_processes_equals_the_undivided_one() {
+    use grainscope::scene::batches::formation_zone::Params;
+    use grainscope::scene::parts::in_turns;
+    let p = Params {
+        mass_min: 0.05,
+        mass_max: 0.2,
+        n_mass: 3,
+        z_min: 0.02,
+        z_max: 0.03,
+        n_z: 1,
+        r_c_1: 30.0,
+        r_c_2: 60.0,
+        run: BatchParams { batches: 40, ..BatchParams::default() },
+        ..Params::default()
+    };
+    let params = SceneParams::FormationZone(p);
+    let whole = scene::compute(&params, &Progress::default()).expect("valid grid");
+    let bits = |o: &scene::SceneOutput| -> Vec<u64> {
+        let points = o.figures.iter().flat_map(|f| f.series.iter().flat_map(|s| s.points.iter().flatten()));
+        o.scalars.iter().map(|s| s.value).chain(points.copied()).map(f64::to_bits).collect()
+    };
+    for n in [2, 3] {
+        let (shared, rounds) = in_turns(n, |progress| scene::compute(&params, progress)).expect("valid grid");
+        assert_eq!(rounds, 2, "{n} processes");
+        assert_eq!(bits(&shared), bits(&whole), "{n} processes");
+    }
+}

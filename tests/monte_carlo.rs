@@ -344,3 +344,41 @@ fn cached_velocity_terms_give_the_relative_velocity() {
         }
     }
 }
+
+/// Three runs of a column shared among 2 and 3 processes, as a browser
+/// shares them among its workers, are the runs of one process to the bit:
+/// each run travels as its shortest exact text.
+#[test]
+fn runs_shared_among_processes_equal_the_runs_of_one() {
+    use grainscope::scene::Progress;
+    use grainscope::scene::monte_carlo::common::ColumnParams;
+    use grainscope::scene::parts::in_turns;
+    let p = ColumnParams { runs: 3, t_first_yr: 1.0, t_end_yr: 30.0, snapshots: 2, ..ColumnParams::default() };
+    let whole = p.run(&Progress::default()).expect("runs");
+    assert_eq!(whole.len(), 3);
+    for n in [2, 3] {
+        let (shared, rounds) = in_turns(n, |progress| p.run(progress)).expect("runs");
+        assert_eq!(rounds, 2, "{n} processes");
+        assert!(shared == whole, "{n} processes: the runs differ");
+    }
+}
+
+/// The erosion balance's three thresholds shared among 2 processes (two
+/// take one each, then the third) give the undivided scene to the bit.
+#[test]
+fn the_erosion_balance_shared_among_processes_equals_the_undivided_one() {
+    use grainscope::scene::monte_carlo::common::ColumnParams;
+    use grainscope::scene::monte_carlo::erosion_balance::Params;
+    use grainscope::scene::parts::in_turns;
+    use grainscope::scene::{Progress, SceneParams, compute};
+    let run = ColumnParams { runs: 1, t_first_yr: 1.0, t_end_yr: 30.0, snapshots: 2, ..ColumnParams::default() };
+    let params = SceneParams::ErosionBalance(Params { run, ..Params::default() });
+    let whole = compute(&params, &Progress::default()).expect("runs");
+    let (shared, rounds) = in_turns(2, |progress| compute(&params, progress)).expect("runs");
+    assert_eq!(rounds, 2);
+    let bits = |o: &grainscope::scene::SceneOutput| -> Vec<u64> {
+        let points = o.figures.iter().flat_map(|f| f.series.iter().flat_map(|s| s.points.iter().flatten()));
+        o.scalars.iter().map(|s| s.value).chain(points.copied()).map(f64::to_bits).collect()
+    };
+    assert_eq!(bits(&shared), bits(&whole));
+}

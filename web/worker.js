@@ -1,5 +1,6 @@
 // A Web Worker of grainscope: the page sends ["module", compiled module]
-// once, then ["job", bytes] for each computation; the module posts
+// once, then ["job", bytes, parts] for each computation (parts: the bytes of
+// its share of a computation several workers share, or null); the module posts
 // progress, intermediate results and the result back (src/worker.rs).
 import init, { run_job } from "./grainscope.js";
 
@@ -11,5 +12,5 @@ self.onmessage = async (event) => {
     return;
   }
   await ready;
-  run_job(payload);
+  run_job(payload, event.data[2] ?? undefined);
 };

@@ -196,7 +196,7 @@ impl GrainscopeApp {
             self.apply(c);
         }
         if self.runner.busy(Lane::Sweep) || self.runner.busy(Lane::Curve) || self.runner.busy(Lane::Study) {
-            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+            ctx.request_repaint_after(self.runner.redraw_every());
         }
         if self.runner.busy(Lane::Compute) {
             // A long run offers intermediate results: draw them as they come.
@@ -205,7 +205,7 @@ impl GrainscopeApp {
             {
                 self.state.outputs[i] = Some(part);
             }
-            ctx.request_repaint_after(std::time::Duration::from_millis(100));
+            ctx.request_repaint_after(self.runner.redraw_every());
         }
     }
 }

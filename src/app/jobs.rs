@@ -317,6 +317,11 @@ pub trait Runner {
     fn can_pause(&self) -> bool {
         true
     }
+    /// How often the window redraws while a job runs, for its progress:
+    /// every 100 ms, unless drawing takes the cores the jobs run on.
+    fn redraw_every(&self) -> std::time::Duration {
+        std::time::Duration::from_millis(100)
+    }
 }
 
 /// The lanes' bookkeeping that every runner keeps: each job's generation

@@ -161,7 +161,7 @@ fn log_decades(a: f64, b: f64, d0: i32, d1: i32, max_labels: usize) -> Vec<Tick>
             }
         }
     }
-    out.sort_by(|x, y| x.value.total_cmp(&y.value));
+    crate::sorting::sort_by_key(&mut out, |x| x.value);
     out
 }
 

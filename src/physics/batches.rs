@@ -28,7 +28,7 @@ use super::aggregate::dust_scale_height;
 use super::constants::{AU, YEAR};
 use super::disk::GasDisk;
 use super::growth::{GrowthModel, GrowthState, Stop};
-use rayon::prelude::*;
+use crate::parallel::prelude::*;
 use std::f64::consts::PI;
 
 /// What became of a batch.
@@ -349,7 +349,7 @@ impl BatchRun {
             .zip(&self.masses)
             .filter_map(|(f, m)| if let Fate::Planetesimals { r, .. } = f { Some((*r, *m)) } else { None })
             .collect();
-        formed.sort_by(|a, b| a.0.total_cmp(&b.0));
+        crate::sorting::sort_by_key(&mut formed, |a| a.0);
         let total: f64 = formed.iter().map(|x| x.1).sum();
         let mut sum = 0.0;
         for (r, m) in &formed {
@@ -383,7 +383,7 @@ impl BatchRun {
             }
         }
         let mut batches: Vec<(f64, f64)> = peak.into_iter().zip(self.masses.iter().copied()).collect();
-        batches.sort_by(|a, b| b.0.total_cmp(&a.0));
+        crate::sorting::sort_by_key(&mut batches, |a| -a.0);
         let total: f64 = batches.iter().map(|x| x.1).sum();
         let at = share.clamp(0.0, 1.0) * total;
         let mut below = 0.0;
@@ -449,8 +449,8 @@ pub fn surface_density_in(points: &[(f64, f64)], smoothing: Smoothing, domain: O
     if n == 0 {
         return Vec::new();
     }
-    let mut order: Vec<usize> = (0..n).collect();
-    order.sort_by(|&a, &b| points[a].0.total_cmp(&points[b].0));
+    let keys: Vec<f64> = points.iter().map(|p| p.0).collect();
+    let order = crate::sorting::order(&keys);
     let r: Vec<f64> = order.iter().map(|&i| points[i].0).collect();
     let m: Vec<f64> = order.iter().map(|&i| points[i].1).collect();
     let mut out = vec![0.0; n];
@@ -561,8 +561,7 @@ struct Ranks {
 
 impl Ranks {
     fn new(radii: &[f64], masses: &[f64], domain: (f64, f64)) -> Ranks {
-        let mut id: Vec<usize> = (0..radii.len()).collect();
-        id.sort_by(|&a, &b| radii[a].total_cmp(&radii[b]).then(a.cmp(&b)));
+        let id = crate::sorting::order(radii);
         let mut rank = vec![0; radii.len()];
         for (p, &i) in id.iter().enumerate() {
             rank[i] = p;
@@ -642,7 +641,7 @@ impl Ranks {
                     (if j == i { r_i } else { self.at(j, t) }, self.m[q], j)
                 })
                 .collect();
-            local.sort_by(|a, b| a.0.total_cmp(&b.0));
+            crate::sorting::sort_by_key(&mut local, |a| a.0);
             let r: Vec<f64> = local.iter().map(|x| x.0).collect();
             let m: Vec<f64> = local.iter().map(|x| x.1).collect();
             let q = local.iter().position(|x| x.2 == i).unwrap_or(p - lo);
@@ -744,7 +743,7 @@ pub fn run(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resul
     // On a worker of the thread pool: each wave's parallel step is then a
     // join among the workers, not a job handed to the pool from outside and
     // waited for (a sleep and a wake of the calling thread per wave).
-    rayon::scope(|_| run_here(cfg, cancelled))
+    crate::parallel::on_pool(|| run_here(cfg, cancelled))
 }
 
 fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Result<BatchRun, PhysicsError> {

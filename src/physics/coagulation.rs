@@ -34,7 +34,7 @@ use super::aggregate::{
 use super::constants::K_B;
 use super::disk::Local;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Settings};
-use rayon::prelude::*;
+use crate::parallel::prelude::*;
 use std::f64::consts::PI;
 
 /// Compaction mechanisms (Sect. 4.4.1).
@@ -621,7 +621,7 @@ impl RunConfig {
             .collect();
         let growth_step = 10f64.powf(1.0 / per);
         let mut sampled_mass = engine.moments().1;
-        marks.sort_by(|a, b| a.0.total_cmp(&b.0));
+        crate::sorting::sort_by_key(&mut marks, |a| a.0);
         let mut snapshots = Vec::new();
         let mut history = Vec::new();
         let mut ended = "end time";
@@ -703,6 +703,19 @@ impl RunConfig {
         tick: &(dyn Fn(f64) -> bool + Sync),
         observe: &(dyn Fn(&Run) + Sync),
     ) -> Result<Vec<Run>, PhysicsError> {
+        self.run_seeds_mapped(runs, tick, observe, |ks, run| ks.par_iter().map(run).collect())
+    }
+
+    /// As [`RunConfig::run_seeds_observed`], with the runs mapped over their
+    /// numbers `0..runs` by `map` (which may share them among processes:
+    /// [`crate::scene::Progress::units`]).
+    pub fn run_seeds_mapped<E>(
+        &self,
+        runs: usize,
+        tick: &(dyn Fn(f64) -> bool + Sync),
+        observe: &(dyn Fn(&Run) + Sync),
+        map: impl FnOnce(&[usize], &(dyn Fn(&usize) -> Result<Run, PhysicsError> + Sync)) -> Result<Vec<Run>, E>,
+    ) -> Result<Vec<Run>, E> {
         let progress: Vec<std::sync::atomic::AtomicU32> =
             (0..runs).map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
         let report = |k: usize, f: f64| {
@@ -711,17 +724,21 @@ impl RunConfig {
                 progress.iter().map(|p| p.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum::<f64>();
             tick(total / runs as f64)
         };
-        (0..runs)
-            .into_par_iter()
-            .map(|k| {
-                let seed = self.settings.seed + k as u64;
-                if k == 0 {
-                    self.run_observed(seed, &|f| report(k, f), observe)
-                } else {
-                    self.run(seed, &|f| report(k, f))
-                }
-            })
-            .collect()
+        map(&(0..runs).collect::<Vec<_>>(), &|&k: &usize| self.run_number(k, &report, observe))
+    }
+
+    /// Run `k` (seed `seed + k`; the first one observed), reporting its
+    /// fraction done as `report(k, f)`. Not inlined: every mapping of
+    /// [`RunConfig::run_seeds_mapped`] calls this one copy of the engine.
+    #[inline(never)]
+    fn run_number(
+        &self,
+        k: usize,
+        report: &(dyn Fn(usize, f64) -> bool + Sync),
+        observe: &(dyn Fn(&Run) + Sync),
+    ) -> Result<Run, PhysicsError> {
+        let seed = self.settings.seed + k as u64;
+        if k == 0 { self.run_observed(seed, &|f| report(k, f), observe) } else { self.run(seed, &|f| report(k, f)) }
     }
 }
 

@@ -7,7 +7,7 @@ use super::PhysicsError;
 use super::collision::{Options, Setup, collide};
 use super::experiments::Bounded;
 use super::plasticity::{e_combined, e_plastic, yield_velocity};
-use rayon::prelude::*;
+use crate::parallel::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -348,7 +348,7 @@ pub fn nelder_mead(
     }
     let mut evaluations = n + 1;
     while evaluations < max_evaluations {
-        simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
+        crate::sorting::sort_by_key(&mut simplex, |a| a.1);
         if (simplex[n].1 - simplex[0].1).abs() <= tolerance {
             break;
         }
@@ -381,7 +381,7 @@ pub fn nelder_mead(
             }
         }
     }
-    simplex.sort_by(|a, b| a.1.total_cmp(&b.1));
+    crate::sorting::sort_by_key(&mut simplex, |a| a.1);
     let (x, fx) = simplex.swap_remove(0);
     (x, fx, evaluations)
 }

@@ -633,7 +633,7 @@ impl<M: Model> Engine<M> {
             };
             out.push((f.mass, c * partners * dm));
         }
-        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        crate::sorting::sort_by_key(&mut out, |a| a.0);
         out
     }
 

@@ -520,6 +520,8 @@ pub struct Progress {
     permille: Arc<AtomicU32>,
     partial: Arc<std::sync::Mutex<Option<Arc<SceneOutput>>>>,
     watcher: Option<Watcher>,
+    /// The share of the units this computation takes (see [`super::parts`]).
+    pub(super) parts: Option<Arc<super::parts::Ledger>>,
 }
 
 /// What a computation reports as it goes, to a [`Watcher`].
@@ -529,6 +531,9 @@ pub enum Report<'a> {
     Fraction(f64),
     /// An intermediate result was offered.
     Partial(&'a SceneOutput),
+    /// The computation (given [`super::Parts`]) shares the units of a map
+    /// among this many processes, and computes its own share now.
+    Sharing(usize),
 }
 
 /// Told of every report of a computation as it is made: where no other
@@ -596,6 +601,13 @@ impl Progress {
     /// its fraction and results nowhere (for a preview computed beside).
     pub fn quiet_child(&self) -> Progress {
         Progress { cancel: Arc::clone(&self.cancel), pause: Arc::clone(&self.pause), ..Progress::default() }
+    }
+
+    /// Tells the watcher, if any, of `report`.
+    pub(super) fn tell(&self, report: Report<'_>) {
+        if let Some(w) = &self.watcher {
+            (w.0)(report);
+        }
     }
 
     /// Offers an intermediate result of a long computation for display.

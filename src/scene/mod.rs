@@ -18,6 +18,7 @@ pub mod core;
 pub mod grid;
 pub mod inspect;
 pub mod monomer;
+pub mod parts;
 pub mod quantities;
 pub mod registry;
 pub mod schema;
@@ -29,6 +30,7 @@ pub use core::{
     Caches, Censored, Context, Declared, Extra, Irregularity, NOT_FINITE, Progress, Report, Rung, Scalar, Scene,
     SceneError, SceneInfo, SceneOutput, Seeds, Status, TimedPath, Trajectory, Watcher, logspace, status,
 };
+pub use parts::{Parts, Share};
 pub use registry::{
     Chapter, SCENES, SceneParams, chapter, compute, compute_cached, figures_of, parameter_reference, scalar,
     scenes_by_chapter,

@@ -68,7 +68,7 @@ pub fn close_matches<'a>(word: &str, known: &[&'a str]) -> Vec<&'a str> {
         .map(|k| (strsim::normalized_damerau_levenshtein(word, k), *k))
         .filter(|(score, k)| *score >= 0.66 || (word.len() >= 3 && k.contains(word)))
         .collect();
-    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+    crate::sorting::sort_by_key(&mut scored, |a| -a.0);
     scored.into_iter().take(3).map(|(_, k)| k).collect()
 }
 

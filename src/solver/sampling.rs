@@ -71,7 +71,7 @@ pub fn refine<E>(
     miss: impl Fn(f64, f64, f64) -> f64,
     mut evaluate: impl FnMut(&[f64]) -> Result<Vec<f64>, E>,
 ) -> Result<Refined, E> {
-    samples.sort_by(|a, b| a[0].total_cmp(&b[0]));
+    crate::sorting::sort_by_key(&mut samples, |a| a[0]);
     samples.dedup_by(|a, b| a[0] == b[0]);
     let mut pending: Vec<[f64; 2]> = samples.windows(2).map(|w| [w[0][0], w[1][0]]).collect();
     loop {
@@ -93,7 +93,7 @@ pub fn refine<E>(
             }
         }
         samples.extend(middles.iter().zip(&values).map(|(&m, &y)| [m, y]));
-        samples.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        crate::sorting::sort_by_key(&mut samples, |a| a[0]);
         pending = next;
     }
 }

@@ -4,10 +4,18 @@
 //! and the result come back as messages. Cancelling a running job ends its
 //! worker (a worker computing cannot be interrupted otherwise); the next
 //! job starts a fresh one. Cheap scenes compute on the page at once.
+//!
+//! Every core: a job goes out with [`Parts`] for as many workers as the
+//! browser reports cores. When it reaches a map of independent units (the
+//! disks of a grid, the runs of a column) its worker says so, and the
+//! lane's helper workers (started then, and kept) run the same job to the
+//! same map, each taking its share of the units; the page gathers the
+//! shares and sends the job to the lane's worker again, with every unit
+//! known, until it runs through (see `grainscope::scene::parts`).
 
 use crate::wire;
 use grainscope::app::jobs::{self, Done, Finished, Job, JobError, Lane, Lanes, Runner};
-use grainscope::scene::{Caches, Progress, SceneError, SceneOutput, SceneParams};
+use grainscope::scene::{Caches, Parts, Progress, SceneError, SceneOutput, SceneParams, Share};
 use std::cell::{Cell, RefCell};
 use std::rc::Rc;
 use std::sync::{Arc, Mutex};
@@ -17,8 +25,34 @@ use wasm_bindgen::prelude::*;
 /// The script each worker runs (beside the page).
 const WORKER_SCRIPT: &str = "./worker.js";
 
-/// A result as a worker reports it: lane, generation, result.
-type Report = (Lane, u64, Result<Done, JobError>);
+/// The most workers a lane shares a job among.
+const MOST_WORKERS: usize = 8;
+
+/// What a worker reports of its job (besides progress and previews).
+enum Note {
+    /// The job ran through: its result.
+    Done(Result<Done, JobError>),
+    /// It shares a map among this many workers.
+    Sharing(usize),
+    /// It stopped after its share of a map.
+    Share(Share),
+}
+
+/// A report as a worker makes it: lane, part, generation, what.
+type Report = (Lane, usize, u64, Note);
+
+/// A job a lane's workers share: the job (without its preview, which the
+/// first round alone computes) and the shares so far.
+struct Fan {
+    job: Vec<u8>,
+    /// Workers to share among (1 once a helper could not be started).
+    workers: usize,
+    /// Units known from earlier rounds, and made in this one.
+    known: Vec<(usize, String)>,
+    made: Vec<(usize, String)>,
+    /// Shares of this round still to come.
+    waiting: usize,
+}
 
 /// A lane's worker and what it reported of its job.
 struct Slot {
@@ -41,9 +75,14 @@ impl Drop for Slot {
     }
 }
 
-/// Runs jobs in Web Workers, one per lane.
+/// Runs jobs in Web Workers: one per lane, and helpers per lane for its
+/// share of a job's units.
 pub struct WorkerRunner {
-    slots: Vec<(Lane, Slot)>,
+    /// Each worker with its lane and part (0: the lane's own worker).
+    slots: Vec<(Lane, usize, Slot)>,
+    fans: Vec<(Lane, Fan)>,
+    /// Workers a job is shared among: the browser's cores.
+    workers: usize,
     inbox: Rc<RefCell<Vec<Report>>>,
     lanes: Lanes,
     caches: Mutex<Caches>,
@@ -53,8 +92,11 @@ pub struct WorkerRunner {
 impl WorkerRunner {
     /// A runner that calls `repaint` when a worker reports.
     pub fn new(repaint: impl Fn() + 'static) -> Self {
+        let cores = web_sys::window().map_or(1.0, |w| w.navigator().hardware_concurrency());
         WorkerRunner {
             slots: Vec::new(),
+            fans: Vec::new(),
+            workers: (cores as usize).clamp(1, MOST_WORKERS),
             inbox: Rc::default(),
             lanes: Lanes::default(),
             caches: Mutex::default(),
@@ -63,11 +105,76 @@ impl WorkerRunner {
     }
 
     fn slot(&self, lane: Lane) -> Option<&Slot> {
-        self.slots.iter().find(|(l, _)| *l == lane).map(|(_, s)| s)
+        self.slots.iter().find(|(l, k, _)| *l == lane && *k == 0).map(|(_, _, s)| s)
     }
 
-    /// A new worker for `lane`, given this page's compiled module.
-    fn spawn(&self, lane: Lane) -> Result<Slot, String> {
+    /// Sends `job` (encoded) to worker `part` of `lane`, starting it if
+    /// needed, as job `generation`.
+    fn send(
+        &mut self,
+        lane: Lane,
+        part: usize,
+        generation: u64,
+        job: &[u8],
+        parts: Option<Parts>,
+    ) -> Result<(), String> {
+        if !self.slots.iter().any(|(l, k, _)| *l == lane && *k == part) {
+            let slot = self.spawn(lane, part)?;
+            self.slots.push((lane, part, slot));
+        }
+        let Some((_, _, slot)) = self.slots.iter_mut().find(|(l, k, _)| *l == lane && *k == part) else {
+            return Err("no worker".into());
+        };
+        slot.generation.set(generation);
+        slot.busy = true;
+        let parts = match parts.map(|p| wire::encode(&p)).transpose()? {
+            Some(bytes) => JsValue::from(js_sys::Uint8Array::from(&bytes[..])),
+            None => JsValue::NULL,
+        };
+        let message = js_sys::Array::of3(&JsValue::from_str("job"), &js_sys::Uint8Array::from(job), &parts);
+        slot.worker.post_message(&message).map_err(|e| format!("the job could not be sent to a worker ({e:?})"))
+    }
+
+    /// Acts on a worker's note that its job shares a map among `of`
+    /// workers (part 0) or has made its share (any part).
+    fn fan(&mut self, lane: Lane, generation: u64, note: Note) -> Option<Result<Done, JobError>> {
+        let i = self.fans.iter().position(|(l, _)| *l == lane)?;
+        match note {
+            Note::Sharing(of) => {
+                let fan = &mut self.fans[i].1;
+                fan.made.clear();
+                fan.waiting = of;
+                let (job, workers, known) = (fan.job.clone(), fan.workers, fan.known.clone());
+                for part in 1..of {
+                    let parts = Parts { part, of: workers, known: known.clone() };
+                    if self.send(lane, part, generation, &job, Some(parts)).is_err() {
+                        // No helper: the lane's worker does the rest alone.
+                        let fan = &mut self.fans[i].1;
+                        fan.workers = 1;
+                        fan.waiting -= 1;
+                    }
+                }
+                None
+            }
+            Note::Share(share) => {
+                let fan = &mut self.fans[i].1;
+                fan.made.extend(share.made);
+                fan.waiting = fan.waiting.saturating_sub(1);
+                if fan.waiting > 0 {
+                    return None;
+                }
+                let made = std::mem::take(&mut fan.made);
+                fan.known.extend(made);
+                let parts = Parts { part: 0, of: fan.workers, known: fan.known.clone() };
+                let job = fan.job.clone();
+                self.send(lane, 0, generation, &job, Some(parts)).err().map(|e| Err(JobError::Failed(e)))
+            }
+            Note::Done(_) => None,
+        }
+    }
+
+    /// A new worker for `lane`'s part `part`, given this page's compiled module.
+    fn spawn(&self, lane: Lane, part: usize) -> Result<Slot, String> {
         let options = web_sys::WorkerOptions::new();
         options.set_type(web_sys::WorkerType::Module);
         let worker = web_sys::Worker::new_with_options(WORKER_SCRIPT, &options)
@@ -83,7 +190,8 @@ impl WorkerRunner {
                 let (kind, payload) = (message.get(0).as_string().unwrap_or_default(), message.get(1));
                 let bytes = || js_sys::Uint8Array::new(&payload).to_vec();
                 match kind.as_str() {
-                    "progress" => fraction.set(payload.as_f64().unwrap_or(0.0)),
+                    // Progress is drawn at the window's own pace (see `redraw_every`).
+                    "progress" => return fraction.set(payload.as_f64().unwrap_or(0.0)),
                     "partial" => {
                         if let Ok(out) = wire::decode::<SceneOutput>(&bytes()) {
                             *partial.borrow_mut() = Some(Arc::new(out));
@@ -93,11 +201,24 @@ impl WorkerRunner {
                         let result = wire::decode::<Result<Done, JobError>>(&bytes()).unwrap_or_else(|e| {
                             Err(JobError::Failed(format!("the worker's result could not be read: {e}")))
                         });
-                        inbox.borrow_mut().push((lane, generation.get(), result));
+                        inbox.borrow_mut().push((lane, part, generation.get(), Note::Done(result)));
+                    }
+                    "sharing" => {
+                        let of = payload.as_f64().unwrap_or(1.0) as usize;
+                        inbox.borrow_mut().push((lane, part, generation.get(), Note::Sharing(of)));
+                    }
+                    "share" => {
+                        let note = match wire::decode::<Share>(&bytes()) {
+                            Ok(share) => Note::Share(share),
+                            Err(e) => {
+                                Note::Done(Err(JobError::Failed(format!("a worker's share could not be read: {e}"))))
+                            }
+                        };
+                        inbox.borrow_mut().push((lane, part, generation.get(), note));
                     }
                     _ => {
                         let why = payload.as_string().unwrap_or_else(|| "no reason given".into());
-                        inbox.borrow_mut().push((lane, generation.get(), Err(JobError::Failed(why))));
+                        inbox.borrow_mut().push((lane, part, generation.get(), Note::Done(Err(JobError::Failed(why)))));
                     }
                 }
                 repaint();
@@ -108,7 +229,7 @@ impl WorkerRunner {
             let (inbox, repaint) = (Rc::clone(&self.inbox), Rc::clone(&self.repaint));
             Closure::<dyn FnMut(web_sys::ErrorEvent)>::new(move |event: web_sys::ErrorEvent| {
                 let why = format!("the computation stopped: {}", event.message());
-                inbox.borrow_mut().push((lane, generation.get(), Err(JobError::Failed(why))));
+                inbox.borrow_mut().push((lane, part, generation.get(), Note::Done(Err(JobError::Failed(why)))));
                 repaint();
             })
         };
@@ -127,54 +248,63 @@ impl Runner for WorkerRunner {
         let lane = job.lane();
         self.cancel(lane);
         let generation = self.lanes.start(lane);
-        let bytes = match wire::encode(&job) {
+        // Rounds after the first, and the helpers, leave out the preview.
+        let shared = match &job {
+            Job::Scene { scene, params, .. } => Job::Scene { scene: *scene, params: params.clone(), coarse: None },
+            other => other.clone(),
+        };
+        let (bytes, shared) = match wire::encode(&job).and_then(|b| Ok((b, wire::encode(&shared)?))) {
             Ok(b) => b,
             Err(e) => {
                 let why = JobError::Failed(format!("the job could not be sent to a worker: {e}"));
-                self.inbox.borrow_mut().push((lane, generation, Err(why)));
+                self.inbox.borrow_mut().push((lane, 0, generation, Note::Done(Err(why))));
                 return;
             }
         };
-        if self.slot(lane).is_none() {
-            match self.spawn(lane) {
-                Ok(slot) => self.slots.push((lane, slot)),
-                Err(why) => {
-                    // No worker (a page opened from a file, say): on the page itself.
-                    let result = jobs::run(job, &Progress::default(), &self.caches);
-                    let result = result.map_err(|e| match e {
-                        JobError::Failed(f) => JobError::Failed(format!("{f} ({why})")),
-                        c => c,
-                    });
-                    self.inbox.borrow_mut().push((lane, generation, result));
-                    (self.repaint)();
-                    return;
-                }
+        for (l, _, slot) in &self.slots {
+            if *l == lane {
+                slot.fraction.set(0.0);
+                *slot.partial.borrow_mut() = None;
             }
         }
-        let Some((_, slot)) = self.slots.iter_mut().find(|(l, _)| *l == lane) else { return };
-        slot.generation.set(generation);
-        slot.busy = true;
-        slot.fraction.set(0.0);
-        *slot.partial.borrow_mut() = None;
-        let message = js_sys::Array::of2(&JsValue::from_str("job"), &js_sys::Uint8Array::from(&bytes[..]));
-        if let Err(e) = slot.worker.post_message(&message) {
-            let why = JobError::Failed(format!("the job could not be sent to a worker ({e:?})"));
-            self.inbox.borrow_mut().push((lane, generation, Err(why)));
+        let parts = (self.workers > 1).then(|| Parts { part: 0, of: self.workers, known: Vec::new() });
+        if parts.is_some() {
+            let fan = Fan { job: shared, workers: self.workers, known: Vec::new(), made: Vec::new(), waiting: 0 };
+            self.fans.push((lane, fan));
+        }
+        if let Err(why) = self.send(lane, 0, generation, &bytes, parts) {
+            self.fans.retain(|(l, _)| *l != lane);
+            if self.slot(lane).is_some() {
+                self.inbox.borrow_mut().push((lane, 0, generation, Note::Done(Err(JobError::Failed(why)))));
+                return;
+            }
+            // No worker (a page opened from a file, say): on the page itself.
+            let result = jobs::run(job, &Progress::default(), &self.caches);
+            let result = result.map_err(|e| match e {
+                JobError::Failed(f) => JobError::Failed(format!("{f} ({why})")),
+                c => c,
+            });
+            self.inbox.borrow_mut().push((lane, 0, generation, Note::Done(result)));
+            (self.repaint)();
         }
     }
 
     fn cancel(&mut self, lane: Lane) {
         self.lanes.cancel(lane);
+        self.fans.retain(|(l, _)| *l != lane);
         // A worker that computes cannot be told to stop: it is ended.
-        self.slots.retain(|(l, s)| *l != lane || !s.busy);
+        self.slots.retain(|(l, _, s)| *l != lane || !s.busy);
     }
 
     fn busy(&self, lane: Lane) -> bool {
-        self.slot(lane).is_some_and(|s| s.busy)
+        self.slots.iter().any(|(l, _, s)| *l == lane && s.busy)
     }
 
+    /// The sum of what the lane's workers report: each reports the units it
+    /// computed out of all.
     fn progress(&self, lane: Lane) -> f64 {
-        self.slot(lane).map_or(0.0, |s| s.fraction.get())
+        let sum: f64 = self.slots.iter().filter(|(l, _, _)| *l == lane).map(|(_, _, s)| s.fraction.get()).sum();
+        sum.min(1.0)
     }
 
     /// Pausing is not offered in the browser (a computing worker reads no
@@ -189,25 +319,50 @@ impl Runner for WorkerRunner {
         false
     }
 
+    /// Every 400 ms: the workers take every core, and a frame drawn without
+    /// a GPU costs 50-250 ms of one. (A preview, a live view, a share and
+    /// the result each ask for a frame as they arrive.)
+    fn redraw_every(&self) -> std::time::Duration {
+        std::time::Duration::from_millis(400)
+    }
+
     fn partial(&self, lane: Lane) -> Option<Arc<SceneOutput>> {
-        self.slot(lane).filter(|s| s.busy).and_then(|s| s.partial.borrow().clone())
+        if !self.busy(lane) {
+            return None;
+        }
+        self.slot(lane).and_then(|s| s.partial.borrow().clone())
     }
 
     fn poll(&mut self) -> Vec<Finished> {
         let reports = std::mem::take(&mut *self.inbox.borrow_mut());
         let mut out = Vec::new();
-        for (lane, generation, result) in reports {
+        for (lane, part, generation, note) in reports {
             // Reports of a job cancelled since are dropped.
             if self.lanes.running(lane) != Some(generation) {
                 continue;
             }
-            let failed = matches!(result, Err(JobError::Failed(_)));
-            match self.slots.iter_mut().find(|(l, _)| *l == lane) {
-                // A worker that failed (a panic) is not trusted with another job.
-                Some(_) if failed => self.slots.retain(|(l, _)| *l != lane),
-                Some((_, slot)) => slot.busy = false,
-                None => {}
+            // Helpers reach the shared map too; the lane's worker has said so.
+            if part > 0 && matches!(note, Note::Sharing(_)) {
+                continue;
             }
+            if let Some((_, _, slot)) = self.slots.iter_mut().find(|(l, k, _)| *l == lane && *k == part)
+                && !matches!(note, Note::Sharing(_))
+            {
+                slot.busy = false;
+            }
+            let result = match note {
+                Note::Done(result) => result,
+                note => match self.fan(lane, generation, note) {
+                    Some(result) => result,
+                    None => continue,
+                },
+            };
+            // The job is over: helpers still computing are ended, and a
+            // worker that failed (a panic) is not trusted with another job.
+            let failed = matches!(result, Err(JobError::Failed(_)));
+            self.fans.retain(|(l, _)| *l != lane);
+            let ended = |k: usize, s: &Slot| s.busy || (failed && k == part);
+            self.slots.retain(|(l, k, s)| *l != lane || !ended(*k, s));
             out.extend(self.lanes.accept(lane, generation, result));
         }
         out

@@ -3,11 +3,14 @@
 //! `[kind, payload]` messages back: `["progress", fraction]`,
 //! `["partial", bytes]` (a coarse preview or a live view), and
 //! `["done", bytes]` (the encoded `Result<Done, JobError>`, with the model
-//! data that inspecting a clicked point needs).
+//! data that inspecting a clicked point needs). A job sent with its
+//! [`Parts`] (the page shares its units among several workers) may instead
+//! say `["sharing", n]` when it reaches a map it shares among n workers, and
+//! end with `["share", bytes]` (the encoded [`grainscope::scene::Share`]).
 
 use crate::wire;
 use grainscope::app::jobs::{self, Done, Job, JobError};
-use grainscope::scene::{Caches, Extra, Progress, Report, SceneOutput, Watcher};
+use grainscope::scene::{Caches, Extra, Parts, Progress, Report, SceneOutput, Watcher};
 use std::cell::Cell;
 use std::sync::{Arc, Mutex};
 use wasm_bindgen::JsCast;
@@ -58,6 +61,7 @@ fn report(r: Report<'_>) {
             LAST.with(|l| l.set((progress_at, now)));
             post_partial(out);
         }
+        Report::Sharing(n) => post("sharing", &JsValue::from_f64(n as f64)),
         _ => {}
     }
 }
@@ -65,18 +69,42 @@ fn report(r: Report<'_>) {
 /// Runs a job as the desktop does ([`jobs::run`]: a heavy scene's coarse
 /// preview, unless its result is cached, comes first here, where no thread
 /// can compute it beside), posting what it reports.
-fn run(job: Job) -> Result<Done, JobError> {
-    let progress = Progress::watched(Watcher(Arc::new(report)));
-    CACHES.with(|caches| jobs::run(job, &progress, caches))
+/// With `parts`, the job takes its share of them; a job that stopped to
+/// share a map posts its share, and the page sends it again with every
+/// share known.
+fn run(job: Job, parts: Option<Parts>) -> Option<Result<Done, JobError>> {
+    let mut progress = Progress::watched(Watcher(Arc::new(report)));
+    if let Some(parts) = parts {
+        progress = progress.with_parts(parts);
+    }
+    let result = CACHES.with(|caches| jobs::run(job, &progress, caches));
+    match progress.share().map(|share| wire::encode(&share)) {
+        Some(Ok(bytes)) => {
+            post("share", &js_sys::Uint8Array::from(&bytes[..]).into());
+            None
+        }
+        Some(Err(e)) => Some(Err(JobError::Failed(format!("a share cannot be sent: {e}")))),
+        None => Some(result),
+    }
 }
 
-/// Runs the job encoded in `job` and posts its progress and result.
+/// Runs the job encoded in `job` (with its share of the encoded [`Parts`]
+/// `parts`, if given) and posts its progress and result.
 #[wasm_bindgen]
-pub fn run_job(job: &[u8]) {
+pub fn run_job(job: &[u8], parts: Option<Vec<u8>>) {
     console_error_panic_hook::set_once();
     LAST.with(|l| l.set((f64::NEG_INFINITY, f64::NEG_INFINITY)));
+    let parts = match parts.map(|p| wire::decode::<Parts>(&p)).transpose() {
+        Ok(parts) => parts,
+        Err(e) => {
+            return post("failed", &JsValue::from_str(&format!("the page sent parts the worker cannot read: {e}")));
+        }
+    };
     let result = match wire::decode::<Job>(job) {
-        Ok(job) => run(job),
+        Ok(job) => match run(job, parts) {
+            Some(result) => result,
+            None => return,
+        },
         Err(e) => Err(JobError::Failed(format!("the page sent a job the worker cannot read: {e}"))),
     };
     let encoded = wire::encode(&result)

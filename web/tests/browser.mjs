@@ -337,27 +337,32 @@ async function everything() {
     await page.close();
   }
 
-  // A longer heavy scene (the planetesimal formation zone of Fig. 5.9, four
-  // of its disks, each with 500 and 250 batches): the page's thread is never
-  // held while the worker computes. (Frames drawn in software, as here, take
-  // 100-250 ms of the GPU process's time each; the page's own thread is what
-  // a worker keeps free.)
+  // A longer heavy scene (the planetesimal formation zone of Fig. 5.9: 30
+  // disks, each with 500 and 250 batches), shared among a worker per core:
+  // the page's thread is never held while the workers compute, and the
+  // whole computation, from the start of the page's job (its preview
+  // included) to the result, is timed against the native binary's whole
+  // process on the same machine. The aim is 1.5×; here, on two cores with
+  // no GPU, it is about 2.1×: the WebAssembly batch model is 1.6-1.8×
+  // slower than native on one core (its logarithms and exponentials), and
+  // the frames drawn in software take the GPU process 50-250 ms of a core
+  // each. One worker alone takes 3.6×: the check fails above 2.6×, where
+  // the workers no longer share the disks. (The page's own thread is what
+  // the workers keep free.)
   {
-    const zone = ["n_mass=2", "n_z=1"];
-    const zonePreset = path.join(out, "formation-zone.ron");
-    fs.writeFileSync(zonePreset, '(title: "Formation zone", scene: FormationZone(()))\n');
-    const { page } = await open(`?scene=formation-zone&${zone.join("&")}`, "formation zone");
+    const { page } = await open("?preset=batch-fig-5-9", "formation zone");
     const from = await page.evaluate(() => performance.now());
     const t0 = Date.now();
     let sawProgress = 0;
     while (await page.evaluate(() => window.grainscope.busy() || window.grainscope.scalars_json() === "")) {
       sawProgress = Math.max(sawProgress, await page.evaluate(() => window.grainscope.progress()));
       if (Date.now() - t0 > 300_000) break;
-      await page.waitForTimeout(250);
+      await page.waitForTimeout(50);
     }
     const took = Date.now() - t0;
     const held = await page.evaluate((from) => window.longTasks.filter((t) => t.start > from), from);
     const longest = Math.max(0, ...held.map((t) => t.duration));
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
     // The same page at rest, redrawn as the pointer moves over its plot: what
     // drawing alone costs on this machine.
     await page.waitForTimeout(600);
@@ -372,17 +377,28 @@ async function everything() {
     );
     // The issue's aim is 100 ms; the frame that first draws an arriving
     // preview takes 90-115 ms here (software GL, the other core busy with
-    // the worker). Anything longer means work crept onto the page's thread.
+    // a worker). Anything longer means work crept onto the page's thread.
     const allowed = Math.max(150, drawing + 25);
-    ok(
-      `formation zone computed in a worker in ${took} ms, progress seen up to ${(100 * sawProgress).toFixed(0)} %; ` +
-        `longest task on the page's thread meanwhile ${longest.toFixed(0)} ms (drawing alone, at rest: ${drawing.toFixed(0)} ms)`,
-    );
+    let line =
+      `formation zone (Fig. 5.9) computed in ${took} ms by the workers of ${cores} cores, progress seen up to ` +
+      `${(100 * sawProgress).toFixed(0)} %; longest task on the page's thread meanwhile ${longest.toFixed(0)} ms ` +
+      `(drawing alone, at rest: ${drawing.toFixed(0)} ms)`;
     if (longest > allowed) {
-      fail(`formation zone: the page's thread was held for ${longest.toFixed(0)} ms while the worker computed (allowed ${allowed.toFixed(0)} ms)`);
+      fail(`formation zone: the page's thread was held for ${longest.toFixed(0)} ms while the workers computed (allowed ${allowed.toFixed(0)} ms)`);
     }
-    if (sawProgress <= 0) fail("formation zone: no progress reported while the worker computed");
-    same("formation-zone", await scalars(page), native(zonePreset, zone), 1e-6);
+    if (sawProgress <= 0) fail("formation zone: no progress reported while the workers computed");
+    if (binary) {
+      const t1 = process.hrtime.bigint();
+      const want = native("batch-fig-5-9");
+      const desktop = Number(process.hrtime.bigint() - t1) / 1e6;
+      const ratio = took / desktop;
+      line += `; ${desktop.toFixed(0)} ms on the desktop (whole process, every core): ${ratio.toFixed(2)}× (aim 1.5×)`;
+      console.log(`budget: ${line}`);
+      if (ratio > 2.6) fail(`formation zone: ${ratio.toFixed(2)}× the desktop's time in the browser (budget 2.6×: are the disks shared among the workers?)`);
+      same("formation-zone", await scalars(page), want, 1e-6);
+    } else {
+      ok(line);
+    }
     await page.mouse.move(1010, 760);
     await page.waitForTimeout(800);
     await shot(page, "formation-zone");

@@ -442,8 +442,8 @@ fn whole(
     if let Some(morris) = &answer.morris {
         let reach =
             morris.iter().map(|m| m.mu_star + m.mu_star_conf).filter(|v| v.is_finite()).fold(0.0, f64::max).max(1e-300);
-        let mut order: Vec<usize> = (0..morris.len()).collect();
-        order.sort_by(|&a, &b| morris[b].mu_star.total_cmp(&morris[a].mu_star));
+        // Largest μ* first.
+        let order = crate::sorting::order(&morris.iter().map(|m| -m.mu_star).collect::<Vec<_>>());
         egui::Grid::new("whole-morris").num_columns(5).spacing([10.0, 3.0]).striped(true).show(ui, |ui| {
             for h in ["parameter", "μ*", "μ", "σ", "μ* with its 95 % interval"] {
                 ui.label(egui::RichText::new(h).strong().size(text));
@@ -463,8 +463,8 @@ fn whole(
         ui.small("μ*: mean absolute elementary effect (importance); σ: their spread (σ ≳ μ*: interactions or a curved response)");
     }
     if let Some(sobol) = &answer.sobol {
-        let mut order: Vec<usize> = (0..sobol.indices.len()).collect();
-        order.sort_by(|&a, &b| sobol.indices[b].total.total_cmp(&sobol.indices[a].total));
+        // Largest total index first.
+        let order = crate::sorting::order(&sobol.indices.iter().map(|i| -i.total).collect::<Vec<_>>());
         egui::Grid::new("whole-sobol").num_columns(5).spacing([10.0, 3.0]).striped(true).show(ui, |ui| {
             for h in ["parameter", "S1", "ST", "S1 (blue) with its interval", "ST (orange) with its interval"] {
                 ui.label(egui::RichText::new(h).strong().size(text));

@@ -7,7 +7,6 @@ use crate::physics::constants::AU;
 use crate::scene::core::{Censored, Context, Declared, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::disk::common::DiskProfile;
 use crate::scene::schema::{Choice, ParamSet};
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// What the dashed lines of the formation zone change.
@@ -320,19 +319,17 @@ impl Params {
             .collect();
         let done = std::sync::atomic::AtomicUsize::new(0);
         let total = distinct.len();
-        let edges: Vec<f64> = distinct
-            .par_iter()
-            .map(|b| {
-                if let Some(edge) = edge_memory::recall(b) {
-                    let finished = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
-                    progress.set(finished as f64 / total.max(1) as f64);
-                    return Ok(edge);
-                }
-                let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
-                edge_memory::keep(b, edge);
-                Ok(edge)
-            })
-            .collect::<Result<_, SceneError>>()?;
+        // Each disk is a unit of its own: a browser shares them among its workers.
+        let edges: Vec<f64> = progress.units(&distinct, |b| {
+            if let Some(edge) = edge_memory::recall(b) {
+                let finished = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                progress.set(finished as f64 / total.max(1) as f64);
+                return Ok(edge);
+            }
+            let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
+            edge_memory::keep(b, edge);
+            Ok(edge)
+        })?;
         Ok(which.into_iter().map(|i| edges[i]).collect())
     }
 }

@@ -3,11 +3,11 @@
 
 use super::common::{BATCH_STEPS, BatchParams, batch_quantised, log_grid};
 use crate::figure::{Axis, Figure, Scale, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::constants::YEAR;
 use crate::scene::core::{Context, Declared, Irregularity, Scalar, Scene, SceneError, SceneInfo, SceneOutput};
 use crate::scene::disk::common::DiskProfile;
 use crate::scene::schema::ParamSet;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the yield scene.

@@ -120,7 +120,7 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
                 f.batches.iter().zip(&run.masses).filter(|(b, _)| b.dust).map(|(b, m)| (b.r, *m)).collect();
             let sd = surface_density_in(&dust, smoothing, Some(cfg.domain()));
             let mut pts: Vec<[f64; 2]> = dust.iter().zip(&sd).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
-            pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            crate::sorting::sort_by_key(&mut pts, |a| a[0]);
             let t = f.t / YEAR;
             fig = fig.with(Series::new(format!("dust, {} yr", crate::figure::human(t)), pts, Style::Line, k).at(t));
         }
@@ -134,7 +134,7 @@ inner disk (Fig. 5.5), unless erosion prevents it (Fig. 5.11).",
         if !formed.is_empty() {
             let sp = surface_density(&formed, smoothing);
             let mut pts: Vec<[f64; 2]> = formed.iter().zip(&sp).map(|((r, _), s)| [r / AU, s * 0.1]).collect();
-            pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+            crate::sorting::sort_by_key(&mut pts, |a| a[0]);
             fig = fig.with(Series::new("planetesimals Σ_p (end)", pts, Style::Points, 4));
         }
         let last = run.frames.last().map(|f| f.budget).unwrap_or([0.0; 3]);

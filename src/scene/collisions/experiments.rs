@@ -3,13 +3,13 @@
 
 use super::common::describe;
 use crate::figure::{Axis, Figure, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::collision::{Options, Outcome, Setup, collide, sticking_velocity};
 use crate::physics::experiments::{Experiment, experiment, experiments};
 use crate::physics::plasticity::{e_combined, e_plastic};
 use crate::scene::core::{Censored, Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, logspace};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The experiments as (key, label) options.

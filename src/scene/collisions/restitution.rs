@@ -4,6 +4,7 @@
 
 use super::common::CollisionParams;
 use crate::figure::{Axis, Figure, Scale, Series, Style, human};
+use crate::parallel::prelude::*;
 use crate::physics::collision::{
     Options, Restitution as RestitutionAt, Setup, restitution, sticking_search, sticking_search_near,
     sticking_velocity, sticking_velocity_with_yield,
@@ -17,7 +18,6 @@ use crate::scene::core::{
 };
 use crate::scene::schema::ParamSet;
 use crate::solver::sampling::{Refined, interpolate, refine};
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::atomic::{AtomicUsize, Ordering};
 
@@ -331,7 +331,7 @@ fn adaptive_restitution(
     let (v_lo, v_hi) = (velocities[0], velocities[velocities.len() - 1]);
     let coarse = logspace(v_lo, v_hi, COARSE_VELOCITIES);
     // The search for v_s is sequential: run it beside the first round.
-    let (search, first) = rayon::join(
+    let (search, first) = crate::parallel::join(
         || sticking_search(setup, opts, V_STICK_PRECISION),
         || par_map(&coarse, progress, done, total, e_of),
     );
@@ -640,7 +640,7 @@ pub fn crack_law_figure(law: &CrackLaw) -> Figure {
     let curve = |g: &dyn Fn(f64) -> Option<f64>, betas: &[f64]| -> Vec<[f64; 2]> {
         let mut pts: Vec<[f64; 2]> =
             betas.iter().filter_map(|&b| g(b).map(|v| [v.abs(), b])).filter(|p| p[0] >= v_lo && p[0] <= v_hi).collect();
-        pts.sort_by(|a, b| a[0].total_cmp(&b[0]));
+        crate::sorting::sort_by_key(&mut pts, |a| a[0]);
         pts
     };
     let full = CrackLaw::full(k).resolve();

@@ -3,6 +3,7 @@
 
 use super::common::DiskParams;
 use crate::figure::{Axis, Figure, Heatmap, Scale, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::aggregate::{
     Aggregate, Particle, R_CRIT, SOURCES, TurbulenceModel, relative_velocity, stopping_time,
 };
@@ -16,7 +17,6 @@ use crate::scene::core::{
 use crate::scene::inspect::{self, Action, Inspection};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// What the collision of two particles of m_i and m_j monomer masses at the

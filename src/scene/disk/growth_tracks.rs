@@ -3,6 +3,7 @@
 
 use super::common::GrowthParams;
 use crate::figure::{Axis, Figure, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::constants::{AU, YEAR};
 use crate::physics::growth::{Porosity, Stop, Track};
 use crate::scene::controls::LogRange;
@@ -14,7 +15,6 @@ use crate::scene::inspect::{self, Inspection};
 use crate::scene::quantities;
 use crate::scene::schema::ParamSet;
 use crate::scene::timeline;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// Parameters of the growth-track scene.

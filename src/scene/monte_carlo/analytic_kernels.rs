@@ -3,12 +3,12 @@
 //! product kernels (thesis Sect. 4.3; Ormel & Spaans 2008).
 
 use crate::figure::{Axis, Figure, Series, Style};
+use crate::parallel::prelude::*;
 use crate::physics::PhysicsError;
 use crate::physics::monte_carlo::{Analytic, Body, Engine, Settings};
 use crate::scene::core::{Context, Progress, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use crate::scene::quantities;
 use crate::scene::schema::{Choice, ParamSet};
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 
 /// The analytic test problem: a kernel with a known solution.
@@ -138,7 +138,7 @@ pub fn run(p: &Params, progress: &Progress) -> Result<(Bins, f64), SceneError> {
 pub fn core_error(bins: &Bins, core: f64) -> f64 {
     let total: f64 = bins.iter().map(|b| b.4).sum();
     let mut sorted = bins.clone();
-    sorted.sort_by(|a, b| b.4.total_cmp(&a.4));
+    crate::sorting::sort_by_key(&mut sorted, |a| -a.4);
     let mut held = 0.0;
     let mut worst: f64 = 0.0;
     for b in sorted {

@@ -179,7 +179,8 @@ impl ColumnParams {
     /// As [`ColumnParams::run`], handing the first run so far to `observe`.
     pub fn run_observed(&self, progress: &Progress, observe: &(dyn Fn(&Run) + Sync)) -> Result<Vec<Run>, SceneError> {
         let cfg = self.config()?;
-        let runs = cfg.run_seeds_observed(
+        // Each run is a unit of its own: a browser shares them among its workers.
+        let runs = cfg.run_seeds_mapped(
             self.runs.max(1),
             &|f| {
                 progress.set(f);
@@ -187,6 +188,7 @@ impl ColumnParams {
                 !progress.cancelled()
             },
             observe,
+            |seeds, run| progress.units(seeds, |k| run(k).map_err(SceneError::from)),
         )?;
         progress.check()?;
         Ok(runs)

@@ -8,7 +8,6 @@ use crate::physics::coagulation::Run;
 use crate::physics::constants::YEAR;
 use crate::scene::core::{Context, Scalar, Scene, SceneError, SceneInfo, SceneOutput, Seeds};
 use crate::scene::schema::ParamSet;
-use rayon::prelude::*;
 use serde::{Deserialize, Serialize};
 use std::sync::Arc;
 
@@ -43,7 +42,7 @@ pub fn steady_state(run: &Run) -> (f64, f64) {
     let tail: Vec<_> = run.history.iter().filter(|s| s.t >= 0.6 * t_end).collect();
     let median = |f: &dyn Fn(&crate::physics::coagulation::Sample) -> f64| {
         let mut v: Vec<f64> = tail.iter().map(|s| f(s)).collect();
-        v.sort_by(|a, b| a.total_cmp(b));
+        crate::sorting::sort_by_key(&mut v, |a| *a);
         v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
     };
     (median(&|s| s.stokes_max), median(&|s| s.m_max))
@@ -116,46 +115,44 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                 })
                 .collect(),
         );
-        let fresh: Vec<Vec<Run>> = missing
-            .par_iter()
-            .enumerate()
-            .map(|(k, q)| {
-                let cfg = q.config()?;
-                let slot = params.iter().position(|x| x == *q).unwrap_or(0);
-                let observe = |run: &Run| {
-                    if let Ok(mut sets) = so_far.lock() {
-                        if let Some(s) = sets.get_mut(slot) {
-                            s.1 = Arc::new(vec![run.clone()]);
-                        }
-                        let mut out = output(p, &sets);
-                        let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
-                        out.notes.insert(
-                            0,
-                            format!(
-                                "running: v_eros = {} m/s at {} yr (live view)",
-                                crate::figure::human(q.v_eros),
-                                crate::figure::human(t)
-                            ),
-                        );
-                        progress.publish(out);
+        // Each threshold is a unit of its own: a browser shares them among its workers.
+        let numbered: Vec<(usize, &ColumnParams)> = missing.iter().copied().enumerate().collect();
+        let fresh: Vec<Vec<Run>> = progress.units(&numbered, |&(k, q)| {
+            let cfg = q.config()?;
+            let slot = params.iter().position(|x| x == q).unwrap_or(0);
+            let observe = |run: &Run| {
+                if let Ok(mut sets) = so_far.lock() {
+                    if let Some(s) = sets.get_mut(slot) {
+                        s.1 = Arc::new(vec![run.clone()]);
                     }
-                };
-                let runs = cfg.run_seeds_observed(
-                    q.runs.max(1),
-                    &|f| {
-                        fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
-                        let sum: f64 =
-                            fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
-                        progress.set(sum / fractions.len() as f64);
-                        progress.wait_while_paused();
-                        !progress.cancelled()
-                    },
-                    &observe,
-                )?;
-                progress.check()?;
-                Ok(runs)
-            })
-            .collect::<Result<_, SceneError>>()?;
+                    let mut out = output(p, &sets);
+                    let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
+                    out.notes.insert(
+                        0,
+                        format!(
+                            "running: v_eros = {} m/s at {} yr (live view)",
+                            crate::figure::human(q.v_eros),
+                            crate::figure::human(t)
+                        ),
+                    );
+                    progress.publish(out);
+                }
+            };
+            let runs = cfg.run_seeds_observed(
+                q.runs.max(1),
+                &|f| {
+                    fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+                    let sum: f64 =
+                        fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
+                    progress.set(sum / fractions.len() as f64);
+                    progress.wait_while_paused();
+                    !progress.cancelled()
+                },
+                &observe,
+            )?;
+            progress.check()?;
+            Ok(runs)
+        })?;
         for (q, runs) in missing.into_iter().zip(fresh) {
             cache.insert(q.clone(), runs);
         }

@@ -31,7 +31,7 @@ fn clip(values: &mut [f64]) {
     if mags.is_empty() {
         return;
     }
-    mags.sort_by(f64::total_cmp);
+    crate::sorting::sort_by_key(&mut mags, |m| *m);
     let c = mags[(mags.len() * 9) / 10];
     for v in values.iter_mut() {
         *v = v.clamp(-c, c);

@@ -304,3 +304,20 @@ fn inspected_model_data_survives_bytes() {
         assert!(seen > 0, "{}: nothing to inspect on {}", p.info().id, fig.id);
     }
 }
+
+/// "What matters" shared among 2 and 3 processes, as a browser shares its
+/// points among its workers, ranks the parameters of the collision's
+/// restitution coefficient exactly as one process does.
+#[test]
+fn what_matters_shared_among_processes_equals_the_undivided_ranking() {
+    use grainscope::scene::parts::in_turns;
+    use grainscope::sensitivity::what_matters;
+    let params = grainscope::preset::resolve("ice-bounce-8ms").expect("shipped").scene;
+    let whole = what_matters(&params, "e", 2.0, &Progress::default()).expect("ranks");
+    assert!(whole.rows.len() > 5);
+    for n in [2, 3] {
+        let (shared, rounds) = in_turns(n, |p| what_matters(&params, "e", 2.0, p)).expect("ranks");
+        assert!(rounds >= 2, "{n} processes: nothing was shared");
+        assert_eq!(shared, whole, "{n} processes");
+    }
+}

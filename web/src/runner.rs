@@ -7,8 +7,8 @@
 //!
 //! Every core: a job goes out with [`Parts`] for as many workers as the
 //! browser reports cores. When it reaches a map of independent units (the
-//! disks of a grid, the runs of a column) its worker says so, and the
-//! lane's helper workers (started then, and kept) run the same job to the
+//! disks of a grid, the runs of a column) its worker says so, and helper
+//! workers (started then, and ended with the job) run the same job to the
 //! same map, each taking its share of the units; the page gathers the
 //! shares and sends the job to the lane's worker again, with every unit
 //! known, until it runs through (see `grainscope::scene::parts`).
@@ -292,8 +292,9 @@ impl Runner for WorkerRunner {
     fn cancel(&mut self, lane: Lane) {
         self.lanes.cancel(lane);
         self.fans.retain(|(l, _)| *l != lane);
-        // A worker that computes cannot be told to stop: it is ended.
-        self.slots.retain(|(l, _, s)| *l != lane || !s.busy);
+        // A worker that computes cannot be told to stop: it is ended, and
+        // so are the lane's helpers (each keeps the memory its share took).
+        self.slots.retain(|(l, k, s)| *l != lane || (*k == 0 && !s.busy));
     }
 
     fn busy(&self, lane: Lane) -> bool {
@@ -357,11 +358,12 @@ impl Runner for WorkerRunner {
                     None => continue,
                 },
             };
-            // The job is over: helpers still computing are ended, and a
-            // worker that failed (a panic) is not trusted with another job.
+            // The job is over: its helpers are ended (a phone's memory is
+            // not held by idle workers of every lane), and so is a worker
+            // that failed (a panic): it is not trusted with another job.
             let failed = matches!(result, Err(JobError::Failed(_)));
             self.fans.retain(|(l, _)| *l != lane);
-            let ended = |k: usize, s: &Slot| s.busy || (failed && k == part);
+            let ended = |k: usize, s: &Slot| k > 0 || s.busy || (failed && k == part);
             self.slots.retain(|(l, k, s)| *l != lane || !ended(*k, s));
             out.extend(self.lanes.accept(lane, generation, result));
         }

@@ -213,31 +213,32 @@ pub fn run(job: Job, progress: &Progress, caches: &Mutex<Caches>) -> Result<Done
         }
         Job::Sweep { plan, first_color } => {
             let key = &plan.vary[0].key;
-            let pins =
-                crate::sweep::for_points(&plan, &(0..plan.len()).collect::<Vec<_>>(), progress, &|j, result| {
-                    let v = plan.point(j)[0];
-                    let out = result?;
-                    // Tagged with the swept value, except on figures that colour
-                    // their curves by a value of their own (their colour bar stays).
-                    let curves = out
-                        .figures
-                        .iter()
-                        .flat_map(|f| {
-                            let own = f.family.is_some();
-                            f.series.iter().filter(|s| s.style == Style::Line).map(move |s| {
-                                let s = if own { Series { family: None, ..(*s).clone() } } else { s.clone().at(v) };
-                                (f.id.clone(), s)
-                            })
+            let points: Vec<usize> = (0..plan.len()).collect();
+            let finished = std::sync::atomic::AtomicUsize::new(0);
+            // Each point is a unit of its own: a browser shares them among its workers.
+            let pins = progress.units(&points, |&j| {
+                progress.check()?;
+                let v = plan.point(j)[0];
+                let params = plan.params_at(j)?;
+                let out = scene::compute(&params, &progress.quiet_child())?;
+                // Tagged with the swept value, except on figures that colour
+                // their curves by a value of their own (their colour bar stays).
+                let curves = out
+                    .figures
+                    .iter()
+                    .flat_map(|f| {
+                        let own = f.family.is_some();
+                        f.series.iter().filter(|s| s.style == Style::Line).map(move |s| {
+                            let s = if own { Series { family: None, ..(*s).clone() } } else { s.clone().at(v) };
+                            (f.id.clone(), s)
                         })
-                        .collect();
-                    Ok(Pin {
-                        params: plan.params_at(j)?,
-                        label: format!("{key} = {}", figure::tick_label(v)),
-                        curves,
-                        color: first_color + j,
                     })
-                })?;
-            Ok(Done::Sweep(pins.into_iter().collect::<Result<Vec<_>, SceneError>>()?))
+                    .collect();
+                let n = finished.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
+                progress.set(n as f64 / points.len().max(1) as f64);
+                Ok(Pin { params, label: format!("{key} = {}", figure::tick_label(v)), curves, color: first_color + j })
+            })?;
+            Ok(Done::Sweep(pins))
         }
         Job::WhatMatters { base, output, factor, coarse } => {
             let at = if coarse { base.coarse().unwrap_or_else(|| (*base).clone()) } else { (*base).clone() };
@@ -592,6 +593,28 @@ mod tests {
         assert!(!r.busy(Lane::Sweep));
         std::thread::sleep(Duration::from_millis(50));
         assert!(r.poll().is_empty());
+    }
+
+    /// A family sweep shared among 2 and 3 processes, as a browser shares
+    /// its points among its workers, gives the pins of one process.
+    #[test]
+    fn a_sweep_shared_among_processes_gives_the_same_pins() {
+        let base = SceneParams::default_for("hysteresis").expect("scene");
+        let vary = crate::sweep::Vary::parse("velocity=lin:1:3:5").expect("vary");
+        let job =
+            Job::Sweep { plan: Box::new(crate::sweep::Plan::new(base, vec![vary]).expect("plan")), first_color: 2 };
+        let pins = |progress: &Progress| match run(job.clone(), progress, &Mutex::new(Caches::default())) {
+            Ok(Done::Sweep(pins)) => Ok(pins),
+            Err(JobError::Cancelled) => Err(SceneError::Cancelled),
+            other => panic!("{other:?}"),
+        };
+        let whole = pins(&Progress::default()).expect("pins");
+        assert_eq!(whole.len(), 5);
+        for n in [2, 3] {
+            let (shared, rounds) = crate::scene::parts::in_turns(n, pins).expect("pins");
+            assert_eq!(rounds, 2, "{n} processes");
+            assert_eq!(shared, whole, "{n} processes");
+        }
     }
 
     /// Rendering an export gives three files per figure, named by the prefix.

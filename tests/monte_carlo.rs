@@ -7,7 +7,7 @@ use grainscope::physics::coagulation::{Column, Compaction, RunConfig};
 use grainscope::physics::constants::{AU, YEAR};
 use grainscope::physics::disk::GasDisk;
 use grainscope::physics::growth::{GrowthModel, Porosity};
-use grainscope::physics::monte_carlo::{Analytic, Body, Effect, Engine, Family, Model, Settings};
+use grainscope::physics::monte_carlo::{Analytic, Body, Effect, Engine, Family, Model, Pair, PairRule, Settings};
 
 const PARTICLES: f64 = 1e20;
 
@@ -274,12 +274,13 @@ fn pair_data_follow_the_families_as_they_are_now() {
     target.filling *= 1.0 - 5e-4;
     let others: Vec<_> =
         [(1.0, 1.0), (30.0, 0.2), (1e4, 0.02), (1e6, 1e-3)].iter().map(|&(n, phi)| family(n, phi)).collect();
-    let mut row = vec![(0.0, Effect::Bounce); others.len()];
+    let rule = PairRule { volume: 1e15, f_m: 0.1, f_phi: 0.1 };
+    let mut row = vec![Pair::default(); others.len()];
     let which: Vec<usize> = (0..others.len()).collect();
-    col.pair_row(&target, &others, &which, &mut row);
+    col.pair_data_row(&target, &others, &which, &rule, &mut row);
     for (p, from_row) in others.iter().zip(&row) {
         let (rate, effect) = col.pair(&target, p);
-        assert_eq!((rate, effect), *from_row);
+        assert_eq!(rule.data(&target, p, rate, effect), *from_row);
         let v = col.velocity(&target, p);
         let filling = col.filling_after(target.body(), p.body(), v);
         let change = col.filling_change(target.body(), p.body(), v);
@@ -381,4 +382,73 @@ fn the_erosion_balance_shared_among_processes_equals_the_undivided_one() {
         o.scalars.iter().map(|s| s.value).chain(points.copied()).map(f64::to_bits).collect()
     };
     assert_eq!(bits(&shared), bits(&whole));
+}
+
+#[test]
+fn a_row_of_pair_data_equals_its_pairs_one_at_a_time_to_the_bit() {
+    use rand::{Rng, SeedableRng};
+    let mut rng = rand::rngs::StdRng::seed_from_u64(11);
+    let mono = Monomer::ice();
+    let m0 = mono.mass();
+    // Every outcome: sticking, erosion, erosion that shatters the target,
+    // fragmentation and bouncing; both compaction settings.
+    let cases = [
+        (f64::INFINITY, 80.0, f64::INFINITY, Compaction::Collisional),
+        (20.0, 80.0, f64::INFINITY, Compaction::Full),
+        (1e-3, 5.0, f64::INFINITY, Compaction::Full),
+        (0.5, 10.0, 1e-3, Compaction::Collisional),
+    ];
+    let mut seen = [0usize; 4];
+    for (v_eros, v_frag, v_bounce, compaction) in cases {
+        let mut column = column(v_eros, compaction).column;
+        column.thresholds = Thresholds { v_frag, v_eros, v_bounce, r_crit: 1e-2 };
+        let rule = PairRule { volume: 3.7e15, f_m: 0.1, f_phi: 0.1 };
+        let body = |mass: f64, filling: f64| {
+            let props = column.props(Body { mass, filling });
+            Family { mass, filling, groups: 1.0, zoom: 0, props }
+        };
+        let mut families: Vec<_> = (0..700)
+            .map(|n| {
+                let mass = m0 * 10f64.powf(rng.random_range(0.0..28.0));
+                let filling = match n % 4 {
+                    0 => 1.0,
+                    1 => (mass / m0).powf(-0.5).max(1e-5),
+                    _ => 10f64.powf(rng.random_range(-5.0..0.0)),
+                };
+                body(mass, filling)
+            })
+            .collect();
+        // Monomers, twins and equal masses.
+        families.push(body(m0, 1.0));
+        families.push(body(m0, 1.0));
+        families.push(families[5]);
+        families.push(body(families[6].mass, 0.5 * families[6].filling));
+        let mut by_mass: Vec<usize> = (0..families.len()).collect();
+        by_mass.sort_by(|&a, &b| families[a].mass.total_cmp(&families[b].mass));
+        let some: Vec<usize> = by_mass.iter().copied().filter(|j| j % 3 == 0).collect();
+        for lead in [0, 1, 2, 3, 5, 100, 400, 700, 702, 703] {
+            for which in [&by_mass, &some] {
+                let mut row = vec![Pair::default(); families.len()];
+                column.pair_data_row(&families[lead], &families, which, &rule, &mut row);
+                for &j in which.iter() {
+                    let (a, b) = (&families[lead], &families[j]);
+                    let (rate, effect) = column.pair(a, b);
+                    let one = rule.data(a, b, rate, effect);
+                    seen[match effect {
+                        Effect::Stick { .. } => 0,
+                        Effect::Erode { .. } => 1,
+                        Effect::Shatter => 2,
+                        Effect::Bounce => 3,
+                    }] += 1;
+                    assert_eq!(
+                        (row[j].c.to_bits(), row[j].headroom.to_bits()),
+                        (one.c.to_bits(), one.headroom.to_bits()),
+                        "pair {lead}, {j} ({effect:?}): {:?} against {one:?}",
+                        row[j]
+                    );
+                }
+            }
+        }
+    }
+    assert!(seen.iter().all(|&n| n > 100), "outcomes seen: {seen:?}");
 }

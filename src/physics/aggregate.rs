@@ -385,11 +385,11 @@ pub fn thesis_turbulence(env: &Local, d1: &DriftTerms, s2_eff: f64, diff: f64) -
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct TurbulenceConstants {
     /// Largest eddy speed α^{1/2} c_s, m s⁻¹.
-    vg: f64,
+    pub(crate) vg: f64,
     /// Stokes number of the smallest eddies, Re^{-1/2}.
-    st_eta: f64,
+    pub(crate) st_eta: f64,
     /// Re^{1/4}.
-    re_quarter: f64,
+    pub(crate) re_quarter: f64,
 }
 
 impl TurbulenceConstants {
@@ -513,7 +513,7 @@ fn hit_and_stick_void(a: f64, b: f64) -> f64 {
     if a > 650.0 * b {
         return 6.94 * b;
     }
-    (0.99 - 1.03 * (2.0 / (a / b + 1.0)).ln()).min(6.94) * b
+    (0.99 - 1.03 * super::ln::ln(2.0 / (a / b + 1.0))).min(6.94) * b
 }
 
 /// The geometry of aggregates of one mass at any filling factor: what

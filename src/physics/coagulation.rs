@@ -31,9 +31,10 @@ use super::aggregate::{
     dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
     hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
 };
+use super::column_row::{self, Lead, RowConstants};
 use super::constants::K_B;
 use super::disk::Local;
-use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Settings};
+use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Pair, PairRule, Settings};
 use crate::parallel::prelude::*;
 use std::f64::consts::PI;
 
@@ -78,9 +79,9 @@ pub struct Props {
     pub scale_height: f64,
     /// The terms of the relative velocity that depend on this family alone,
     /// for the pairs in which it has the larger Stokes number.
-    drift: DriftTerms,
+    pub(crate) drift: DriftTerms,
     /// Scale height squared, m².
-    scale_height2: f64,
+    pub(crate) scale_height2: f64,
 }
 
 /// The column's constants that every pair needs, computed once per row of pairs.
@@ -317,12 +318,60 @@ impl Model for Column {
         self.pair_with(&Constants::of(self), a, b)
     }
 
-    /// [`Model::pair`] over a row, with the monomer's constants computed once.
-    fn pair_row(&self, a: &Family<Props>, others: &[Family<Props>], which: &[usize], out: &mut [(f64, Effect)]) {
+    /// [`Model::pair_data_row`] over the whole row at once
+    /// ([`super::column_row`]), with the pairs that need a logarithm computed
+    /// one at a time; the same numbers to the last bit.
+    fn pair_data_row(
+        &self,
+        a: &Family<Props>,
+        others: &[Family<Props>],
+        which: &[usize],
+        rule: &PairRule,
+        out: &mut [Pair],
+    ) {
         let k = Constants::of(self);
-        for &j in which {
-            out[j] = self.pair_with(&k, a, &others[j]);
+        if self.turbulence != TurbulenceModel::Thesis {
+            for &j in which {
+                let b = &others[j];
+                let (rate, effect) = self.pair_with(&k, a, b);
+                out[j] = rule.data(a, b, rate, effect);
+            }
+            return;
         }
+        let th = &self.thresholds;
+        let row = RowConstants {
+            epsilon: self.epsilon,
+            brownian: k.brownian,
+            st_eta: k.turbulence.st_eta,
+            vg_re: k.turbulence.vg * k.turbulence.re_quarter,
+            vg_155: k.turbulence.vg * 1.55,
+            vg: k.turbulence.vg,
+            alpha: self.env.alpha,
+            omega: self.env.omega,
+            scale_height: self.env.scale_height,
+            eta_vk: self.env.eta_vk,
+            rho0: k.rho0,
+            m0: k.m0,
+            onset: 3.0 * B_COMPACT * k.e_roll,
+            r_crit: th.r_crit,
+            v_eros: th.v_eros,
+            v_frag: th.v_frag,
+            v_bounce: th.v_bounce,
+            c1: self.c1,
+            rule: *rule,
+        };
+        let lead = Lead {
+            mass: a.mass,
+            filling: a.filling,
+            drift: a.props.drift,
+            radius: a.props.radius,
+            scale_height2: a.props.scale_height2,
+        };
+        column_row::pair_data_row(&row, &lead, others, which, out, |j| {
+            let b = &others[j];
+            let (rate, effect) = self.pair_with(&k, a, b);
+            rule.data(a, b, rate, effect)
+        });
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional

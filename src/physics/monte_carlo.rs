@@ -151,21 +151,25 @@ pub trait Model: Sync {
         (self.rate(a, b), Effect::of(self.collide(t, p)))
     }
 
-    /// The pair data of family `a` with each of `others[j]` for j in
-    /// `which` (as [`Model::pair`]) into `out[j]` (`out` holds
-    /// `others.len()` entries, and those not in `which` are left as they
-    /// are). `which` lists the families by mass, so that pairs in the same
-    /// regime of the model follow each other. Models override it to share
-    /// work across a row.
-    fn pair_row(
+    /// The cached pair data ([`PairRule::data`] of [`Model::pair`]) of
+    /// family `a` with each of `others[j]` for j in `which` into `out[j]`
+    /// (`out` holds `others.len()` entries, and those not in `which` are left
+    /// as they are). `which` lists the families by mass, so that pairs in
+    /// the same regime of the model follow each other. Models override it to
+    /// share work across a row; an override gives the same numbers to the
+    /// last bit.
+    fn pair_data_row(
         &self,
         a: &Family<Self::Props>,
         others: &[Family<Self::Props>],
         which: &[usize],
-        out: &mut [(f64, Effect)],
+        rule: &PairRule,
+        out: &mut [Pair],
     ) {
         for &j in which {
-            out[j] = self.pair(a, &others[j]);
+            let b = &others[j];
+            let (rate, effect) = self.pair(a, b);
+            out[j] = rule.data(a, b, rate, effect);
         }
     }
 
@@ -392,14 +396,50 @@ impl<T: Copy + Default> Symmetric<T> {
 
 /// Cached data of a pair of families (the same for (i, j) and (j, i)).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
-struct Pair {
+pub struct Pair {
     /// K/V, s⁻¹ (pair collision rate; 0 for pairs that bounce).
-    c: f64,
+    pub c: f64,
     /// The smaller of ⌊log₂(f_m m_t/|δm|)⌋ and ⌊log₂(f_φ φ_t/|δφ|)⌋ of the
     /// target (+∞ without change), so that N_ε = ⌈max(z_hi − z_lo − these)⌉
     /// (4.22)–(4.24), and ⌈z − h⌉ = z − ⌊h⌋ for integer z. Integers and ±∞,
     /// exact in f32.
-    headroom: f32,
+    pub headroom: f32,
+}
+
+/// What turns a model's rate coefficient and effect into a pair's cached
+/// data ([`Pair`]): the simulated volume and the limits f_m, f_φ.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PairRule {
+    /// Simulated volume (or column area) V.
+    pub volume: f64,
+    /// Largest fractional mass change of a particle in one group event, f_m.
+    pub f_m: f64,
+    /// Largest fractional filling-factor change in one group event, f_φ.
+    pub f_phi: f64,
+}
+
+impl PairRule {
+    /// The cached data of pair (a, b), (K/V, headroom), from the model's
+    /// rate coefficient and effect.
+    pub fn data<P>(&self, a: &Family<P>, b: &Family<P>, rate: f64, effect: Effect) -> Pair {
+        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
+        let c = rate / self.volume;
+        let (dm, dphi, c) = match effect {
+            Effect::Stick { change } => (p.mass, change.abs(), c),
+            Effect::Erode { loss } => (loss, 0.0, c),
+            Effect::Shatter => (t.mass, t.filling, c),
+            // Nothing happens: such events are left out.
+            Effect::Bounce => (0.0, 0.0, 0.0),
+        };
+        let headroom = room(self.f_m, t.mass, dm).min(room(self.f_phi, t.filling, dphi));
+        // An integer (|h| < 2¹¹) or ±∞: exact in f32.
+        Pair { c, headroom: headroom as f32 }
+    }
+}
+
+/// ⌊log₂(f x/dx)⌋, or +∞ where dx ≤ 0 (no change).
+fn room(f: f64, x: f64, dx: f64) -> f64 {
+    if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY }
 }
 
 /// Counts of what the events did.
@@ -469,8 +509,6 @@ pub struct Engine<M: Model> {
     by_mass: Vec<usize>,
     tally: Tally,
     rng: rand::rngs::StdRng,
-    /// A row of model pair data, kept to reuse its allocation.
-    scratch: Vec<(f64, Effect)>,
 }
 
 impl<M: Model> Engine<M> {
@@ -529,7 +567,6 @@ impl<M: Model> Engine<M> {
             weight_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
-            scratch: Vec::new(),
         };
         e.reserve(1);
         e.refresh_pairs(0);
@@ -688,39 +725,14 @@ impl<M: Model> Engine<M> {
 
     /// Recomputes the cached pair data of family k (its body changed), then its rates.
     fn refresh_pairs(&mut self, k: usize) {
-        let mut row = std::mem::take(&mut self.scratch);
-        row.clear();
-        row.resize(self.families.len(), (0.0, Effect::Bounce));
-        self.model.pair_row(&self.families[k], &self.families, &self.by_mass, &mut row);
+        let n = self.families.len();
+        let rule = PairRule { volume: self.volume, f_m: self.settings.f_m, f_phi: self.settings.f_phi };
         // Row k, now the newest, holds the pair data.
-        for &j in &self.by_mass {
-            let (rate, effect) = row[j];
-            let (c, headroom) = self.pair_data(k, j, rate, effect);
-            *self.pairs.at(k, j) = Pair { c, headroom };
-        }
+        let row = self.pairs.row_mut(k, n);
+        self.model.pair_data_row(&self.families[k], &self.families, &self.by_mass, &rule, row);
         self.rows += 1;
         self.computed[k] = self.rows;
         self.refresh_rates(k);
-        self.scratch = row;
-    }
-
-    /// The cached data of pair (i, j), (K/V, headroom), from the model's rate
-    /// coefficient and effect.
-    fn pair_data(&self, i: usize, j: usize, rate: f64, effect: Effect) -> (f64, f32) {
-        let (a, b) = (&self.families[i], &self.families[j]);
-        let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-        let c = rate / self.volume;
-        let (dm, dphi, c) = match effect {
-            Effect::Stick { change } => (p.mass, change.abs(), c),
-            Effect::Erode { loss } => (loss, 0.0, c),
-            Effect::Shatter => (t.mass, t.filling, c),
-            // Nothing happens: such events are left out.
-            Effect::Bounce => (0.0, 0.0, 0.0),
-        };
-        let room = |f: f64, x: f64, dx: f64| if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY };
-        let headroom = room(self.settings.f_m, t.mass, dm).min(room(self.settings.f_phi, t.filling, dphi));
-        // An integer (|h| < 2¹¹) or ±∞: exact in f32.
-        (c, headroom as f32)
     }
 
     /// Recomputes the group rates of family k (its zoom, groups or pair data changed).
@@ -1357,7 +1369,7 @@ const MERGE_REFRESH: f64 = 1e-3;
 /// ⌊log₂ x⌋ for x > 0, read off the binary exponent where x is a normal
 /// number (exact, and far cheaper than a logarithm); N_ε (4.24) needs no
 /// more than this.
-fn floor_log2(x: f64) -> f64 {
+pub(crate) fn floor_log2(x: f64) -> f64 {
     let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
     if x > 0.0 && biased != 0 && biased != 0x7ff { f64::from(biased - 1023) } else { x.log2().floor() }
 }

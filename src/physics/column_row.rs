@@ -1,0 +1,294 @@
+//! The pair data of one family of a Monte Carlo column with every other
+//! family, computed over the whole row at once.
+//!
+//! A run computes a new family's row after almost every event (the product of
+//! a sticking collision is a family of its own), and a pair's data take about
+//! twenty divisions and square roots in a chain: one pair at a time the row
+//! waits on their latency. Here the families' properties are first copied
+//! into one array per property, then one loop without branches computes
+//! every pair's relative velocity, rate coefficient, outcome, filling-factor
+//! change and headroom, several pairs per instruction where the processor has
+//! vector units (AVX2 or AVX-512, chosen when the program runs). The loop does
+//! exactly the operations of [`Column::pair`](super::monte_carlo::Model::pair)
+//! and [`PairRule::data`] in the same order, with the branch-free logarithm
+//! of [`super::ln`] that they take too, so every pair's data are the same to
+//! the last bit; a pair beyond hit-and-stick (collisional compaction, whose
+//! power law takes a logarithm and an exponential of its own) or whose
+//! quotients leave the normal numbers is marked and recomputed one at a time
+//! by those functions. A test holds the two equal over random families.
+
+use super::aggregate::DriftTerms;
+use super::ln::ln_normal;
+use super::monte_carlo::{Family, Pair, PairRule};
+use std::cell::RefCell;
+
+/// The properties of the row's partner families, one array per property,
+/// in the order of the row.
+#[derive(Debug, Default)]
+pub(crate) struct Lanes {
+    pub mass: Vec<f64>,
+    pub filling: Vec<f64>,
+    pub stokes: Vec<f64>,
+    pub sqrt_stokes: Vec<f64>,
+    pub settling: Vec<f64>,
+    pub radial: Vec<f64>,
+    pub azimuthal: Vec<f64>,
+    pub radius: Vec<f64>,
+    pub scale_height2: Vec<f64>,
+    /// Out: K/V of each pair.
+    pub c: Vec<f64>,
+    /// Out: each pair's headroom.
+    pub headroom: Vec<f32>,
+    /// Out: whether the pair must be computed one at a time.
+    pub scalar: Vec<bool>,
+}
+
+impl Lanes {
+    /// The properties of `families`, in their order, and room for the results.
+    fn fill<'a>(&mut self, families: impl ExactSizeIterator<Item = &'a Family<super::coagulation::Props>>) {
+        let n = families.len();
+        for v in [
+            &mut self.mass,
+            &mut self.filling,
+            &mut self.stokes,
+            &mut self.sqrt_stokes,
+            &mut self.settling,
+            &mut self.radial,
+            &mut self.azimuthal,
+            &mut self.radius,
+            &mut self.scale_height2,
+            &mut self.c,
+        ] {
+            v.resize(n, 0.0);
+        }
+        self.headroom.resize(n, 0.0);
+        self.scalar.resize(n, false);
+        for (at, f) in families.enumerate() {
+            let d = &f.props.drift;
+            self.mass[at] = f.mass;
+            self.filling[at] = f.filling;
+            self.stokes[at] = d.stokes;
+            self.sqrt_stokes[at] = d.sqrt_stokes;
+            self.settling[at] = d.settling;
+            self.radial[at] = d.radial;
+            self.azimuthal[at] = d.azimuthal;
+            self.radius[at] = f.props.radius;
+            self.scale_height2[at] = f.props.scale_height2;
+        }
+    }
+}
+
+/// The row's family (the one whose data are computed).
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Lead {
+    pub mass: f64,
+    pub filling: f64,
+    pub drift: DriftTerms,
+    pub radius: f64,
+    pub scale_height2: f64,
+}
+
+/// Everything a pair needs that is the same along the row.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct RowConstants {
+    /// Dispersion ε of the mass-to-area ratio.
+    pub epsilon: f64,
+    /// 8k_BT/π, J.
+    pub brownian: f64,
+    /// Turbulence: Re^{-1/2}, V_g Re^{1/4}, 1.55 V_g, V_g.
+    pub st_eta: f64,
+    pub vg_re: f64,
+    pub vg_155: f64,
+    pub vg: f64,
+    /// Gas: α, Ω, H, ηv_K.
+    pub alpha: f64,
+    pub omega: f64,
+    pub scale_height: f64,
+    pub eta_vk: f64,
+    /// Monomer internal density ρ₀ and mass m₀; collisional-compaction onset 3bE_roll.
+    pub rho0: f64,
+    pub m0: f64,
+    pub onset: f64,
+    /// Thresholds and erosion prefactor c₁.
+    pub r_crit: f64,
+    pub v_eros: f64,
+    pub v_frag: f64,
+    pub v_bounce: f64,
+    pub c1: f64,
+    /// From the engine: V, f_m, f_φ.
+    pub rule: PairRule,
+}
+
+thread_local! {
+    static LANES: RefCell<Lanes> = RefCell::new(Lanes::default());
+}
+
+/// Computes the pair data of `lead` with `others[j]` for j in `which` into
+/// `out[j]`; the pairs that `exact` must compute one at a time are passed to
+/// it (it gets the index j).
+pub(crate) fn pair_data_row(
+    k: &RowConstants,
+    lead: &Lead,
+    others: &[Family<super::coagulation::Props>],
+    which: &[usize],
+    out: &mut [Pair],
+    mut exact: impl FnMut(usize) -> Pair,
+) {
+    LANES.with(|cell| {
+        let mut lanes = cell.borrow_mut();
+        let lanes = &mut *lanes;
+        // Every pair is computed on its own, so the order of the row does not
+        // matter here: a whole row is taken in the order of the families
+        // (reading them one after another), a part in the order of `which`.
+        if which.len() == others.len() {
+            lanes.fill(others.iter());
+            run(k, lead, lanes);
+            for (j, ((pair, &c), (&headroom, &scalar))) in
+                out.iter_mut().zip(&lanes.c).zip(lanes.headroom.iter().zip(&lanes.scalar)).enumerate()
+            {
+                *pair = if scalar { exact(j) } else { Pair { c, headroom } };
+            }
+        } else {
+            lanes.fill(which.iter().map(|&j| &others[j]));
+            run(k, lead, lanes);
+            for (at, &j) in which.iter().enumerate() {
+                out[j] =
+                    if lanes.scalar[at] { exact(j) } else { Pair { c: lanes.c[at], headroom: lanes.headroom[at] } };
+            }
+        }
+    });
+}
+
+/// The loop, compiled for the widest vector units the processor has.
+fn run(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the processor has AVX-512F (checked just above).
+            return unsafe { run_avx512(k, lead, lanes) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has AVX2 (checked just above).
+            return unsafe { run_avx2(k, lead, lanes) };
+        }
+    }
+    kernel(k, lead, lanes);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn run_avx512(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
+    kernel(k, lead, lanes);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn run_avx2(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
+    kernel(k, lead, lanes);
+}
+
+/// ⌊log₂ x⌋ from the binary exponent, and whether x is a positive normal
+/// number (where that is exact; see `monte_carlo::floor_log2`).
+#[inline(always)]
+fn exponent(x: f64) -> (f64, bool) {
+    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
+    (f64::from(biased - 1023), x > 0.0 && biased != 0 && biased != 0x7ff)
+}
+
+/// One row, without branches: the same operations as the pair-at-a-time
+/// functions, with both sides of every choice computed and one kept.
+#[inline(always)]
+fn kernel(k: &RowConstants, a: &Lead, lanes: &mut Lanes) {
+    let n = lanes.c.len();
+    let (mass, filling, stokes, sqrt_stokes) =
+        (&lanes.mass[..n], &lanes.filling[..n], &lanes.stokes[..n], &lanes.sqrt_stokes[..n]);
+    let (settling, radial, azimuthal) = (&lanes.settling[..n], &lanes.radial[..n], &lanes.azimuthal[..n]);
+    let (radius, scale_height2) = (&lanes.radius[..n], &lanes.scale_height2[..n]);
+    let (out_c, out_h, out_s) = (&mut lanes.c[..n], &mut lanes.headroom[..n], &mut lanes.scalar[..n]);
+    let d = &a.drift;
+    for i in 0..n {
+        let (mb, phib, sb) = (mass[i], filling[i], stokes[i]);
+        // Relative velocity (Column::velocity_with).
+        let a_first = d.stokes >= sb;
+        let s1 = if a_first { d.stokes } else { sb };
+        let s2 = if a_first { sb } else { d.stokes };
+        let gap = s1 - s2;
+        let spread = k.epsilon * s1;
+        let diff = (gap * gap + spread * spread).sqrt();
+        let s2e = (s1 - diff).max(0.0);
+        let brownian2 = k.brownian * (a.mass + mb) / (a.mass * mb);
+        let sqrt1 = if a_first { d.sqrt_stokes } else { sqrt_stokes[i] };
+        let fast = k.vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2e)).sqrt();
+        let turbulence = if s1 < k.st_eta {
+            k.vg_re * diff
+        } else if s1 < 1.0 {
+            k.vg_155 * sqrt1
+        } else {
+            fast
+        };
+        let inv1 = 1.0 / (1.0 + s2e);
+        let inv2 = 1.0 / (1.0 + s2e * s2e);
+        let h_d = 1.0 / (1.0 + s2e / k.alpha * (1.0 + 2.0 * s2e) * inv1).sqrt();
+        let settling2 = k.omega * s2e * inv1 * h_d * k.scale_height;
+        let radial2 = 2.0 * s2e * k.eta_vk * inv2;
+        let azimuthal2 = k.eta_vk * inv2;
+        let ds = (if a_first { d.settling } else { settling[i] }) - settling2;
+        let dr = (if a_first { d.radial } else { radial[i] }) - radial2;
+        let da = (if a_first { d.azimuthal } else { azimuthal[i] }) - azimuthal2;
+        let v = (brownian2 + turbulence * turbulence + ds * ds + dr * dr + da * da).sqrt();
+        // Rate coefficient (Column::rate_at).
+        let r = a.radius + radius[i];
+        let rate = 1.253_314_137_315_500_3 * r * r * v / (a.scale_height2 + scale_height2[i]).sqrt();
+        // Outcome (aggregate::outcome).
+        let a_target = a.mass >= mb;
+        let (tm, tphi) = if a_target { (a.mass, a.filling) } else { (mb, phib) };
+        let (pm, pphi) = if a_target { (mb, phib) } else { (a.mass, a.filling) };
+        let ratio = tm.min(pm) / tm.max(pm);
+        let small = ratio < k.r_crit;
+        let eroding = small && v > k.v_eros;
+        let shattering = v >= k.v_frag;
+        let fragment = !small && shattering;
+        let bounce = !small && !shattering && v >= k.v_bounce;
+        let stick = !(eroding || fragment || bounce);
+        let lost = k.c1 * (1.0 * (v / k.v_eros)) * pm;
+        let shatter = fragment || (eroding && lost >= tm);
+        // Filling-factor change of sticking (coagulation::filling_change_with).
+        let vt = tm / (k.rho0 * tphi);
+        let vp = pm / (k.rho0 * pphi);
+        let (va, vb) = if vt >= vp { (vt, vp) } else { (vp, vt) };
+        // hit_and_stick_void: capped above V₁/V₂ = 650.
+        let void =
+            if va > 650.0 * vb { 6.94 * vb } else { (0.99 - 1.03 * ln_normal(2.0 / (va / vb + 1.0))).min(6.94) * vb };
+        let m = tm + pm;
+        let phi_hs = m / (k.rho0 * (va + vb + void));
+        let full = phi_hs >= 1.0;
+        let inv_m = 1.0 / m;
+        let e = 0.5 * tm * pm * inv_m * v * v;
+        let n_mono = m / k.m0;
+        let x = e * k.m0 * inv_m / k.onset;
+        let hs2 = phi_hs * phi_hs;
+        let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
+        let below = x * x * x < hs10 * n_mono * n_mono * (1.0 - 1e-9);
+        let hit_and_stick = e <= k.onset || (below && hs10 > 1e-250 && n_mono < 1e100);
+        let grown = (vp + void) / vt;
+        let change = if full { 1.0 - tphi } else { tphi * (pm / tm - grown) / (1.0 + grown) };
+        // Pair data (PairRule::data).
+        let c = rate / k.rule.volume;
+        let (dm, dphi) = if stick {
+            (pm, change.abs())
+        } else if bounce {
+            (0.0, 0.0)
+        } else if shatter {
+            (tm, tphi)
+        } else {
+            (lost, 0.0)
+        };
+        let (hm, ok_m) = exponent(k.rule.f_m * tm / dm);
+        let (hp, ok_p) = exponent(k.rule.f_phi * tphi / dphi);
+        let hm = if dm > 0.0 { hm } else { f64::INFINITY };
+        let hp = if dphi > 0.0 { hp } else { f64::INFINITY };
+        out_c[i] = if bounce { 0.0 } else { c };
+        out_h[i] = hm.min(hp) as f32;
+        out_s[i] = (stick && !(full || hit_and_stick)) || (dm > 0.0 && !ok_m) || (dphi > 0.0 && !ok_p);
+    }
+}

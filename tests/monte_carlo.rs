@@ -277,7 +277,11 @@ fn pair_data_follow_the_families_as_they_are_now() {
     let rule = PairRule { volume: 1e15, f_m: 0.1, f_phi: 0.1 };
     let mut row = vec![Pair::default(); others.len()];
     let which: Vec<usize> = (0..others.len()).collect();
-    col.pair_data_row(&target, &others, &which, &rule, &mut row);
+    let mut lanes = Default::default();
+    for (i, f) in others.iter().enumerate() {
+        col.set_lane(&mut lanes, i, f);
+    }
+    col.pair_data_row(&lanes, &target, &others, &which, &rule, &mut row);
     for (p, from_row) in others.iter().zip(&row) {
         let (rate, effect) = col.pair(&target, p);
         assert_eq!(rule.data(&target, p, rate, effect), *from_row);
@@ -426,10 +430,14 @@ fn a_row_of_pair_data_equals_its_pairs_one_at_a_time_to_the_bit() {
         let mut by_mass: Vec<usize> = (0..families.len()).collect();
         by_mass.sort_by(|&a, &b| families[a].mass.total_cmp(&families[b].mass));
         let some: Vec<usize> = by_mass.iter().copied().filter(|j| j % 3 == 0).collect();
+        let mut lanes = Default::default();
+        for (i, f) in families.iter().enumerate() {
+            column.set_lane(&mut lanes, i, f);
+        }
         for lead in [0, 1, 2, 3, 5, 100, 400, 700, 702, 703] {
             for which in [&by_mass, &some] {
                 let mut row = vec![Pair::default(); families.len()];
-                column.pair_data_row(&families[lead], &families, which, &rule, &mut row);
+                column.pair_data_row(&lanes, &families[lead], &families, which, &rule, &mut row);
                 for &j in which.iter() {
                     let (a, b) = (&families[lead], &families[j]);
                     let (rate, effect) = column.pair(a, b);

@@ -31,7 +31,7 @@ use super::aggregate::{
     dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
     hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
 };
-use super::column_row::{self, Lead, RowConstants};
+use super::column_row::{self, Lanes, Lead, RowConstants};
 use super::constants::K_B;
 use super::disk::Local;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Pair, PairRule, Settings};
@@ -294,6 +294,7 @@ impl Column {
 
 impl Model for Column {
     type Props = Props;
+    type Lanes = Lanes;
 
     fn props(&self, body: Body) -> Props {
         let agg = Aggregate { mass: body.mass, filling: body.filling };
@@ -318,11 +319,22 @@ impl Model for Column {
         self.pair_with(&Constants::of(self), a, b)
     }
 
+    /// The families' properties, one array per property ([`column_row::Lanes`]).
+    fn set_lane(&self, lanes: &mut Lanes, i: usize, family: &Family<Props>) {
+        lanes.set(i, &Lead::of(family, self.monomer.density));
+    }
+
+    fn remove_lane(&self, lanes: &mut Lanes, i: usize) {
+        lanes.swap_remove(i);
+    }
+
     /// [`Model::pair_data_row`] over the whole row at once
-    /// ([`super::column_row`]), with the pairs that need a logarithm computed
-    /// one at a time; the same numbers to the last bit.
+    /// ([`column_row`]), with the pairs that need a logarithm computed one
+    /// at a time; the same numbers to the last bit. A part of a row, or a
+    /// row with another turbulence model, is computed one pair at a time.
     fn pair_data_row(
         &self,
+        lanes: &Lanes,
         a: &Family<Props>,
         others: &[Family<Props>],
         which: &[usize],
@@ -330,11 +342,15 @@ impl Model for Column {
         out: &mut [Pair],
     ) {
         let k = Constants::of(self);
-        if self.turbulence != TurbulenceModel::Thesis {
+        let one = |j: usize| {
+            let b = &others[j];
+            let (rate, effect) = self.pair_with(&k, a, b);
+            rule.data(a, b, rate, effect)
+        };
+        let whole = which.len() == others.len() && lanes.len() == others.len();
+        if self.turbulence != TurbulenceModel::Thesis || !whole {
             for &j in which {
-                let b = &others[j];
-                let (rate, effect) = self.pair_with(&k, a, b);
-                out[j] = rule.data(a, b, rate, effect);
+                out[j] = one(j);
             }
             return;
         }
@@ -360,18 +376,7 @@ impl Model for Column {
             c1: self.c1,
             rule: *rule,
         };
-        let lead = Lead {
-            mass: a.mass,
-            filling: a.filling,
-            drift: a.props.drift,
-            radius: a.props.radius,
-            scale_height2: a.props.scale_height2,
-        };
-        column_row::pair_data_row(&row, &lead, others, which, out, |j| {
-            let b = &others[j];
-            let (rate, effect) = self.pair_with(&k, a, b);
-            rule.data(a, b, rate, effect)
-        });
+        column_row::pair_data_row(&row, &Lead::of(a, k.rho0), lanes, out, one);
     }
 
     /// Sticking gives the filling factor after hit-and-stick and collisional
@@ -818,4 +823,39 @@ pub fn mass_distribution(runs: &[Run], index: usize, per_decade: usize) -> Vec<(
             (10f64.powf((b as f64 + 0.5) / n), mean, var.sqrt())
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::physics::aggregate::Thresholds;
+    use crate::physics::constants::AU;
+    use crate::physics::disk::GasDisk;
+
+    #[test]
+    fn the_lanes_and_keys_follow_the_families_through_every_change() {
+        // Erosion at 1 m/s: families are added, merged, removed and
+        // re-zoomed from the first events on.
+        let column = Column {
+            env: GasDisk::mmsn(1e-3, 0.01).local(5.0 * AU),
+            monomer: Monomer::ice(),
+            thresholds: Thresholds { v_frag: 80.0, v_eros: 1e-3, v_bounce: f64::INFINITY, r_crit: 1e-2 },
+            c1: 1.0,
+            compaction: Compaction::Full,
+            turbulence: TurbulenceModel::Thesis,
+            epsilon: 0.1,
+            newton: true,
+        };
+        let mono = column.monomer;
+        let settings = Settings { groups_per_decade: 10.0, ..Settings::default() };
+        let first = Body { mass: mono.mass(), filling: 1.0 };
+        let mut engine = Engine::new(column, first, 1e21 / mono.mass(), 1e21, settings).expect("valid");
+        let mut tally = engine.tally();
+        for _ in 0..20_000 {
+            assert!(engine.step());
+            assert!(engine.mirrors_match(), "after {} events", engine.events());
+            tally = engine.tally();
+        }
+        assert!(tally.erode > 100 && tally.merges > 100 && tally.rezooms > 10, "{tally:?}");
+    }
 }

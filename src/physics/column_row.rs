@@ -3,89 +3,136 @@
 //!
 //! A run computes a new family's row after almost every event (the product of
 //! a sticking collision is a family of its own), and a pair's data take about
-//! twenty divisions and square roots in a chain: one pair at a time the row
-//! waits on their latency. Here the families' properties are first copied
-//! into one array per property, then one loop without branches computes
-//! every pair's relative velocity, rate coefficient, outcome, filling-factor
-//! change and headroom, several pairs per instruction where the processor has
-//! vector units (AVX2 or AVX-512, chosen when the program runs). The loop does
-//! exactly the operations of [`Column::pair`](super::monte_carlo::Model::pair)
-//! and [`PairRule::data`] in the same order, with the branch-free logarithm
-//! of [`super::ln`] that they take too, so every pair's data are the same to
-//! the last bit; a pair beyond hit-and-stick (collisional compaction, whose
-//! power law takes a logarithm and an exponential of its own) or whose
-//! quotients leave the normal numbers is marked and recomputed one at a time
-//! by those functions. A test holds the two equal over random families.
+//! thirty divisions and square roots in a chain: one pair at a time the row
+//! waits on their latency. Here the families' properties are kept beside
+//! them, one array per property ([`Lanes`], updated as families change), and
+//! one loop without branches computes every pair's relative velocity, rate
+//! coefficient, outcome, filling-factor change and headroom, several pairs
+//! per instruction where the processor has vector units (AVX2 or AVX-512,
+//! chosen when the program runs). The loop does exactly the operations of
+//! [`Column::pair`](super::monte_carlo::Model::pair) and [`PairRule::data`]
+//! in the same order, with the branch-free logarithm of [`super::ln`] that
+//! they take too, so every pair's data are the same to the last bit; a pair
+//! beyond hit-and-stick (collisional compaction, whose power law takes a
+//! logarithm and an exponential of its own) or whose quotients leave the
+//! normal numbers is marked and recomputed one at a time by those functions.
+//! A test holds the two equal over random families and every outcome.
 
 use super::aggregate::DriftTerms;
+use super::coagulation::Props;
 use super::ln::ln_normal;
 use super::monte_carlo::{Family, Pair, PairRule};
 use std::cell::RefCell;
 
-/// The properties of the row's partner families, one array per property,
-/// in the order of the row.
-#[derive(Debug, Default)]
-pub(crate) struct Lanes {
-    pub mass: Vec<f64>,
-    pub filling: Vec<f64>,
-    pub stokes: Vec<f64>,
-    pub sqrt_stokes: Vec<f64>,
-    pub settling: Vec<f64>,
-    pub radial: Vec<f64>,
-    pub azimuthal: Vec<f64>,
-    pub radius: Vec<f64>,
-    pub scale_height2: Vec<f64>,
-    /// Out: K/V of each pair.
-    pub c: Vec<f64>,
-    /// Out: each pair's headroom.
-    pub headroom: Vec<f32>,
-    /// Out: whether the pair must be computed one at a time.
-    pub scalar: Vec<bool>,
+/// The properties of a column's families that their pairs need, one array
+/// per property, in the order of the families.
+#[derive(Debug, Default, Clone, PartialEq)]
+pub struct Lanes {
+    mass: Vec<f64>,
+    filling: Vec<f64>,
+    /// Volume m/(ρ₀φ), m³.
+    volume: Vec<f64>,
+    stokes: Vec<f64>,
+    sqrt_stokes: Vec<f64>,
+    /// 1/(1 + St).
+    inv_1p: Vec<f64>,
+    settling: Vec<f64>,
+    radial: Vec<f64>,
+    azimuthal: Vec<f64>,
+    radius: Vec<f64>,
+    scale_height2: Vec<f64>,
+}
+
+/// One family's entries of [`Lanes`].
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct Lead {
+    pub mass: f64,
+    pub filling: f64,
+    pub volume: f64,
+    pub drift: DriftTerms,
+    pub inv_1p: f64,
+    pub radius: f64,
+    pub scale_height2: f64,
+}
+
+impl Lead {
+    /// The entries of family `f` for monomers of internal density `rho0`.
+    pub fn of(f: &Family<Props>, rho0: f64) -> Lead {
+        Lead {
+            mass: f.mass,
+            filling: f.filling,
+            volume: f.mass / (rho0 * f.filling),
+            drift: f.props.drift,
+            inv_1p: 1.0 / (1.0 + f.props.drift.stokes),
+            radius: f.props.radius,
+            scale_height2: f.props.scale_height2,
+        }
+    }
 }
 
 impl Lanes {
-    /// The properties of `families`, in their order, and room for the results.
-    fn fill<'a>(&mut self, families: impl ExactSizeIterator<Item = &'a Family<super::coagulation::Props>>) {
-        let n = families.len();
-        for v in [
+    /// The arrays, each as a mutable vector.
+    fn arrays(&mut self) -> [&mut Vec<f64>; 11] {
+        [
             &mut self.mass,
             &mut self.filling,
+            &mut self.volume,
             &mut self.stokes,
             &mut self.sqrt_stokes,
+            &mut self.inv_1p,
             &mut self.settling,
             &mut self.radial,
             &mut self.azimuthal,
             &mut self.radius,
             &mut self.scale_height2,
-            &mut self.c,
-        ] {
-            v.resize(n, 0.0);
+        ]
+    }
+
+    /// Family i is now `lead` (i = the number of families: a new one).
+    pub(crate) fn set(&mut self, i: usize, lead: &Lead) {
+        let d = &lead.drift;
+        let values = [
+            lead.mass,
+            lead.filling,
+            lead.volume,
+            d.stokes,
+            d.sqrt_stokes,
+            lead.inv_1p,
+            d.settling,
+            d.radial,
+            d.azimuthal,
+            lead.radius,
+            lead.scale_height2,
+        ];
+        for (array, value) in self.arrays().into_iter().zip(values) {
+            if i == array.len() {
+                array.push(value);
+            } else {
+                array[i] = value;
+            }
         }
-        self.headroom.resize(n, 0.0);
-        self.scalar.resize(n, false);
-        for (at, f) in families.enumerate() {
-            let d = &f.props.drift;
-            self.mass[at] = f.mass;
-            self.filling[at] = f.filling;
-            self.stokes[at] = d.stokes;
-            self.sqrt_stokes[at] = d.sqrt_stokes;
-            self.settling[at] = d.settling;
-            self.radial[at] = d.radial;
-            self.azimuthal[at] = d.azimuthal;
-            self.radius[at] = f.props.radius;
-            self.scale_height2[at] = f.props.scale_height2;
+    }
+
+    /// Family i is removed; the last takes its index.
+    pub(crate) fn swap_remove(&mut self, i: usize) {
+        for array in self.arrays() {
+            array.swap_remove(i);
         }
+    }
+
+    /// The number of families.
+    pub(crate) fn len(&self) -> usize {
+        self.mass.len()
     }
 }
 
-/// The row's family (the one whose data are computed).
-#[derive(Debug, Clone, Copy)]
-pub(crate) struct Lead {
-    pub mass: f64,
-    pub filling: f64,
-    pub drift: DriftTerms,
-    pub radius: f64,
-    pub scale_height2: f64,
+/// A row's results: K/V, headroom, and whether the pair must be computed one
+/// at a time.
+#[derive(Debug, Default)]
+struct Out {
+    c: Vec<f64>,
+    headroom: Vec<f32>,
+    scalar: Vec<bool>,
 }
 
 /// Everything a pair needs that is the same along the row.
@@ -120,71 +167,61 @@ pub(crate) struct RowConstants {
 }
 
 thread_local! {
-    static LANES: RefCell<Lanes> = RefCell::new(Lanes::default());
+    static OUT: RefCell<Out> = RefCell::new(Out::default());
 }
 
-/// Computes the pair data of `lead` with `others[j]` for j in `which` into
+/// Computes the pair data of `lead` with every family of `lanes` into
 /// `out[j]`; the pairs that `exact` must compute one at a time are passed to
 /// it (it gets the index j).
 pub(crate) fn pair_data_row(
     k: &RowConstants,
     lead: &Lead,
-    others: &[Family<super::coagulation::Props>],
-    which: &[usize],
+    lanes: &Lanes,
     out: &mut [Pair],
     mut exact: impl FnMut(usize) -> Pair,
 ) {
-    LANES.with(|cell| {
-        let mut lanes = cell.borrow_mut();
-        let lanes = &mut *lanes;
-        // Every pair is computed on its own, so the order of the row does not
-        // matter here: a whole row is taken in the order of the families
-        // (reading them one after another), a part in the order of `which`.
-        if which.len() == others.len() {
-            lanes.fill(others.iter());
-            run(k, lead, lanes);
-            for (j, ((pair, &c), (&headroom, &scalar))) in
-                out.iter_mut().zip(&lanes.c).zip(lanes.headroom.iter().zip(&lanes.scalar)).enumerate()
-            {
-                *pair = if scalar { exact(j) } else { Pair { c, headroom } };
-            }
-        } else {
-            lanes.fill(which.iter().map(|&j| &others[j]));
-            run(k, lead, lanes);
-            for (at, &j) in which.iter().enumerate() {
-                out[j] =
-                    if lanes.scalar[at] { exact(j) } else { Pair { c: lanes.c[at], headroom: lanes.headroom[at] } };
-            }
+    OUT.with(|cell| {
+        let mut row = cell.borrow_mut();
+        let row = &mut *row;
+        let n = lanes.len();
+        row.c.resize(n, 0.0);
+        row.headroom.resize(n, 0.0);
+        row.scalar.resize(n, false);
+        run(k, lead, lanes, row);
+        for (j, ((pair, &c), (&headroom, &scalar))) in
+            out.iter_mut().zip(&row.c).zip(row.headroom.iter().zip(&row.scalar)).enumerate()
+        {
+            *pair = if scalar { exact(j) } else { Pair { c, headroom } };
         }
     });
 }
 
 /// The loop, compiled for the widest vector units the processor has.
-fn run(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
+fn run(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx512f") {
             // SAFETY: the processor has AVX-512F (checked just above).
-            return unsafe { run_avx512(k, lead, lanes) };
+            return unsafe { run_avx512(k, lead, lanes, out) };
         }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the processor has AVX2 (checked just above).
-            return unsafe { run_avx2(k, lead, lanes) };
+            return unsafe { run_avx2(k, lead, lanes, out) };
         }
     }
-    kernel(k, lead, lanes);
+    kernel(k, lead, lanes, out);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
-fn run_avx512(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
-    kernel(k, lead, lanes);
+fn run_avx512(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+    kernel(k, lead, lanes, out);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn run_avx2(k: &RowConstants, lead: &Lead, lanes: &mut Lanes) {
-    kernel(k, lead, lanes);
+fn run_avx2(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+    kernel(k, lead, lanes, out);
 }
 
 /// ⌊log₂ x⌋ from the binary exponent, and whether x is a positive normal
@@ -198,13 +235,19 @@ fn exponent(x: f64) -> (f64, bool) {
 /// One row, without branches: the same operations as the pair-at-a-time
 /// functions, with both sides of every choice computed and one kept.
 #[inline(always)]
-fn kernel(k: &RowConstants, a: &Lead, lanes: &mut Lanes) {
-    let n = lanes.c.len();
-    let (mass, filling, stokes, sqrt_stokes) =
-        (&lanes.mass[..n], &lanes.filling[..n], &lanes.stokes[..n], &lanes.sqrt_stokes[..n]);
+fn kernel(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
+    let n = lanes.len();
+    let (mass, filling, volume, stokes, sqrt_stokes, inv_1p) = (
+        &lanes.mass[..n],
+        &lanes.filling[..n],
+        &lanes.volume[..n],
+        &lanes.stokes[..n],
+        &lanes.sqrt_stokes[..n],
+        &lanes.inv_1p[..n],
+    );
     let (settling, radial, azimuthal) = (&lanes.settling[..n], &lanes.radial[..n], &lanes.azimuthal[..n]);
     let (radius, scale_height2) = (&lanes.radius[..n], &lanes.scale_height2[..n]);
-    let (out_c, out_h, out_s) = (&mut lanes.c[..n], &mut lanes.headroom[..n], &mut lanes.scalar[..n]);
+    let (out_c, out_h, out_s) = (&mut out.c[..n], &mut out.headroom[..n], &mut out.scalar[..n]);
     let d = &a.drift;
     for i in 0..n {
         let (mb, phib, sb) = (mass[i], filling[i], stokes[i]);
@@ -218,7 +261,9 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &mut Lanes) {
         let s2e = (s1 - diff).max(0.0);
         let brownian2 = k.brownian * (a.mass + mb) / (a.mass * mb);
         let sqrt1 = if a_first { d.sqrt_stokes } else { sqrt_stokes[i] };
-        let fast = k.vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2e)).sqrt();
+        // 1/(1 + St₁), kept per family.
+        let inv1p = if a_first { a.inv_1p } else { inv_1p[i] };
+        let fast = k.vg * (inv1p + 1.0 / (1.0 + s2e)).sqrt();
         let turbulence = if s1 < k.st_eta {
             k.vg_re * diff
         } else if s1 < 1.0 {
@@ -242,7 +287,9 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &mut Lanes) {
         // Outcome (aggregate::outcome).
         let a_target = a.mass >= mb;
         let (tm, tphi) = if a_target { (a.mass, a.filling) } else { (mb, phib) };
-        let (pm, pphi) = if a_target { (mb, phib) } else { (a.mass, a.filling) };
+        let pm = if a_target { mb } else { a.mass };
+        // Volumes m/(ρ₀φ), kept per family.
+        let (vt, vp) = if a_target { (a.volume, volume[i]) } else { (volume[i], a.volume) };
         let ratio = tm.min(pm) / tm.max(pm);
         let small = ratio < k.r_crit;
         let eroding = small && v > k.v_eros;
@@ -253,8 +300,6 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &mut Lanes) {
         let lost = k.c1 * (1.0 * (v / k.v_eros)) * pm;
         let shatter = fragment || (eroding && lost >= tm);
         // Filling-factor change of sticking (coagulation::filling_change_with).
-        let vt = tm / (k.rho0 * tphi);
-        let vp = pm / (k.rho0 * pphi);
         let (va, vb) = if vt >= vp { (vt, vp) } else { (vp, vt) };
         // hit_and_stick_void: capped above V₁/V₂ = 650.
         let void =

@@ -132,6 +132,18 @@ pub trait Model: Sync {
     /// Properties cached per family.
     type Props: Copy + Send + Sync + std::fmt::Debug;
 
+    /// What the model keeps beside the families for its rows (e.g. their
+    /// properties, one array per property), updated as they change
+    /// ([`Model::set_lane`], [`Model::remove_lane`]); `()` for none.
+    type Lanes: Default + Clone + Send + Sync + std::fmt::Debug;
+
+    /// Family `i` is now `family` (`i` equal to the number of families
+    /// before: a new family).
+    fn set_lane(&self, _lanes: &mut Self::Lanes, _i: usize, _family: &Family<Self::Props>) {}
+
+    /// Family `i` is removed, and the last family takes its index.
+    fn remove_lane(&self, _lanes: &mut Self::Lanes, _i: usize) {}
+
     /// The cached properties of a particle.
     fn props(&self, body: Body) -> Self::Props;
 
@@ -154,12 +166,13 @@ pub trait Model: Sync {
     /// The cached pair data ([`PairRule::data`] of [`Model::pair`]) of
     /// family `a` with each of `others[j]` for j in `which` into `out[j]`
     /// (`out` holds `others.len()` entries, and those not in `which` are left
-    /// as they are). `which` lists the families by mass, so that pairs in
-    /// the same regime of the model follow each other. Models override it to
-    /// share work across a row; an override gives the same numbers to the
-    /// last bit.
+    /// as they are); `lanes` are those of `others`. `which` lists the
+    /// families by mass, so that pairs in the same regime of the model follow
+    /// each other. Models override it to share work across a row; an
+    /// override gives the same numbers to the last bit.
     fn pair_data_row(
         &self,
+        _lanes: &Self::Lanes,
         a: &Family<Self::Props>,
         others: &[Family<Self::Props>],
         which: &[usize],
@@ -195,6 +208,7 @@ pub enum Analytic {
 
 impl Model for Analytic {
     type Props = ();
+    type Lanes = ();
 
     fn props(&self, _: Body) -> Self::Props {}
 
@@ -507,6 +521,13 @@ pub struct Engine<M: Model> {
     stale: Vec<bool>,
     /// The indices of the families in order of mass.
     by_mass: Vec<usize>,
+    /// The model's lanes of the families.
+    lanes: M::Lanes,
+    /// Each family's mass and zoom factor, one after another (what the
+    /// unit rates of a row read).
+    keys: Vec<Key>,
+    /// A row of pair data gathered from rows and columns, kept to reuse its allocation.
+    row_pairs: Vec<Pair>,
     tally: Tally,
     rng: rand::rngs::StdRng,
 }
@@ -564,10 +585,14 @@ impl<M: Model> Engine<M> {
             dirty: vec![false],
             stale: vec![false],
             by_mass: vec![0],
+            lanes: M::Lanes::default(),
+            keys: vec![Key { mass: family.mass, zoom: family.zoom }],
+            row_pairs: Vec::new(),
             weight_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
         };
+        e.model.set_lane(&mut e.lanes, 0, &e.families[0]);
         e.reserve(1);
         e.refresh_pairs(0);
         Ok(e)
@@ -729,7 +754,7 @@ impl<M: Model> Engine<M> {
         let rule = PairRule { volume: self.volume, f_m: self.settings.f_m, f_phi: self.settings.f_phi };
         // Row k, now the newest, holds the pair data.
         let row = self.pairs.row_mut(k, n);
-        self.model.pair_data_row(&self.families[k], &self.families, &self.by_mass, &rule, row);
+        self.model.pair_data_row(&self.lanes, &self.families[k], &self.families, &self.by_mass, &rule, row);
         self.rows += 1;
         self.computed[k] = self.rows;
         self.refresh_rates(k);
@@ -739,22 +764,34 @@ impl<M: Model> Engine<M> {
     fn refresh_rates(&mut self, k: usize) {
         let n = self.families.len();
         let (now, before) = (self.families[k].groups, self.counted[k]);
-        let fk = self.families[k];
         let at = self.computed[k];
+        // The pair data of row k, from wherever they are (after its pair
+        // data were computed, from row k itself).
+        let pairs = if self.computed.iter().all(|&c| c <= at) {
+            self.pairs.row(k, n)
+        } else {
+            let (own, pairs) = (self.pairs.row(k, n), &self.pairs);
+            self.row_pairs.clear();
+            self.row_pairs.extend(
+                own.iter()
+                    .zip(&self.computed)
+                    .enumerate()
+                    .map(|(j, (p, &c))| if at >= c { *p } else { pairs.get(j, k) }),
+            );
+            &self.row_pairs
+        };
+        // Each pair's unit rate and the partner's sum, pair by pair in the
+        // order of the families, in vectors where the processor has them.
+        let fk = &self.families[k];
+        let lead = (fk.zoom, fk.mass, k);
+        unit_row(lead, (now, before), &self.keys, pairs, self.units.row_mut(k, n), &mut self.partner_sum[..n]);
+        // Family k's own sum in order of mass, as it always was summed.
+        let units = self.units.row(k, n);
         let mut sum = 0.0;
-        // In order of mass, so that the branches of the ordering of a pair
-        // are predictable.
-        let units = self.units.row_mut(k, n);
         for &j in &self.by_mass {
-            if j == k {
-                continue;
+            if j != k {
+                sum += self.counted[j] * units[j];
             }
-            let pair = if at >= self.computed[j] { self.pairs.get(k, j) } else { self.pairs.get(j, k) };
-            let old = units[j];
-            let new = unit_of(&fk, k, &self.families[j], j, &pair);
-            units[j] = new;
-            self.partner_sum[j] += now * new - before * old;
-            sum += self.counted[j] * new;
         }
         self.units.mirror_row(k, n);
         self.partner_sum[k] = sum;
@@ -805,6 +842,8 @@ impl<M: Model> Engine<M> {
         self.pairs.row_mut(k, k + 1).fill(Pair::default());
         self.units.row_mut(k, k + 1).fill(0.0);
         self.rows += 1;
+        self.model.set_lane(&mut self.lanes, k, &family);
+        self.keys.push(Key { mass: family.mass, zoom: family.zoom });
         self.families.push(family);
         self.in_group.push(0.0);
         self.partner_sum.push(0.0);
@@ -863,6 +902,8 @@ impl<M: Model> Engine<M> {
         self.dirty.swap_remove(k);
         self.stale.swap_remove(k);
         self.families.swap_remove(k);
+        self.keys.swap_remove(k);
+        self.model.remove_lane(&mut self.lanes, k);
         if k != last {
             self.enlist(k);
         }
@@ -1164,6 +1205,7 @@ impl<M: Model> Engine<M> {
         }
         let z = f.particles().log2().floor().max(0.0) as i32;
         self.families[k].zoom = z;
+        self.keys[k].zoom = z;
         self.dirty[k] = true;
         self.families[k].groups = f.particles() / exp2i(z);
         true
@@ -1256,6 +1298,8 @@ impl<M: Model> Engine<M> {
             self.unlist(t);
         }
         self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
+        self.model.set_lane(&mut self.lanes, t, &self.families[t]);
+        self.keys[t].mass = mass;
         if mass != b.mass {
             self.enlist(t);
         }
@@ -1270,13 +1314,14 @@ impl<M: Model> Engine<M> {
         for f in &self.families {
             *decades.entry(f.mass.log10().floor() as i64).or_default() += f.particles();
         }
-        for (f, dirty) in self.families.iter_mut().zip(self.dirty.iter_mut()) {
+        for ((f, key), dirty) in self.families.iter_mut().zip(&mut self.keys).zip(self.dirty.iter_mut()) {
             let n10 = decades.get(&(f.mass.log10().floor() as i64)).copied().unwrap_or(0.0);
             let z = zoom_for(n10, w_star).min(capped_zoom(f.mass, self.initial_mass, self.settings.group_mass_cap));
             *dirty = z != f.zoom;
             if *dirty {
                 f.groups = f.particles() / exp2i(z);
                 f.zoom = z;
+                key.zoom = z;
             }
         }
         self.merge_small(false);
@@ -1298,6 +1343,22 @@ impl<M: Model> Engine<M> {
         self.dirty.iter_mut().for_each(|d| *d = false);
         self.zoomed_at = self.moments();
         self.since_zoom = 0;
+    }
+
+    /// Whether what the engine keeps beside the families (each one's mass
+    /// and zoom factor, and the model's lanes) matches them.
+    #[cfg(test)]
+    pub(crate) fn mirrors_match(&self) -> bool
+    where
+        M::Lanes: PartialEq,
+    {
+        let mut lanes = M::Lanes::default();
+        for (i, f) in self.families.iter().enumerate() {
+            self.model.set_lane(&mut lanes, i, f);
+        }
+        lanes == self.lanes
+            && self.keys.len() == self.families.len()
+            && self.keys.iter().zip(&self.families).all(|(k, f)| k.mass == f.mass && k.zoom == f.zoom)
     }
 
     /// Mass per unit volume per ln m in logarithmic bins, `per_decade` bins
@@ -1340,7 +1401,9 @@ fn order_of<P>(a: &Family<P>, i: usize, b: &Family<P>, j: usize, headroom: f32) 
 }
 
 /// The group event rate (4.25) of pair (i, j) per group of each,
-/// 2^{z_lo + N_ε} K/V, from its cached data.
+/// 2^{z_lo + N_ε} K/V, from its cached data (what [`unit_row`] computes
+/// for a whole row).
+#[cfg(test)]
 fn unit_of<P>(a: &Family<P>, i: usize, b: &Family<P>, j: usize, pair: &Pair) -> f64 {
     if pair.c <= 0.0 {
         return 0.0;
@@ -1350,6 +1413,94 @@ fn unit_of<P>(a: &Family<P>, i: usize, b: &Family<P>, j: usize, pair: &Pair) -> 
     exp2i(z_lo + n_eps) * pair.c
 }
 
+/// The unit rates of the lead family (zoom, mass, index) with every family
+/// into `units` ([`unit_of`], 0 with itself), and every other family's
+/// partner sum moved by the lead's group count now times the new unit rate
+/// less its count before times the old one.
+fn unit_row(
+    lead: (i32, f64, usize),
+    counts: (f64, f64),
+    keys: &[Key],
+    pairs: &[Pair],
+    units: &mut [f64],
+    sums: &mut [f64],
+) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        if std::arch::is_x86_feature_detected!("avx512f") {
+            // SAFETY: the processor has AVX-512F (checked just above).
+            return unsafe { unit_row_avx512(lead, counts, keys, pairs, units, sums) };
+        }
+        if std::arch::is_x86_feature_detected!("avx2") {
+            // SAFETY: the processor has AVX2 (checked just above).
+            return unsafe { unit_row_avx2(lead, counts, keys, pairs, units, sums) };
+        }
+    }
+    unit_row_lanes(lead, counts, keys, pairs, units, sums);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx512f")]
+fn unit_row_avx512(
+    lead: (i32, f64, usize),
+    counts: (f64, f64),
+    keys: &[Key],
+    pairs: &[Pair],
+    units: &mut [f64],
+    sums: &mut [f64],
+) {
+    unit_row_lanes(lead, counts, keys, pairs, units, sums);
+}
+
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn unit_row_avx2(
+    lead: (i32, f64, usize),
+    counts: (f64, f64),
+    keys: &[Key],
+    pairs: &[Pair],
+    units: &mut [f64],
+    sums: &mut [f64],
+) {
+    unit_row_lanes(lead, counts, keys, pairs, units, sums);
+}
+
+/// [`unit_row`] without branches: [`order_of`] and [`unit_of`] with both
+/// sides of every choice computed and one kept (the same numbers).
+#[inline(always)]
+fn unit_row_lanes(
+    (zk, mk, k): (i32, f64, usize),
+    (now, before): (f64, f64),
+    keys: &[Key],
+    pairs: &[Pair],
+    units: &mut [f64],
+    sums: &mut [f64],
+) {
+    let n = units.len();
+    let (keys, pairs, sums) = (&keys[..n], &pairs[..n], &mut sums[..n]);
+    for j in 0..n {
+        let Key { mass: mj, zoom: zj } = keys[j];
+        let Pair { c, headroom } = pairs[j];
+        let lo_first = zk < zj || (zk == zj && (mk > mj || (mk == mj && k < j)));
+        let (zl, ml, zh, mh) = if lo_first { (zk, mk, zj, mj) } else { (zj, mj, zk, mk) };
+        let span = zh - zl;
+        let short = f64::from(span) - f64::from(headroom);
+        let general = if short.is_finite() { (short.max(0.0) as i32).min(span) } else { 0 };
+        let n_eps = if span == 0 {
+            0
+        } else if ml < mh {
+            span
+        } else {
+            general
+        };
+        let unit = if c <= 0.0 || j == k { 0.0 } else { exp2i(zl + n_eps) * c };
+        let old = units[j];
+        units[j] = unit;
+        let moved = now * unit - before * old;
+        sums[j] += if j == k { 0.0 } else { moved };
+    }
+}
+
 /// How an event made a product.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Made {
@@ -1357,6 +1508,13 @@ enum Made {
     Stuck,
     /// By erosion or shattering: a remnant or fragments.
     Broken,
+}
+
+/// A family's mass and zoom factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Key {
+    mass: f64,
+    zoom: i32,
 }
 
 /// Particles made by one event: what they are, how many, at which zoom factor.
@@ -1426,6 +1584,7 @@ mod tests {
 
     impl Model for Toy {
         type Props = ();
+        type Lanes = ();
         fn props(&self, _: Body) {}
         fn rate(&self, _: &Family<()>, _: &Family<()>) -> f64 {
             1.0
@@ -1442,6 +1601,40 @@ mod tests {
     /// where a target meeting several projectiles in sequence shatters at
     /// the first (before, the other projectiles' mass was lost: 5 × 10⁻⁴ of
     /// a column's mass in one event at v_frag = 33.29 m/s).
+    #[test]
+    fn a_row_of_unit_rates_equals_them_one_at_a_time() {
+        use rand::Rng;
+        let mut rng = rand::rngs::StdRng::seed_from_u64(3);
+        let n = 300;
+        let family = |mass: f64, zoom: i32| Family { mass, filling: 1.0, groups: 1.0, zoom, props: () };
+        // Few masses and zooms, so that ties in both are common.
+        let families: Vec<Family<()>> =
+            (0..n).map(|_| family(f64::from(rng.random_range(1..6)), rng.random_range(0..5))).collect();
+        let keys: Vec<Key> = families.iter().map(|f| Key { mass: f.mass, zoom: f.zoom }).collect();
+        let headrooms = [f32::INFINITY, f32::NEG_INFINITY, -3.0, 0.0, 1.0, 2.0, 7.0];
+        let pairs: Vec<Pair> = (0..n)
+            .map(|j| Pair {
+                c: if j % 7 == 0 { 0.0 } else { rng.random_range(0.1..10.0) },
+                headroom: headrooms[j % headrooms.len()],
+            })
+            .collect();
+        for k in [0, 1, 17, 150, n - 1] {
+            let fk = &families[k];
+            let mut units: Vec<f64> = (0..n).map(|j| if j == k { 0.0 } else { rng.random_range(0.0..1.0) }).collect();
+            let old = units.clone();
+            let mut sums: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..100.0)).collect();
+            let before = sums.clone();
+            let (now, then) = (3.0, 2.5);
+            unit_row((fk.zoom, fk.mass, k), (now, then), &keys, &pairs, &mut units, &mut sums);
+            for j in 0..n {
+                let unit = if j == k { 0.0 } else { unit_of(fk, k, &families[j], j, &pairs[j]) };
+                assert_eq!(units[j].to_bits(), unit.to_bits(), "pair {k}, {j}");
+                let sum = if j == k { before[j] } else { before[j] + (now * unit - then * old[j]) };
+                assert_eq!(sums[j].to_bits(), sum.to_bits(), "sum {j}");
+            }
+        }
+    }
+
     #[test]
     fn every_outcome_of_a_sequence_keeps_the_mass() {
         let fragment = Body { mass: 0.5, filling: 1.0 };

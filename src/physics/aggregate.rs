@@ -513,7 +513,7 @@ fn hit_and_stick_void(a: f64, b: f64) -> f64 {
     if a > 650.0 * b {
         return 6.94 * b;
     }
-    (0.99 - 1.03 * super::ln::ln(2.0 / (a / b + 1.0))).min(6.94) * b
+    (0.99 - 1.03 * super::fdlibm::ln(2.0 / (a / b + 1.0))).min(6.94) * b
 }
 
 /// The geometry of aggregates of one mass at any filling factor: what

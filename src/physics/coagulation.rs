@@ -34,6 +34,7 @@ use super::aggregate::{
 use super::column_row::{self, Lanes, Lead, RowConstants};
 use super::constants::K_B;
 use super::disk::Local;
+use super::fdlibm;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Pair, PairRule, Settings};
 use crate::parallel::prelude::*;
 use std::f64::consts::PI;
@@ -246,7 +247,8 @@ fn sticking_filling(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v
     if below && hs10 > 1e-250 && n < 1e100 {
         return (phi_hs, true);
     }
-    let phi_c = (0.3 * x.ln() - 0.2 * n.ln()).exp();
+    // fdlibm's logarithm and exponential, as the row of pairs takes them.
+    let phi_c = fdlibm::exp(0.3 * fdlibm::ln(x) - 0.2 * fdlibm::ln(n));
     if phi_c > phi_hs { (phi_c.min(1.0), false) } else { (phi_hs, true) }
 }
 

@@ -11,16 +11,15 @@
 //! per instruction where the processor has vector units (AVX2 or AVX-512,
 //! chosen when the program runs). The loop does exactly the operations of
 //! [`Column::pair`](super::monte_carlo::Model::pair) and [`PairRule::data`]
-//! in the same order, with the branch-free logarithm of [`super::ln`] that
-//! they take too, so every pair's data are the same to the last bit; a pair
-//! beyond hit-and-stick (collisional compaction, whose power law takes a
-//! logarithm and an exponential of its own) or whose quotients leave the
-//! normal numbers is marked and recomputed one at a time by those functions.
+//! in the same order, with the branch-free logarithm and exponential of
+//! [`super::fdlibm`] that they take too, so every pair's data are the same to
+//! the last bit; a pair whose numbers leave the range those hold in (or the
+//! normal numbers) is marked and recomputed one at a time by those functions.
 //! A test holds the two equal over random families and every outcome.
 
 use super::aggregate::DriftTerms;
 use super::coagulation::Props;
-use super::ln::ln_normal;
+use super::fdlibm::{EXP_RANGE, exp_moderate, ln_normal, small_integer};
 use super::monte_carlo::{Family, Pair, PairRule};
 use std::cell::RefCell;
 
@@ -126,13 +125,21 @@ impl Lanes {
     }
 }
 
-/// A row's results: K/V, headroom, and whether the pair must be computed one
-/// at a time.
+/// A row's results: K/V, headroom, whether the pair must be computed one at a
+/// time, and how many pairs stick beyond the onset of collisional compaction.
 #[derive(Debug, Default)]
 struct Out {
     c: Vec<f64>,
     headroom: Vec<f32>,
     scalar: Vec<bool>,
+    /// Pairs of the row that stick beyond the onset of collisional compaction.
+    compacting: usize,
+    /// Whether rows take the compaction law in vectors: where few pairs
+    /// reach it (no compaction, or full compaction's compact products),
+    /// its two logarithms and exponential for every pair would cost more
+    /// than those few one at a time. Set from the row before (a run's rows
+    /// are alike); either way the numbers are the same.
+    compact: bool,
 }
 
 /// Everything a pair needs that is the same along the row.
@@ -187,7 +194,12 @@ pub(crate) fn pair_data_row(
         row.c.resize(n, 0.0);
         row.headroom.resize(n, 0.0);
         row.scalar.resize(n, false);
-        run(k, lead, lanes, row);
+        if row.compact {
+            run::<true>(k, lead, lanes, row);
+        } else {
+            run::<false>(k, lead, lanes, row);
+        }
+        row.compact = 32 * row.compacting > n;
         for (j, ((pair, &c), (&headroom, &scalar))) in
             out.iter_mut().zip(&row.c).zip(row.headroom.iter().zip(&row.scalar)).enumerate()
         {
@@ -197,45 +209,45 @@ pub(crate) fn pair_data_row(
 }
 
 /// The loop, compiled for the widest vector units the processor has.
-fn run(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+fn run<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
     #[cfg(target_arch = "x86_64")]
     {
         if std::arch::is_x86_feature_detected!("avx512f") {
             // SAFETY: the processor has AVX-512F (checked just above).
-            return unsafe { run_avx512(k, lead, lanes, out) };
+            return unsafe { run_avx512::<COMPACT>(k, lead, lanes, out) };
         }
         if std::arch::is_x86_feature_detected!("avx2") {
             // SAFETY: the processor has AVX2 (checked just above).
-            return unsafe { run_avx2(k, lead, lanes, out) };
+            return unsafe { run_avx2::<COMPACT>(k, lead, lanes, out) };
         }
     }
-    kernel(k, lead, lanes, out);
+    kernel::<COMPACT>(k, lead, lanes, out);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
-fn run_avx512(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel(k, lead, lanes, out);
+fn run_avx512<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+    kernel::<COMPACT>(k, lead, lanes, out);
 }
 
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn run_avx2(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel(k, lead, lanes, out);
+fn run_avx2<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+    kernel::<COMPACT>(k, lead, lanes, out);
 }
 
 /// ⌊log₂ x⌋ from the binary exponent, and whether x is a positive normal
 /// number (where that is exact; see `monte_carlo::floor_log2`).
 #[inline(always)]
 fn exponent(x: f64) -> (f64, bool) {
-    let biased = ((x.to_bits() >> 52) & 0x7ff) as i32;
-    (f64::from(biased - 1023), x > 0.0 && biased != 0 && biased != 0x7ff)
+    let biased = (x.to_bits() >> 52) & 0x7ff;
+    (small_integer(biased) - 1023.0, x > 0.0 && biased != 0 && biased != 0x7ff)
 }
 
 /// One row, without branches: the same operations as the pair-at-a-time
 /// functions, with both sides of every choice computed and one kept.
 #[inline(always)]
-fn kernel(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
+fn kernel<const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
     let n = lanes.len();
     let (mass, filling, volume, stokes, sqrt_stokes, inv_1p) = (
         &lanes.mass[..n],
@@ -248,6 +260,9 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
     let (settling, radial, azimuthal) = (&lanes.settling[..n], &lanes.radial[..n], &lanes.azimuthal[..n]);
     let (radius, scale_height2) = (&lanes.radius[..n], &lanes.scale_height2[..n]);
     let (out_c, out_h, out_s) = (&mut out.c[..n], &mut out.headroom[..n], &mut out.scalar[..n]);
+    // A count rather than a flag per pair: one more array to write tips
+    // the compiler's estimate against vectors.
+    let mut compacting = 0usize;
     let d = &a.drift;
     for i in 0..n {
         let (mb, phib, sb) = (mass[i], filling[i], stokes[i]);
@@ -314,9 +329,25 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
         let hs2 = phi_hs * phi_hs;
         let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
         let below = x * x * x < hs10 * n_mono * n_mono * (1.0 - 1e-9);
-        let hit_and_stick = e <= k.onset || (below && hs10 > 1e-250 && n_mono < 1e100);
+        // Collisional compaction: the power law where it may exceed φ_hs.
+        let compacting_here = !(full || e <= k.onset || (below && hs10 > 1e-250 && n_mono < 1e100));
+        // Without COMPACT, every pair that gets here is computed one at a time.
+        let (phi_c, in_range) = if COMPACT {
+            let (okx, okn) = (x.is_normal() && x > 0.0, n_mono.is_normal() && n_mono > 0.0);
+            let power = 0.3 * ln_normal(x) - 0.2 * ln_normal(n_mono);
+            (exp_moderate(power), okx && okn && power.abs() < EXP_RANGE)
+        } else {
+            (0.0, false)
+        };
+        let compacted = compacting_here && phi_c > phi_hs;
         let grown = (vp + void) / vt;
-        let change = if full { 1.0 - tphi } else { tphi * (pm / tm - grown) / (1.0 + grown) };
+        let change = if full {
+            1.0 - tphi
+        } else if compacted {
+            phi_c.min(1.0) - tphi
+        } else {
+            tphi * (pm / tm - grown) / (1.0 + grown)
+        };
         // Pair data (PairRule::data).
         let c = rate / k.rule.volume;
         let (dm, dphi) = if stick {
@@ -334,6 +365,8 @@ fn kernel(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
         let hp = if dphi > 0.0 { hp } else { f64::INFINITY };
         out_c[i] = if bounce { 0.0 } else { c };
         out_h[i] = hm.min(hp) as f32;
-        out_s[i] = (stick && !(full || hit_and_stick)) || (dm > 0.0 && !ok_m) || (dphi > 0.0 && !ok_p);
+        compacting += usize::from(stick && compacting_here);
+        out_s[i] = (stick && compacting_here && !in_range) || (dm > 0.0 && !ok_m) || (dphi > 0.0 && !ok_p);
     }
+    out.compacting = compacting;
 }

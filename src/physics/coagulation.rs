@@ -356,28 +356,7 @@ impl Model for Column {
             }
             return;
         }
-        let th = &self.thresholds;
-        let row = RowConstants {
-            epsilon: self.epsilon,
-            brownian: k.brownian,
-            st_eta: k.turbulence.st_eta,
-            vg_re: k.turbulence.vg * k.turbulence.re_quarter,
-            vg_155: k.turbulence.vg * 1.55,
-            vg: k.turbulence.vg,
-            alpha: self.env.alpha,
-            omega: self.env.omega,
-            scale_height: self.env.scale_height,
-            eta_vk: self.env.eta_vk,
-            rho0: k.rho0,
-            m0: k.m0,
-            onset: 3.0 * B_COMPACT * k.e_roll,
-            r_crit: th.r_crit,
-            v_eros: th.v_eros,
-            v_frag: th.v_frag,
-            v_bounce: th.v_bounce,
-            c1: self.c1,
-            rule: *rule,
-        };
+        let row = self.row_constants(&k, rule);
         column_row::pair_data_row(&row, &Lead::of(a, k.rho0), lanes, out, one);
     }
 
@@ -414,6 +393,32 @@ impl Model for Column {
 }
 
 impl Column {
+    /// What every pair of a row needs ([`column_row`]).
+    fn row_constants(&self, k: &Constants, rule: &PairRule) -> RowConstants {
+        let th = &self.thresholds;
+        RowConstants {
+            epsilon: self.epsilon,
+            brownian: k.brownian,
+            st_eta: k.turbulence.st_eta,
+            vg_re: k.turbulence.vg * k.turbulence.re_quarter,
+            vg_155: k.turbulence.vg * 1.55,
+            vg: k.turbulence.vg,
+            alpha: self.env.alpha,
+            omega: self.env.omega,
+            scale_height: self.env.scale_height,
+            eta_vk: self.env.eta_vk,
+            rho0: k.rho0,
+            m0: k.m0,
+            onset: 3.0 * B_COMPACT * k.e_roll,
+            r_crit: th.r_crit,
+            v_eros: th.v_eros,
+            v_frag: th.v_frag,
+            v_bounce: th.v_bounce,
+            c1: self.c1,
+            rule: *rule,
+        }
+    }
+
     /// The rate coefficient of a pair at relative velocity `v`:
     /// h_ij/(h_i h_j) with h_ij = (h_i⁻² + h_j⁻²)^{-1/2} is 1/(h_i² + h_j²)^{1/2}.
     fn rate_at(&self, a: &Family<Props>, b: &Family<Props>, v: f64) -> f64 {
@@ -833,6 +838,69 @@ mod tests {
     use crate::physics::aggregate::Thresholds;
     use crate::physics::constants::AU;
     use crate::physics::disk::GasDisk;
+
+    #[test]
+    fn the_loop_over_a_row_equals_its_pairs_one_at_a_time_to_the_bit() {
+        // The loop as any processor compiles it, with the compaction law in
+        // the loop and without (the vector-unit build is held to one pair at
+        // a time through `Model::pair_data_row` in tests/monte_carlo.rs).
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(12);
+        let mono = Monomer::ice();
+        let m0 = mono.mass();
+        let cases = [
+            (f64::INFINITY, 80.0, f64::INFINITY, Compaction::Collisional),
+            (20.0, 80.0, f64::INFINITY, Compaction::Full),
+            (1e-3, 5.0, f64::INFINITY, Compaction::Full),
+            (0.5, 10.0, 1e-3, Compaction::Collisional),
+        ];
+        for (v_eros, v_frag, v_bounce, compaction) in cases {
+            let column = Column {
+                env: GasDisk::mmsn(1e-3, 0.01).local(5.0 * AU),
+                monomer: mono,
+                thresholds: Thresholds { v_frag, v_eros, v_bounce, r_crit: 1e-2 },
+                c1: 1.0,
+                compaction,
+                turbulence: TurbulenceModel::Thesis,
+                epsilon: 0.1,
+                newton: true,
+            };
+            let rule = PairRule { volume: 3.7e15, f_m: 0.1, f_phi: 0.1 };
+            let families: Vec<Family<Props>> = (0..400)
+                .map(|n| {
+                    let mass = m0 * 10f64.powf(rng.random_range(0.0..28.0));
+                    let filling = if n % 3 == 0 { 1.0 } else { 10f64.powf(rng.random_range(-5.0..0.0)) };
+                    let props = column.props(Body { mass, filling });
+                    Family { mass, filling, groups: 1.0, zoom: 0, props }
+                })
+                .collect();
+            let mut lanes = Lanes::default();
+            for (i, f) in families.iter().enumerate() {
+                column.set_lane(&mut lanes, i, f);
+            }
+            let k = Constants::of(&column);
+            let row = column.row_constants(&k, &rule);
+            for lead in [0, 1, 2, 57, 399] {
+                let a = &families[lead];
+                let one = |j: usize| {
+                    let (rate, effect) = column.pair_with(&k, a, &families[j]);
+                    rule.data(a, &families[j], rate, effect)
+                };
+                for compact in [false, true] {
+                    let mut out = vec![Pair::default(); families.len()];
+                    column_row::loop_row(compact, &row, &Lead::of(a, k.rho0), &lanes, &mut out, one);
+                    for (j, pair) in out.iter().enumerate() {
+                        let exact = one(j);
+                        assert_eq!(
+                            (pair.c.to_bits(), pair.headroom.to_bits()),
+                            (exact.c.to_bits(), exact.headroom.to_bits()),
+                            "{compaction:?}, v_eros {v_eros}: pair {lead}, {j}, compaction law in the loop: {compact}"
+                        );
+                    }
+                }
+            }
+        }
+    }
 
     #[test]
     fn the_lanes_and_keys_follow_the_families_through_every_change() {

@@ -7,15 +7,18 @@
 //! waits on their latency. Here the families' properties are kept beside
 //! them, one array per property ([`Lanes`], updated as families change), and
 //! one loop without branches computes every pair's relative velocity, rate
-//! coefficient, outcome, filling-factor change and headroom, several pairs
-//! per instruction where the processor has vector units (AVX2 or AVX-512,
-//! chosen when the program runs). The loop does exactly the operations of
+//! coefficient, outcome, filling-factor change and headroom, eight pairs
+//! per instruction where the processor has AVX-512 (found when the program
+//! runs; elsewhere pairs are computed one at a time, as before). The loop does exactly the operations of
 //! [`Column::pair`](super::monte_carlo::Model::pair) and [`PairRule::data`]
 //! in the same order, with the branch-free logarithm and exponential of
 //! [`super::fdlibm`] that they take too, so every pair's data are the same to
 //! the last bit; a pair whose numbers leave the range those hold in (or the
 //! normal numbers) is marked and recomputed one at a time by those functions.
 //! A test holds the two equal over random families and every outcome.
+
+// Off x86-64 the loop serves the tests alone.
+#![cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
 
 use super::aggregate::DriftTerms;
 use super::coagulation::Props;
@@ -179,13 +182,67 @@ thread_local! {
 
 /// Computes the pair data of `lead` with every family of `lanes` into
 /// `out[j]`; the pairs that `exact` must compute one at a time are passed to
-/// it (it gets the index j).
+/// it (it gets the index j). Without vector units for the loop (AVX-512) every
+/// pair is computed one at a time: the loop alone is no faster, and the
+/// compiler's estimate keeps it out of AVX2's narrower vectors.
 pub(crate) fn pair_data_row(
     k: &RowConstants,
     lead: &Lead,
     lanes: &Lanes,
     out: &mut [Pair],
     mut exact: impl FnMut(usize) -> Pair,
+) {
+    #[cfg(target_arch = "x86_64")]
+    if std::arch::is_x86_feature_detected!("avx512f") {
+        return in_rows(k, lead, lanes, out, exact, |compact, k, lead, lanes, row| {
+            // SAFETY: the processor has AVX-512F (checked just above).
+            unsafe {
+                if compact {
+                    run_avx512::<true>(k, lead, lanes, row);
+                } else {
+                    run_avx512::<false>(k, lead, lanes, row);
+                }
+            }
+        });
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    let _ = (k, lead);
+    for (j, pair) in out.iter_mut().enumerate().take(lanes.len()) {
+        *pair = exact(j);
+    }
+}
+
+/// [`pair_data_row`] by the loop compiled without vector units, taking the
+/// compaction law in the loop or not: what the loop computes on any
+/// processor, for the tests that hold it to one pair at a time.
+#[cfg(test)]
+pub(crate) fn loop_row(
+    compact: bool,
+    k: &RowConstants,
+    lead: &Lead,
+    lanes: &Lanes,
+    out: &mut [Pair],
+    exact: impl FnMut(usize) -> Pair,
+) {
+    let run = move |_: bool, k: &RowConstants, lead: &Lead, lanes: &Lanes, row: &mut Out| {
+        if compact {
+            kernel::<true>(k, lead, lanes, row);
+        } else {
+            kernel::<false>(k, lead, lanes, row);
+        }
+    };
+    in_rows(k, lead, lanes, out, exact, run);
+}
+
+/// A row by `run` (given whether to take the compaction law in the loop),
+/// with the pairs it marks computed by `exact`.
+fn in_rows(
+    k: &RowConstants,
+    lead: &Lead,
+    lanes: &Lanes,
+    out: &mut [Pair],
+    mut exact: impl FnMut(usize) -> Pair,
+    run: impl FnOnce(bool, &RowConstants, &Lead, &Lanes, &mut Out),
 ) {
     OUT.with(|cell| {
         let mut row = cell.borrow_mut();
@@ -194,11 +251,7 @@ pub(crate) fn pair_data_row(
         row.c.resize(n, 0.0);
         row.headroom.resize(n, 0.0);
         row.scalar.resize(n, false);
-        if row.compact {
-            run::<true>(k, lead, lanes, row);
-        } else {
-            run::<false>(k, lead, lanes, row);
-        }
+        run(row.compact, k, lead, lanes, row);
         row.compact = 32 * row.compacting > n;
         for (j, ((pair, &c), (&headroom, &scalar))) in
             out.iter_mut().zip(&row.c).zip(row.headroom.iter().zip(&row.scalar)).enumerate()
@@ -208,31 +261,10 @@ pub(crate) fn pair_data_row(
     });
 }
 
-/// The loop, compiled for the widest vector units the processor has.
-fn run<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        if std::arch::is_x86_feature_detected!("avx512f") {
-            // SAFETY: the processor has AVX-512F (checked just above).
-            return unsafe { run_avx512::<COMPACT>(k, lead, lanes, out) };
-        }
-        if std::arch::is_x86_feature_detected!("avx2") {
-            // SAFETY: the processor has AVX2 (checked just above).
-            return unsafe { run_avx2::<COMPACT>(k, lead, lanes, out) };
-        }
-    }
-    kernel::<COMPACT>(k, lead, lanes, out);
-}
-
+/// The loop, compiled for AVX-512.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
 fn run_avx512<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel::<COMPACT>(k, lead, lanes, out);
-}
-
-#[cfg(target_arch = "x86_64")]
-#[target_feature(enable = "avx2")]
-fn run_avx2<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
     kernel::<COMPACT>(k, lead, lanes, out);
 }
 

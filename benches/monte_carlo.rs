@@ -1,8 +1,9 @@
 //! Speed against accuracy of the Monte Carlo distribution method (thesis
 //! Sect. 4.3): the analytic kernels as w* grows, and the two column runs of
 //! ch. 4 — perfect sticking until m_p = 10¹⁵ g and erosion at 20 m/s until
-//! 10⁴ yr — with their event rates. Run with `cargo bench --bench monte_carlo`
-//! (add `quick` to skip the erosion run).
+//! 10⁴ yr — with their event rates; and the cost of a new family's row of
+//! pairs, at once and one pair at a time. Run with `cargo bench --bench
+//! monte_carlo` (add `quick` to skip the erosion run).
 
 use grainscope::physics::coagulation::{Run, RunConfig};
 use grainscope::physics::constants::YEAR;
@@ -36,9 +37,51 @@ fn timed(cfg: &RunConfig) -> (f64, Run) {
     (t.elapsed().as_secs_f64(), r)
 }
 
+/// Nanoseconds a pair for a row of 600 families of the erosion column, as
+/// the engine computes it (`Model::pair_data_row`) and one pair at a time.
+fn row_of_pairs() {
+    use grainscope::physics::monte_carlo::{Body, Family, Model, Pair, PairRule};
+    use rand::{Rng, SeedableRng};
+    let column = column(40.0, 20.0, "full", 1e21, 1e4).column;
+    let m0 = column.monomer.mass();
+    let mut rng = rand::rngs::StdRng::seed_from_u64(5);
+    let families: Vec<_> = (0..600)
+        .map(|_| {
+            let mass = m0 * 10f64.powf(rng.random_range(0.0..24.0));
+            let filling = (mass / m0).powf(-0.3).max(1e-4);
+            Family { mass, filling, groups: 1.0, zoom: 0, props: column.props(Body { mass, filling }) }
+        })
+        .collect();
+    let mut lanes = Default::default();
+    for (i, f) in families.iter().enumerate() {
+        column.set_lane(&mut lanes, i, f);
+    }
+    let which: Vec<usize> = (0..families.len()).collect();
+    let rule = PairRule { volume: 1e15, f_m: 0.1, f_phi: 0.1 };
+    let mut out = vec![Pair::default(); families.len()];
+    let rows = 2000;
+    let start = Instant::now();
+    for r in 0..rows {
+        column.pair_data_row(&lanes, &families[r % families.len()], &families, &which, &rule, &mut out);
+    }
+    let at_once = start.elapsed().as_secs_f64() / (rows * families.len()) as f64 * 1e9;
+    // A row without its first family is computed one pair at a time (with
+    // the column's constants once), as every row was before.
+    let part = &which[1..];
+    let start = Instant::now();
+    for r in 0..rows {
+        column.pair_data_row(&lanes, &families[r % families.len()], &families, part, &rule, &mut out);
+    }
+    let one = start.elapsed().as_secs_f64() / (rows * part.len()) as f64 * 1e9;
+    println!(
+        "A row of 600 pairs (erosion column): {at_once:.1} ns a pair as the engine computes it, {one:.1} one at a time"
+    );
+}
+
 fn main() {
     let quick = std::env::args().any(|a| a == "quick");
     println!("{} threads", rayon::current_num_threads());
+    row_of_pairs();
     println!("Analytic kernels, 16 runs each from 1e20 monomers: worst error over the bins holding 90 % of the mass");
     println!("  kernel     t      w*   events/run   time/run [ms]   worst error");
     for (kernel, t) in [("constant", 1000.0), ("linear", 10.0), ("product", 0.9)] {

@@ -587,14 +587,19 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
             else {
                 return Ok(None);
             };
+            // A count (batches) or a real number (an event limit, in millions):
+            // finer is `times` as much, at most its largest value.
             let (n, max) = match (base.get(count), base.spec(count).map(|s| &s.kind)) {
-                (Some(Value::Count(n)), Some(SpecKind::Count { max, .. })) if n < *max => (n, *max),
+                (Some(Value::Count(n)), Some(SpecKind::Count { max, .. })) if n < *max => (n as f64, *max as f64),
+                (Some(Value::Number(n)), Some(SpecKind::Number { max, .. })) if n < *max => (n, *max),
                 _ => return Ok(Some(Err(format!("{count} is at its largest value: no finer resolution to check")))),
             };
+            let whole = matches!(base.get(count), Some(Value::Count(_)));
             let x = |u: f64| if c.log { u.exp() } else { u };
-            let at = |u: f64, refined: usize| -> Result<Option<f64>, SceneError> {
+            let at = |u: f64, refined: f64| -> Result<Option<f64>, SceneError> {
                 let Some(p) = with(base, c.line, &Value::Number(x(u))) else { return Ok(None) };
-                let Some(p) = with(&p, count, &Value::Count(refined)) else { return Ok(None) };
+                let refined = if whole { Value::Count(refined as usize) } else { Value::Number(refined) };
+                let Some(p) = with(&p, count, &refined) else { return Ok(None) };
                 Ok(match compute(&p, progress)? {
                     Point::Done { scalars, .. } => {
                         scalars.iter().find(|s| s.0 == c.scalar).map(|s| s.1).filter(|v| v.is_finite())
@@ -603,15 +608,15 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
                 })
             };
             let step = (b.1 - a.1).abs();
-            let change = |refined: usize| -> Result<Result<f64, String>, SceneError> {
+            let change = |refined: f64| -> Result<Result<f64, String>, SceneError> {
                 Ok(match (at(a.0, refined)?, at(b.0, refined)?) {
                     (Some(ya), Some(yb)) if step > 0.0 => Ok((yb - ya).abs() / step),
                     _ => Err(format!("no value at {refined} {count}")),
                 })
             };
-            let four = change((4 * n).min(max))?;
+            let four = change((4.0 * n).min(max))?;
             Ok(Some(match four {
-                Ok(ratio) if ratio >= RESOLVED && 4 * n < max => match change((16 * n).min(max))? {
+                Ok(ratio) if ratio >= RESOLVED && 4.0 * n < max => match change((16.0 * n).min(max))? {
                     Ok(sixteen) => Ok(Finer { four: ratio, sixteen: Some(sixteen) }),
                     Err(_) => Ok(Finer { four: ratio, sixteen: None }),
                 },
@@ -657,13 +662,14 @@ pub fn audit(base: &SceneParams, options: &Options, progress: &Progress) -> Resu
                 );
             }
             Some(Ok(Finer { four, sixteen })) => {
-                // Not a resolution step after all: open.
+                // Not a resolution step after all: open, unless a later
+                // declaration says it is physics.
                 let sixteen = sixteen.map_or(String::new(), |r| format!(" and {:.0} % at sixteen times", 100.0 * r));
                 detail += &format!(
-                    "; declared a resolution step, but at four times the resolution it keeps {:.0} % of its size{sixteen}",
+                    "; at four times the resolution it keeps {:.0} % of its size{sixteen}: not a step of the resolution",
                     100.0 * four
                 );
-                d = None;
+                d = Declared::find_physics(declared, Irregularity::Step, c.scalar, c.line).map(|d| d.why);
             }
             Some(Err(why)) => detail += &format!("; not checked at a finer resolution: {why}"),
             None => {}

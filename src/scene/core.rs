@@ -227,11 +227,27 @@ impl Declared {
         scalar: &str,
         parameter: &str,
     ) -> Option<&'a Declared> {
-        declared.iter().find(|d| {
-            d.kind == kind
-                && (d.scalar == "*" || d.scalar == scalar)
-                && (d.parameter == "*" || d.parameter == parameter)
-        })
+        declared.iter().find(|d| d.covers(kind, scalar, parameter))
+    }
+
+    /// The first declaration in `declared` that covers `kind` of `scalar`
+    /// along `parameter` as physics (no resolution to check): what a step
+    /// falls back to when the resolution it was first declared to be does
+    /// not explain it.
+    pub fn find_physics<'a>(
+        declared: &'a [Declared],
+        kind: Irregularity,
+        scalar: &str,
+        parameter: &str,
+    ) -> Option<&'a Declared> {
+        declared.iter().find(|d| d.resolution.is_none() && d.covers(kind, scalar, parameter))
+    }
+
+    /// Whether this declaration covers `kind` of `scalar` along `parameter`.
+    fn covers(&self, kind: Irregularity, scalar: &str, parameter: &str) -> bool {
+        self.kind == kind
+            && (self.scalar == "*" || self.scalar == scalar)
+            && (self.parameter == "*" || self.parameter == parameter)
     }
 }
 

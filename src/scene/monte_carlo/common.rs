@@ -308,12 +308,16 @@ pub fn endings(runs: &[Run]) -> Vec<String> {
 }
 
 /// The declarations of a column scene: every column's ([`COLUMN_DECLARED`])
-/// followed by the scene's own, as one constant slice.
+/// followed by the scene's own, as one constant slice. The event limit
+/// comes before the thresholds of the physics: any other step is first
+/// checked against it (at four and sixteen times the limit), and falls to
+/// those only where the limit does not explain it.
 macro_rules! column_declared {
     ($($own:expr),* $(,)?) => {
         &[
             $crate::scene::monte_carlo::common::EVENT_COUNT,
             $crate::scene::monte_carlo::common::FAMILY_COUNT,
+            $crate::scene::monte_carlo::common::EVENT_LIMIT,
             $crate::scene::monte_carlo::common::EROSION_ONSET,
             $crate::scene::monte_carlo::common::STOP_OUT_OF_REACH,
             $crate::scene::monte_carlo::common::FRAGMENTATION_BARRIER,
@@ -351,10 +355,13 @@ pub const FIRST_SNAPSHOT: crate::scene::core::Declared = crate::scene::core::Dec
 /// The number of families is a diagnostic of the distribution method: the
 /// zoom factors z* = [log₂(N₁₀/w*)] (4.26) change by whole numbers as w*
 /// (or anything that moves N₁₀) crosses a power of two, and the families
-/// merge or split with them.
+/// merge or split with them. Any parameter that changes the distribution's
+/// width changes their number: an erosive column at v_eros = 0.017 m/s,
+/// where nearly every collision erodes, ends with 38 families, one at
+/// 0.025 m/s with 146, at the same event limit or at sixteen times it.
 pub const FAMILY_COUNT: crate::scene::core::Declared = crate::scene::core::Declared {
     scalar: "families",
-    parameter: "groups_per_decade",
+    parameter: "*",
     kind: crate::scene::core::Irregularity::Step,
     why: "a diagnostic, the families of the method: zoom factors z* = [log₂(N₁₀/w*)] (4.26) change by whole numbers",
     resolution: None,
@@ -362,12 +369,18 @@ pub const FAMILY_COUNT: crate::scene::core::Declared = crate::scene::core::Decla
 
 /// Erosion acts only where a projectile hits faster than v_eros (4.13):
 /// above the fastest collision a run reaches, nothing erodes and ζ (4.34)
-/// is 1 exactly; just below it, erosion balances growth.
+/// is 1 exactly; just below it, erosion balances growth. The small
+/// projectiles all hit the largest bodies at nearly the speed of those
+/// bodies through the gas, so their erosion starts at once as v_eros falls
+/// below it, and the end of the run steps with ζ: in `mc-fig-4-4` (preview
+/// setting) the time at which m_p reaches the stop mass moves from 4 400 to
+/// 5 100 years between v_eros = 79 and 53 m/s, and further at a higher event
+/// limit.
 pub const EROSION_ONSET: crate::scene::core::Declared = crate::scene::core::Declared {
-    scalar: "zeta",
+    scalar: "*",
     parameter: "v_eros",
     kind: crate::scene::core::Irregularity::Step,
-    why: "a threshold: above the fastest collision of the run nothing erodes and ζ = 1 exactly (4.13), (4.34)",
+    why: "a threshold: above the fastest collision of the run nothing erodes and ζ = 1 exactly (4.13), (4.34); the largest bodies meet small projectiles all at nearly their own speed, so their erosion, and the end of the run, switch on at once",
     resolution: None,
 };
 
@@ -397,6 +410,23 @@ pub const STOP_OUT_OF_REACH: crate::scene::core::Declared = crate::scene::core::
     kind: crate::scene::core::Irregularity::Step,
     why: "a run stops when m_p reaches the stop mass; a column lighter than it never does and runs to the last snapshot",
     resolution: None,
+};
+
+/// A run that reaches the event limit ends there, and its scalars are where
+/// it stopped (the notes name the runs that did). Where a change of any
+/// parameter moves a run across the limit, they step: an erosive column at
+/// v_eros = 0.017 m/s (`mc-fig-4-4` at the preview's 0.2 million events)
+/// stops after 900 years where one at 0.025 m/s reaches its last snapshot
+/// at 10⁴ years. A step of the event limit, not of the physics: the audit
+/// checks that it shrinks at four (or sixteen) times the limit; where it
+/// does not, the step is open unless a threshold of the physics declared
+/// after this one covers it.
+pub const EVENT_LIMIT: crate::scene::core::Declared = crate::scene::core::Declared {
+    scalar: "*",
+    parameter: "*",
+    kind: crate::scene::core::Irregularity::Step,
+    why: "the event limit: a run that reaches it ends there, and its scalars are where it stopped",
+    resolution: Some("max_events_millions"),
 };
 
 /// The Monte Carlo scenes' event count is a diagnostic: a whole number per

@@ -188,4 +188,24 @@ mod tests {
         let own = super::super::common::declared_beyond_column(<Params as Scene>::DECLARED);
         assert_eq!(own, [super::super::common::FIRST_SNAPSHOT]);
     }
+
+    /// A step of a column is first the event limit's, a real number of the
+    /// scene that sets its resolution; where the limit does not explain it,
+    /// a threshold of the physics may (the onset of erosion along v_eros),
+    /// and along a parameter without one nothing does.
+    #[test]
+    fn a_step_is_the_event_limits_first_and_the_physics_only_after() {
+        use super::super::common::{EROSION_ONSET, EVENT_LIMIT};
+        use crate::scene::core::{Declared, Irregularity::Step};
+        use crate::scene::schema::SpecKind;
+        let declared = <Params as Scene>::DECLARED;
+        let key = EVENT_LIMIT.resolution.expect("a resolution");
+        let params = crate::scene::SceneParams::default_for("mass-distribution").expect("scene");
+        let spec = params.spec(key).expect("the scene's parameter");
+        assert!(spec.numerical && matches!(spec.kind, SpecKind::Number { .. }), "{key}");
+        assert_eq!(Declared::find(declared, Step, "t_end", "v_eros"), Some(&EVENT_LIMIT));
+        assert_eq!(Declared::find_physics(declared, Step, "t_end", "v_eros"), Some(&EROSION_ONSET));
+        assert_eq!(Declared::find(declared, Step, "m_p", "alpha"), Some(&EVENT_LIMIT));
+        assert_eq!(Declared::find_physics(declared, Step, "m_p", "alpha"), None);
+    }
 }

@@ -519,6 +519,10 @@ pub struct Engine<M: Model> {
     /// Families whose particles changed in the merges under way (their pair
     /// data are recomputed when the merges are done).
     stale: Vec<bool>,
+    /// The particles each family's properties and pair data were computed
+    /// for: merges that keep them move the family's mass and φ by at most
+    /// `MERGE_REFRESH` from these in all, not per merge.
+    cached: Vec<Body>,
     /// The indices of the families in order of mass.
     by_mass: Vec<usize>,
     /// The model's lanes of the families.
@@ -584,6 +588,7 @@ impl<M: Model> Engine<M> {
             since_zoom: 0,
             dirty: vec![false],
             stale: vec![false],
+            cached: vec![first],
             by_mass: vec![0],
             lanes: M::Lanes::default(),
             keys: vec![Key { mass: family.mass, zoom: family.zoom }],
@@ -850,6 +855,7 @@ impl<M: Model> Engine<M> {
         self.counted.push(0.0);
         self.dirty.push(false);
         self.stale.push(true);
+        self.cached.push(body);
         self.computed.push(self.rows);
         self.enlist(k);
     }
@@ -901,6 +907,7 @@ impl<M: Model> Engine<M> {
         self.counted.swap_remove(k);
         self.dirty.swap_remove(k);
         self.stale.swap_remove(k);
+        self.cached.swap_remove(k);
         self.families.swap_remove(k);
         self.keys.swap_remove(k);
         self.model.remove_lane(&mut self.lanes, k);
@@ -1277,9 +1284,10 @@ impl<M: Model> Engine<M> {
     }
 
     /// (4.27): adds family k to family t, conserving particles and mass.
-    /// Returns whether t's particles changed enough (10⁻³ in mass or φ) for
-    /// its cached pair data to be recomputed; otherwise only its group count
-    /// changes and the cached rates per pair are kept.
+    /// Returns whether t's particles moved far enough (10⁻³ in mass or φ
+    /// from those its properties and pair data were computed for) for them
+    /// to be recomputed; otherwise its mass, φ and group count change and the
+    /// cached properties and rates per pair are kept.
     fn merge_into(&mut self, k: usize, t: usize) -> bool {
         let a = self.families[k];
         self.merge_particles_into(a.body(), a.particles(), t)
@@ -1292,8 +1300,16 @@ impl<M: Model> Engine<M> {
         let mass = (body.mass * count + b.mass * b.particles()) / g;
         let filling = (body.filling * count + b.filling * b.particles()) / g;
         self.tally.merges += 1;
-        let moved = (mass / b.mass - 1.0).abs() > MERGE_REFRESH || (filling / b.filling - 1.0).abs() > MERGE_REFRESH;
-        let props = if moved { self.model.props(Body { mass, filling }) } else { b.props };
+        // Measured from the particles the cached data belong to, so that a
+        // run of small merges cannot carry the family away from them.
+        let at = self.cached[t];
+        let moved = (mass / at.mass - 1.0).abs() > MERGE_REFRESH || (filling / at.filling - 1.0).abs() > MERGE_REFRESH;
+        let props = if moved {
+            self.cached[t] = Body { mass, filling };
+            self.model.props(Body { mass, filling })
+        } else {
+            b.props
+        };
         if mass != b.mass {
             self.unlist(t);
         }
@@ -1346,7 +1362,9 @@ impl<M: Model> Engine<M> {
     }
 
     /// Whether what the engine keeps beside the families (each one's mass
-    /// and zoom factor, and the model's lanes) matches them.
+    /// and zoom factor, and the model's lanes) matches them, and each
+    /// family's mass and φ lie within `MERGE_REFRESH` of the particles its
+    /// cached properties and pair data were computed for.
     #[cfg(test)]
     pub(crate) fn mirrors_match(&self) -> bool
     where
@@ -1356,9 +1374,12 @@ impl<M: Model> Engine<M> {
         for (i, f) in self.families.iter().enumerate() {
             self.model.set_lane(&mut lanes, i, f);
         }
+        let near = |x: f64, at: f64| (x / at - 1.0).abs() <= MERGE_REFRESH;
         lanes == self.lanes
             && self.keys.len() == self.families.len()
             && self.keys.iter().zip(&self.families).all(|(k, f)| k.mass == f.mass && k.zoom == f.zoom)
+            && self.cached.len() == self.families.len()
+            && self.cached.iter().zip(&self.families).all(|(c, f)| near(f.mass, c.mass) && near(f.filling, c.filling))
     }
 
     /// Mass per unit volume per ln m in logarithmic bins, `per_decade` bins

@@ -87,11 +87,14 @@ pub struct WorkerRunner {
     lanes: Lanes,
     caches: Mutex<Caches>,
     repaint: Rc<dyn Fn()>,
+    /// How often the page redraws while a job runs.
+    redraw: std::time::Duration,
 }
 
 impl WorkerRunner {
-    /// A runner that calls `repaint` when a worker reports.
-    pub fn new(repaint: impl Fn() + 'static) -> Self {
+    /// A runner that calls `repaint` when a worker reports, and has the
+    /// page redrawn every `redraw` while a job runs (for its progress).
+    pub fn new(repaint: impl Fn() + 'static, redraw: std::time::Duration) -> Self {
         let cores = web_sys::window().map_or(1.0, |w| w.navigator().hardware_concurrency());
         WorkerRunner {
             slots: Vec::new(),
@@ -101,6 +104,7 @@ impl WorkerRunner {
             lanes: Lanes::default(),
             caches: Mutex::default(),
             repaint: Rc::new(repaint),
+            redraw,
         }
     }
 
@@ -320,11 +324,10 @@ impl Runner for WorkerRunner {
         false
     }
 
-    /// Every 400 ms: the workers take every core, and a frame drawn without
-    /// a GPU costs 50-250 ms of one. (A preview, a live view, a share and
-    /// the result each ask for a frame as they arrive.)
+    /// As the page was told ([`WorkerRunner::new`]). (A preview, a live
+    /// view, a share and the result each ask for a frame as they arrive.)
     fn redraw_every(&self) -> std::time::Duration {
-        std::time::Duration::from_millis(400)
+        self.redraw
     }
 
     fn partial(&self, lane: Lane) -> Option<Arc<SceneOutput>> {

@@ -18,6 +18,8 @@ use wasm_bindgen::prelude::*;
 struct PageApp {
     app: GrainscopeApp,
     answers: Rc<RefCell<Vec<Answer>>>,
+    /// How often the page redraws while workers compute.
+    redraw: std::time::Duration,
 }
 
 impl eframe::App for PageApp {
@@ -51,6 +53,36 @@ impl eframe::App for PageApp {
 const LIGHTER: &str = "In the browser this scene starts from 1 run, w* = 14 groups per decade and f = 0.3 \
 (tens of seconds on one thread); the desktop's defaults are 2 runs, w* = 40 and f = 0.1.";
 
+/// How often the page redraws while workers compute (for their progress):
+/// every 400 ms, where a frame costs the GPU a few milliseconds.
+const REDRAW: std::time::Duration = std::time::Duration::from_millis(400);
+
+/// The same where the browser draws without a GPU: every 2 s. There a frame
+/// costs the browser's GPU process 50-250 ms of a core, taken from the
+/// workers; at 400 ms Fig. 5.9's formation zone took 17.4-17.7 s on two
+/// cores, at 2 s 15.5-15.6 s.
+const SOFTWARE_REDRAW: std::time::Duration = std::time::Duration::from_secs(2);
+
+/// Whether the page's WebGL draws in software (SwiftShader, llvmpipe and
+/// the like), by the renderer the browser names: the unmasked one where
+/// the browser offers it.
+fn draws_in_software(gl: &eframe::glow::Context) -> bool {
+    use eframe::glow::HasContext;
+    /// UNMASKED_RENDERER_WEBGL of the WEBGL_debug_renderer_info extension.
+    const UNMASKED_RENDERER: u32 = 0x9246;
+    // SAFETY: a query of a string on the context the page draws with; the
+    // unmasked renderer only where its extension is there (no GL error).
+    let renderer = unsafe {
+        if gl.supported_extensions().contains("WEBGL_debug_renderer_info") {
+            gl.get_parameter_string(UNMASKED_RENDERER)
+        } else {
+            gl.get_parameter_string(eframe::glow::RENDERER)
+        }
+    }
+    .to_lowercase();
+    ["swiftshader", "llvmpipe", "softpipe", "software", "basic render driver"].iter().any(|s| renderer.contains(s))
+}
+
 /// The running explorer, kept by the page.
 #[wasm_bindgen]
 pub struct WebHandle {
@@ -72,6 +104,12 @@ impl WebHandle {
     /// The fraction done of the running computation (0 when none runs).
     pub fn progress(&self) -> f64 {
         self.runner.app_mut::<PageApp>().map_or(0.0, |p| p.app.progress())
+    }
+
+    /// How often the page redraws while workers compute, ms (every 2 s
+    /// where it draws without a GPU, 400 ms otherwise).
+    pub fn redraw_ms(&self) -> f64 {
+        self.runner.app_mut::<PageApp>().map_or(f64::NAN, |p| p.redraw.as_secs_f64() * 1e3)
     }
 
     /// The status line.
@@ -142,7 +180,9 @@ pub async fn start(canvas_id: String) -> Result<WebHandle, JsValue> {
             eframe::WebOptions::default(),
             Box::new(move |cc| {
                 let (ctx, woken) = (cc.egui_ctx.clone(), cc.egui_ctx.clone());
-                let jobs = WorkerRunner::new(move || ctx.request_repaint());
+                let software = cc.gl.as_deref().is_some_and(draws_in_software);
+                let redraw = if software { SOFTWARE_REDRAW } else { REDRAW };
+                let jobs = WorkerRunner::new(move || ctx.request_repaint(), redraw);
                 let platform = WebPlatform::new(move || woken.request_repaint());
                 let answers = platform.answers();
                 let mut app = GrainscopeApp::with_runner(Box::new(platform), Box::new(jobs));
@@ -160,7 +200,7 @@ pub async fn start(canvas_id: String) -> Result<WebHandle, JsValue> {
                     Ok(Opened::Nothing) => {}
                     Err(message) => app.state.notify(message),
                 }
-                Ok(Box::new(PageApp { app, answers }))
+                Ok(Box::new(PageApp { app, answers, redraw }))
             }),
         )
         .await?;

@@ -160,7 +160,9 @@ impl<const N: usize> Lu<N> {
         Some(Lu { lu: m, perm, inv_diag, k })
     }
 
-    /// Solves `m x = b`.
+    /// Solves `m x = b`. Inlined: a stage's increment then stays in
+    /// registers instead of being stored and read back at another width.
+    #[inline(always)]
     fn solve(&self, b: &State<N>) -> Option<State<N>> {
         // Block sizes known at compile time unroll the loops.
         match self.k {
@@ -174,6 +176,7 @@ impl<const N: usize> Lu<N> {
 
     /// [`solve`](Self::solve) with a leading block of `K` (= `self.k`, or
     /// `N`, since columns beyond `self.k` hold only the diagonal).
+    #[inline(always)]
     fn solve_block<const K: usize>(&self, b: &State<N>) -> Option<State<N>> {
         let mut x = State::<N>::zeros();
         for i in 0..N {

@@ -28,6 +28,13 @@ if command -v rustup >/dev/null; then
 fi
 
 echo "== building the WebAssembly module"
+# With WebAssembly's 128-bit vectors (simd128: Chrome and Firefox since 2021,
+# Safari since 16.4, 2023): the compiler pairs the model's independent
+# floating-point operations, the same IEEE operations, so the same numbers.
+# Fig. 5.9's formation zone computes about 6 % faster, and the module is
+# 0.5 MB smaller. Only this build sets it: clippy and `cargo check` for
+# wasm32 check the same code without it.
+export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="${CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS:--C target-feature=+simd128}"
 cargo build -p grainscope-web --profile "$profile" --target wasm32-unknown-unknown
 
 echo "== web/dist"
@@ -36,24 +43,28 @@ trap 'rm -rf "$staging"' EXIT
 wasm-bindgen --target web --no-typescript --out-dir "$staging" --out-name grainscope \
     "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm"
 # Binaryen's optimiser (npm package `binaryen`, pinned in web/package-lock.json;
-# Debian's binaryen is too old for this module) makes the module about 15 %
-# smaller. It takes a few minutes, so its output is kept per input.
+# Debian's binaryen is too old for this module), for speed (-O3): the module
+# is 13 % smaller than the compiler's, and Fig. 5.9's formation zone computes
+# 6 % faster than after -Oz (8.50 MB against 8.42 MB, 14.5 s against 15.3 s,
+# headless Chromium on two cores). It takes a few minutes, so its output is
+# kept per input.
 if [ ! -x web/node_modules/.bin/wasm-opt ] && command -v npm >/dev/null; then
     (cd web && npm ci --no-audit --no-fund --loglevel=error)
 fi
 if [ -x web/node_modules/.bin/wasm-opt ]; then
-    kept="$target/web-opt/$(sha256sum "$staging/grainscope_bg.wasm" | cut -c1-24).wasm"
+    options=(-O3 --enable-simd --enable-bulk-memory --enable-sign-ext --enable-mutable-globals
+        --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue)
+    # Kept by the module and the options together.
+    kept="$target/web-opt/$( (cat "$staging/grainscope_bg.wasm"; echo "${options[*]}") | sha256sum | cut -c1-24).wasm"
     if [ ! -f "$kept" ]; then
-        echo "== wasm-opt -Oz (a few minutes)"
+        echo "== wasm-opt ${options[0]} (a few minutes)"
         mkdir -p "$target/web-opt"
-        web/node_modules/.bin/wasm-opt -Oz --enable-bulk-memory --enable-sign-ext --enable-mutable-globals \
-            --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue \
-            "$staging/grainscope_bg.wasm" -o "$kept.tmp"
+        web/node_modules/.bin/wasm-opt "${options[@]}" "$staging/grainscope_bg.wasm" -o "$kept.tmp"
         mv "$kept.tmp" "$kept"
     fi
     cp "$kept" "$staging/grainscope_bg.wasm"
 else
-    echo "(no npm: the module is not optimised by binaryen and is about 15 % larger)" >&2
+    echo "(no npm: the module is not optimised by binaryen and is about 13 % larger)" >&2
 fi
 cp web/index.html web/worker.js "$staging/"
 # The page loads the module gzipped and unpacks it itself (index.html), so

@@ -11,7 +11,10 @@
 //!
 //! Contact starts at δ = 0, δ̇ = v with a from (2.38) at G_eff = 1.01kγ
 //! (App. 2.B; the time offset of (2.39) is negligible and not added). Contact
-//! ends when β reaches (1 − 10⁻³)/k, where the crack opens without bound. The
+//! ends when β reaches (1 − 10⁻³)/k, where the crack opens without bound,
+//! once the spheres no longer overlap (δ ≤ 0): while δ > 0, a² ≥ δR, and β
+//! near 1/k only says that the crack opens as fast as the parting spheres
+//! require (a slow crack on a large sphere, T_vis ≥ 10⁻⁷ s at 2 cm). The
 //! collision sticks when separation has become impossible: the mechanical
 //! energy U_K + U_E + U_S, which only decreases, is negative (separated spheres
 //! have U_E = U_S = 0 and U_K ≥ 0), or the spheres turn back towards each other
@@ -438,7 +441,11 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
         let (y_new, h) = solver.advance(&ode, &y, h_max)?;
         let t_new = t + h;
         let beta_new = ode.beta(&y_new);
-        if beta_new >= beta_end && stuck_at.is_none() {
+        // The spheres have parted (δ ≤ 0) at the end of this step: β near 1/k
+        // ends the contact. Before that, the crack can only open as fast as
+        // they part, and β creeps along below 1/k.
+        let parted = y_new[0] <= 0.0;
+        if beta_new >= beta_end && stuck_at.is_none() && parted {
             // End of contact inside this step: interpolate linearly in β.
             let beta_old = ode.beta(&y);
             let f = ((beta_end - beta_old) / (beta_new - beta_old)).clamp(0.0, 1.0);
@@ -460,7 +467,7 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
                 }
             }
         }
-        if beta_new >= beta_end {
+        if beta_new >= beta_end && (stuck_at.is_some() || parted) {
             // A stuck pair cannot separate; the follow-up run ends here.
             break;
         }

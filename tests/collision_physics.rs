@@ -412,6 +412,9 @@ fn a_crack_too_slow_to_follow_the_approach_stays_in_the_law_s_domain() {
     // approach the crack cannot keep up, and β runs down to k, where the
     // crack speed diverges. A step that lands beyond k is refused (it used to
     // be accepted, and the next step could not start: "step size underflow").
+    // At rtol 1e-4 each is within 5e-5 of rtol 1e-9: the slowest to converge,
+    // γ = 1 J/m² at 5 m/s, is 1.8e-5 off (2.7e-5 at rtol 3e-5), where the
+    // crack also sits at the healing end of its law for much of the approach.
     use grainscope::scene::collisions::fit::Params;
     let fit = Params { radius_1: 2e-2, wall: true, ..Params::default() };
     for (gamma, t_vis, v) in
@@ -422,7 +425,7 @@ fn a_crack_too_slow_to_follow_the_approach_stays_in_the_law_s_domain() {
         let fine = collide(&s, v, &Options { rtol: 1e-9, ..opts() }).expect("collides at rtol 1e-9");
         assert_eq!(coarse.outcome, Outcome::Bounce, "γ={gamma} T_vis={t_vis} v={v}");
         assert!(
-            (coarse.e_adhesive - fine.e_adhesive).abs() < 2e-5,
+            (coarse.e_adhesive - fine.e_adhesive).abs() < 5e-5,
             "γ={gamma} T_vis={t_vis} v={v}: {} vs {}",
             coarse.e_adhesive,
             fine.e_adhesive

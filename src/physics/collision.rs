@@ -467,7 +467,7 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
                 }
             }
         }
-        if beta_new >= beta_end && (stuck_at.is_some() || parted) {
+        if beta_new >= beta_end && stuck_at.is_some() {
             // A stuck pair cannot separate; the follow-up run ends here.
             break;
         }

@@ -205,7 +205,7 @@ impl GrainscopeApp {
         if crate::scene::SCENES[i].heavy {
             self.computing.stale = true;
             self.computing.live_scene = Some(i);
-            let coarse = params.coarse().map(Box::new);
+            let coarse = params.preview().map(Box::new);
             self.runner.submit(Job::Scene { scene: i, params: Box::new(params), coarse });
         } else {
             self.runner.cancel(Lane::Compute);

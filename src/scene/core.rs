@@ -110,6 +110,15 @@ pub trait Scene:
         None
     }
 
+    /// The parameters whose result the window shows first while the full
+    /// result computes: by default [`Scene::coarse`]. None: no separate
+    /// preview (a scene whose computation offers its own first picture with
+    /// [`Progress::publish`], from runs the full result uses, returns None
+    /// so that no run is made twice).
+    fn preview(&self) -> Option<Self> {
+        self.coarse()
+    }
+
     /// Scalar `key` alone, where the scene can compute it without its
     /// figures (for sweeps, which need one number per point). The value must
     /// equal that of `compute(..).scalar(key)` exactly. None (the default):

@@ -157,6 +157,14 @@ macro_rules! scenes {
                 }
             }
 
+            /// The parameters of the window's first picture, if the scene
+            /// has a separate preview ([`Scene::preview`]).
+            pub fn preview(&self) -> Option<SceneParams> {
+                match self {
+                    $($( SceneParams::$scene(p) => <$chapter::$module::Params as Scene>::preview(p).map(SceneParams::$scene), )*)*
+                }
+            }
+
             /// The imported measurements the scene works on, if it takes any.
             pub fn measurements(&mut self) -> Option<&mut Vec<Measurement>> {
                 match self {

@@ -102,12 +102,13 @@ disks run in parallel, each also with half the batches: the change estimates the
         },
     ];
 
-    /// The coarse preview runs its disks at about 120 batches in all (12 to
-    /// 120 a disk): a picture within a second. A grid of one disk runs it at
-    /// 120 batches,
-    /// where the Σ_d kernel keeps its width (at 40 it is widened to two
-    /// batch spacings, and Fig. 5.9's widest edge came out at 29.8 AU
-    /// instead of 21.4; at 120, 22.4).
+    /// The coarse setting (a sweep's preview, the coarse audit) runs its
+    /// disks at about 120 batches in all (12 to 120 a disk). A grid of one
+    /// disk runs it at 120 batches, where the Σ_d kernel keeps its width (at
+    /// 40 it is widened to two batch spacings, and Fig. 5.9's widest edge
+    /// came out at 29.8 AU instead of 21.4; at 120, 22.4). The window's
+    /// first picture is not this ([`Scene::preview`]): the grid's edges at
+    /// 12 batches a disk are up to 2–3 times the full run's.
     fn coarse(&self) -> Option<Self> {
         let p = self;
         let grid = Params { n_mass: p.n_mass.min(3), ..p.clone() };
@@ -120,6 +121,14 @@ disks run in parallel, each also with half the batches: the change estimates the
         Some(Params { run: p.run.coarse_within(distinct.len(), 120), ..grid })
     }
 
+    /// No separate preview: the computation offers its first stage (the
+    /// final result's own runs at every other disk mass, or each disk with
+    /// half the batches) as its first picture. The coarse parameters above
+    /// remain the setting of a sweep's preview and the coarse audit.
+    fn preview(&self) -> Option<Self> {
+        None
+    }
+
     /// The largest edge alone needs no run with half the batches.
     fn scalar(&self, key: &str, progress: &Progress) -> Option<Result<f64, SceneError>> {
         match key {
@@ -129,7 +138,12 @@ disks run in parallel, each also with half the batches: the change estimates the
         }
     }
 
-    /// Computes the scene.
+    /// Computes the scene. The runs go in two stages, and the first is
+    /// offered as a picture while the second computes ([`Progress::publish`]):
+    /// with three disk masses or more, every other mass (the first and last
+    /// always) at the full batch count, the final result's own runs at those
+    /// masses; with fewer, every disk with half the batches, the final
+    /// result's own resolution check. No run is made twice.
     fn compute(&self, ctx: &mut Context<'_>) -> Result<SceneOutput, SceneError> {
         let (p, progress) = (self, ctx.progress);
         let masses = log_grid(p.mass_min, p.mass_max, p.n_mass);
@@ -137,73 +151,61 @@ disks run in parallel, each also with half the batches: the change estimates the
         // Every disk also runs with half the batches: the change says how far
         // the edges are from converged (it can understate it where the edge
         // still drifts with the batch count, see the README). Below
-        // `MIN_COMPARED` batches there is no half as many to run (the coarse
-        // preview's few batches among them): the change is undefined.
+        // `MIN_COMPARED` batches there is no half as many to run: the change
+        // is undefined.
         let half = p.run.batches / 2;
         let counts: &[usize] = if p.run.batches >= MIN_COMPARED { &[p.run.batches, half] } else { &[p.run.batches] };
-        let all = p.edges(counts, progress)?;
-        let combos = all.len() / counts.len();
-        let (edges, coarser) = all.split_at(combos);
-        let coarser: Vec<f64> = if coarser.is_empty() { vec![f64::NAN; edges.len()] } else { coarser.to_vec() };
-        let coarser = &coarser[..];
-        let mut fig = Figure::new(
-            "formation-zone",
-            "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
-            Axis::log("disk mass", "M☉"),
-            Axis::linear("outer edge", "AU"),
-        )
-        // Metallicity is the colour (a colour bar), the disk set the line style.
-        .family("metallicity Z₀", "", Scale::Log);
-        let mut scalars = Vec::new();
-        for c in 0..2 {
-            for (zi, z) in zs.iter().enumerate() {
-                let pts: Vec<[f64; 2]> = masses
-                    .iter()
-                    .enumerate()
-                    .map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]])
-                    .collect();
-                let label = match (c, p.contrast) {
-                    (1, Contrast::Cold) => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
-                    (1, Contrast::Slope) => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
-                    (1, Contrast::Alpha) => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
-                    (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
-                    _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
-                };
-                fig = fig.with(
-                    Series::new(
-                        format!("Z₀ = {}, {label}", crate::figure::human(*z)),
-                        pts,
-                        if c == 0 { Style::Line } else { Style::Dashed },
-                        zi,
-                    )
-                    .at(*z)
-                    .keyed(label),
-                );
+        let disks = p.disks();
+        let first = p.first_picture(masses.len(), counts.len());
+        let first_runs: Vec<usize> = match first {
+            FirstPicture::EveryOtherMass(ref shown) => {
+                (0..disks.len()).filter(|d| shown.contains(&(d % masses.len()))).collect()
             }
-        }
-        let widest = widest_of(edges);
-        let widest_error = (widest - widest_of(coarser)).abs();
-        let largest_error = if p.run.batches >= MIN_COMPARED {
-            edges.iter().zip(coarser).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max)
-        } else {
-            f64::NAN
+            FirstPicture::HalfTheBatches => (disks.len()..2 * disks.len()).collect(),
+            FirstPicture::None => Vec::new(),
         };
-        scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
-        scalars.push(Scalar {
-            key: "widest_zone_error",
-            label: "its change with half the batches",
-            value: if widest.is_nan() { f64::NAN } else { widest_error },
-            unit: "AU",
-        });
-        scalars.push(Scalar {
-            key: "edge_error",
-            label: "largest change with half the batches",
-            value: largest_error,
-            unit: "AU",
-        });
-        scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
-        Ok(SceneOutput { scalars, figures: vec![fig], ..Default::default() })
+        let offer = |edge: &[f64]| {
+            let (shown, batches, how) = match &first {
+                FirstPicture::EveryOtherMass(shown) => (
+                    shown.clone(),
+                    p.run.batches,
+                    format!("every other disk mass ({} of {})", shown.len(), masses.len()),
+                ),
+                FirstPicture::HalfTheBatches => ((0..masses.len()).collect(), half, "every disk".to_string()),
+                FirstPicture::None => return,
+            };
+            let offset = if matches!(first, FirstPicture::HalfTheBatches) { disks.len() } else { 0 };
+            let shown_masses: Vec<f64> = shown.iter().map(|&mi| masses[mi]).collect();
+            let edges: Vec<f64> =
+                (0..disks.len()).filter(|d| shown.contains(&(d % masses.len()))).map(|d| edge[offset + d]).collect();
+            let mut out = p.output(&shown_masses, &zs, &edges, &vec![f64::NAN; edges.len()], false);
+            out.notes.insert(
+                0,
+                format!(
+                    "first picture: {how} at {batches} batches, {} disks; the rest and the runs with half the \
+                     batches follow",
+                    edges.len()
+                ),
+            );
+            progress.publish(out);
+        };
+        let all = p.edges_in_stages(counts, &first_runs, &offer, progress)?;
+        let (edges, coarser) = all.split_at(disks.len());
+        let coarser: Vec<f64> = if coarser.is_empty() { vec![f64::NAN; edges.len()] } else { coarser.to_vec() };
+        Ok(p.output(&masses, &zs, edges, &coarser, p.run.batches >= MIN_COMPARED))
     }
+}
+
+/// The runs of the formation zone's first picture.
+#[derive(Debug, Clone, PartialEq)]
+enum FirstPicture {
+    /// These mass indices (every other one, the first and last always) at
+    /// the full batch count.
+    EveryOtherMass(Vec<usize>),
+    /// Every disk with half the batches.
+    HalfTheBatches,
+    /// None: fewer than three masses and no run with half the batches.
+    None,
 }
 
 /// Outer edges (AU) of the runs this process has made, by the whole
@@ -297,30 +299,127 @@ impl Params {
         disks
     }
 
+    /// The runs of the first picture for a grid of `n_mass` masses and
+    /// `n_counts` batch counts (2: each disk also with half the batches).
+    fn first_picture(&self, n_mass: usize, n_counts: usize) -> FirstPicture {
+        if n_mass >= 3 {
+            let mut shown: Vec<usize> = (0..n_mass).step_by(2).collect();
+            if shown.last() != Some(&(n_mass - 1)) {
+                shown.push(n_mass - 1);
+            }
+            FirstPicture::EveryOtherMass(shown)
+        } else if n_counts == 2 {
+            FirstPicture::HalfTheBatches
+        } else {
+            FirstPicture::None
+        }
+    }
+
+    /// The scene's output for edges (AU) at `masses` (the disks in the order
+    /// of [`Params::disks`], each set and metallicity over `masses`), with
+    /// the edges of the runs with half the batches in `coarser` (NaN where
+    /// not run) and whether they were run (`compared`).
+    fn output(&self, masses: &[f64], zs: &[f64], edges: &[f64], coarser: &[f64], compared: bool) -> SceneOutput {
+        let p = self;
+        let mut fig = Figure::new(
+            "formation-zone",
+            "Outer edge of planetesimal formation (Figs. 5.9, 5.10)",
+            Axis::log("disk mass", "M☉"),
+            Axis::linear("outer edge", "AU"),
+        )
+        // Metallicity is the colour (a colour bar), the disk set the line style.
+        .family("metallicity Z₀", "", Scale::Log);
+        let mut scalars = Vec::new();
+        for c in 0..2 {
+            for (zi, z) in zs.iter().enumerate() {
+                let pts: Vec<[f64; 2]> = masses
+                    .iter()
+                    .enumerate()
+                    .map(|(mi, m)| [*m, edges[(c * zs.len() + zi) * masses.len() + mi]])
+                    .collect();
+                let label = match (c, p.contrast) {
+                    (1, Contrast::Cold) => format!("R_c = {} AU, cold", crate::figure::human(p.r_c_1)),
+                    (1, Contrast::Slope) => format!("R_c = {} AU, slope 3/2", crate::figure::human(p.r_c_1)),
+                    (1, Contrast::Alpha) => format!("R_c = {} AU, α = 10⁻⁵", crate::figure::human(p.r_c_1)),
+                    (1, _) => format!("R_c = {} AU", crate::figure::human(p.r_c_2)),
+                    _ => format!("R_c = {} AU", crate::figure::human(p.r_c_1)),
+                };
+                fig = fig.with(
+                    Series::new(
+                        format!("Z₀ = {}, {label}", crate::figure::human(*z)),
+                        pts,
+                        if c == 0 { Style::Line } else { Style::Dashed },
+                        zi,
+                    )
+                    .at(*z)
+                    .keyed(label),
+                );
+            }
+        }
+        let widest = widest_of(edges);
+        let widest_error = (widest - widest_of(coarser)).abs();
+        let largest_error =
+            if compared { edges.iter().zip(coarser).map(|(a, b)| (a - b).abs()).fold(0.0, f64::max) } else { f64::NAN };
+        scalars.push(Scalar { key: "widest_zone", label: "largest outer edge on the grid", value: widest, unit: "AU" });
+        scalars.push(Scalar {
+            key: "widest_zone_error",
+            label: "its change with half the batches",
+            value: if widest.is_nan() { f64::NAN } else { widest_error },
+            unit: "AU",
+        });
+        scalars.push(Scalar {
+            key: "edge_error",
+            label: "largest change with half the batches",
+            value: largest_error,
+            unit: "AU",
+        });
+        scalars.push(Scalar { key: "disks", label: "disks run", value: edges.len() as f64, unit: "" });
+        SceneOutput { scalars, figures: vec![fig], ..Default::default() }
+    }
+
     /// The outer edge of every disk of [`Params::disks`], AU (0 where none
     /// forms), at each batch count of `counts` in turn. A disk that equals
     /// another (the dashed set with the solid set's R_c, say) runs once.
     fn edges(&self, counts: &[usize], progress: &Progress) -> Result<Vec<f64>, SceneError> {
+        self.edges_in_stages(counts, &[], &|_| {}, progress)
+    }
+
+    /// As [`Params::edges`], in two stages: first the runs numbered in
+    /// `first` (in the order of `edges`' result), then `offer` is given
+    /// their edges (by the same numbers; NaN for the rest), then the rest. Each stage's
+    /// distinct runs are one map of units (a browser shares them among its
+    /// workers).
+    fn edges_in_stages(
+        &self,
+        counts: &[usize],
+        first: &[usize],
+        offer: &dyn Fn(&[f64]),
+        progress: &Progress,
+    ) -> Result<Vec<f64>, SceneError> {
         let disks = self.disks();
         let runs: Vec<BatchParams> = counts
             .iter()
             .flat_map(|&batches| disks.iter().map(move |d| BatchParams { batches, ..d.clone() }))
             .collect();
         let mut distinct: Vec<BatchParams> = Vec::new();
-        let which: Vec<usize> = runs
-            .iter()
-            .map(|r| match distinct.iter().position(|d| d == r) {
+        let mut which: Vec<usize> = vec![0; runs.len()];
+        let order = first.iter().copied().chain((0..runs.len()).filter(|k| !first.contains(k)));
+        let mut staged = 0;
+        for (n, k) in order.enumerate() {
+            which[k] = match distinct.iter().position(|d| *d == runs[k]) {
                 Some(i) => i,
                 None => {
-                    distinct.push(r.clone());
+                    distinct.push(runs[k].clone());
                     distinct.len() - 1
                 }
-            })
-            .collect();
+            };
+            if n + 1 == first.len() {
+                staged = distinct.len();
+            }
+        }
         let done = std::sync::atomic::AtomicUsize::new(0);
         let total = distinct.len();
-        // Each disk is a unit of its own: a browser shares them among its workers.
-        let edges: Vec<f64> = progress.units(&distinct, |b| {
+        let edge_of = |b: &BatchParams| {
             if let Some(edge) = edge_memory::recall(b) {
                 let finished = done.fetch_add(1, std::sync::atomic::Ordering::Relaxed) + 1;
                 progress.set(finished as f64 / total.max(1) as f64);
@@ -329,7 +428,14 @@ impl Params {
             let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
             edge_memory::keep(b, edge);
             Ok(edge)
-        })?;
+        };
+        // Each disk is a unit of its own: a browser shares them among its workers.
+        let mut edges: Vec<f64> = progress.units(&distinct[..staged], edge_of)?;
+        if staged > 0 && staged < total {
+            let known: Vec<f64> = which.iter().map(|&i| edges.get(i).copied().unwrap_or(f64::NAN)).collect();
+            offer(&known);
+        }
+        edges.extend(progress.units(&distinct[staged..], edge_of)?);
         Ok(which.into_iter().map(|i| edges[i]).collect())
     }
 }

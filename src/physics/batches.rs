@@ -236,8 +236,9 @@ fn kernel_density(r: f64, points: impl Iterator<Item = (f64, f64)>, h: f64, (a, 
     let inv_h = 1.0 / h;
     let sum: f64 = points
         .map(|(xj, m)| {
-            let u = (x - xj).abs() * inv_h;
-            if u < 1.0 { m * (1.0 - u) } else { 0.0 }
+            // Without a branch: beyond the half-width the weight is +0, which
+            // leaves the sum as it is.
+            m * (1.0 - (x - xj).abs() * inv_h).max(0.0)
         })
         .sum::<f64>()
         * inv_h;
@@ -553,7 +554,9 @@ struct Ranks {
     step: Vec<[f64; 4]>,
     /// ln R of the radii, in the same order.
     x: Vec<f64>,
-    /// Each batch's last step in ln R: (t₀, ln R₀, d ln R/dt over the step, ln R₁).
+    /// The last step in ln R of the batch of each rank, in the same order
+    /// (read in sequence by the kernel): (t₀, ln R₀, d ln R/dt over the
+    /// step, ln R₁).
     ln_step: Vec<[f64; 4]>,
     /// The region the batches represent, ln R (the kernel is renormalised on it).
     domain: (f64, f64),
@@ -572,7 +575,7 @@ impl Ranks {
             rank,
             step: radii.iter().map(|&r| [0.0, r, 0.0, r]).collect(),
             x: id.iter().map(|&i| radii[i].ln()).collect(),
-            ln_step: radii.iter().map(|&r| [0.0, r.ln(), 0.0, r.ln()]).collect(),
+            ln_step: id.iter().map(|&i| [0.0, radii[i].ln(), 0.0, radii[i].ln()]).collect(),
             id,
             domain,
         }
@@ -611,19 +614,16 @@ impl Ranks {
         while hi + 1 < n && near(hi + 1) {
             hi += 1;
         }
-        let place = |q: usize| {
-            let j = self.id[q];
-            if j == i { x } else { self.ln_at(j, t) }
-        };
+        let place = |q: usize| if q == p { x } else { self.ln_at(q, t) };
         let own = self.m[p] * self_weight(h, (p > 0).then(|| x - place(p - 1)), (p + 1 < n).then(|| place(p + 1) - x));
         let points = (lo..=hi).map(|q| if q == p { (x, own) } else { (place(q), self.m[q]) });
         kernel_density(r_i, points, h, self.domain)
     }
 
-    /// ln R of batch `j` at time `t`, interpolated in ln R within its last
-    /// step (see [`Ranks::at`]).
-    fn ln_at(&self, j: usize, t: f64) -> f64 {
-        let [t0, x0, rate, x1] = self.ln_step[j];
+    /// ln R of the batch of rank `q` at time `t`, interpolated in ln R
+    /// within its last step (see [`Ranks::at`]).
+    fn ln_at(&self, q: usize, t: f64) -> f64 {
+        let [t0, x0, rate, x1] = self.ln_step[q];
         (x0 + rate * (t - t0).max(0.0)).max(x1 - std::f64::consts::LN_2)
     }
 
@@ -662,7 +662,7 @@ impl Ranks {
         self.step[i] = [t0, r0, t1, r];
         let mut p = self.rank[i];
         let (x0, x1) = (self.x[p], r.ln());
-        self.ln_step[i] = if t1 > t0 { [t0, x0, (x1 - x0) / (t1 - t0), x1] } else { [t0, x1, 0.0, x1] };
+        self.ln_step[p] = if t1 > t0 { [t0, x0, (x1 - x0) / (t1 - t0), x1] } else { [t0, x1, 0.0, x1] };
         self.r[p] = r;
         self.x[p] = r.ln();
         while p > 0 && self.r[p - 1] > r {
@@ -679,6 +679,7 @@ impl Ranks {
         self.r.swap(a, b);
         self.x.swap(a, b);
         self.m.swap(a, b);
+        self.ln_step.swap(a, b);
         self.id.swap(a, b);
         self.rank[self.id[a]] = a;
         self.rank[self.id[b]] = b;
@@ -690,6 +691,7 @@ impl Ranks {
         self.r.remove(p);
         self.x.remove(p);
         self.m.remove(p);
+        self.ln_step.remove(p);
         self.id.remove(p);
         for q in p..self.id.len() {
             self.rank[self.id[q]] = q;

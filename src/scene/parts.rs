@@ -78,6 +78,14 @@ impl Progress {
         self
     }
 
+    /// How many processes share this computation's maps (1 where none do).
+    /// Each reports the units it computed out of all, and whoever started
+    /// them adds the reports up: a unit done in an earlier round counts
+    /// 1/`sharers` in each.
+    pub fn sharers(&self) -> usize {
+        self.parts.as_ref().map_or(1, |l| l.plan.of.max(1))
+    }
+
     /// Where the computation stopped to share a map with other processes
     /// (`None` if it did not: it ran through, or has no [`Parts`]).
     pub fn share(&self) -> Option<Share> {

@@ -431,6 +431,13 @@ impl Params {
         };
         // Each disk is a unit of its own: a browser shares them among its workers.
         let mut edges: Vec<f64> = progress.units(&distinct[..staged], edge_of)?;
+        // Every run of the first stage is done, here or (a browser's later
+        // rounds) by the processes that shared it, each of which counts its
+        // share: progress never goes back.
+        let credit = staged / progress.sharers();
+        if done.fetch_max(credit, std::sync::atomic::Ordering::Relaxed) < credit {
+            progress.set(credit as f64 / total.max(1) as f64);
+        }
         if staged > 0 && staged < total {
             let known: Vec<f64> = which.iter().map(|&i| edges.get(i).copied().unwrap_or(f64::NAN)).collect();
             offer(&known);

@@ -236,9 +236,11 @@ fn kernel_density(r: f64, points: impl Iterator<Item = (f64, f64)>, h: f64, (a, 
     let inv_h = 1.0 / h;
     let sum: f64 = points
         .map(|(xj, m)| {
-            // Without a branch: beyond the half-width the weight is +0, which
-            // leaves the sum as it is.
-            m * (1.0 - (x - xj).abs() * inv_h).max(0.0)
+            // A select rather than a branch (or `f64::max`, which WebAssembly
+            // has no one instruction for): beyond the half-width the weight
+            // is +0, which leaves the sum as it is.
+            let w = 1.0 - (x - xj).abs() * inv_h;
+            m * if w > 0.0 { w } else { 0.0 }
         })
         .sum::<f64>()
         * inv_h;

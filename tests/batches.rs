@@ -153,6 +153,22 @@ fn zone_of(mass: f64, z: f64, r_c: f64) -> (f64, f64) {
     (out.scalar("widest_zone").expect("edge"), out.scalar("widest_zone_error").expect("error"))
 }
 
+/// A run that keeps only its end state (no frames per decade: the
+/// formation zone's runs, which need only the fates) ends as the run with
+/// every frame does, to the last bit: the frames are an output the dynamics
+/// never read.
+#[test]
+fn a_run_without_frames_ends_as_the_run_with_them() {
+    let cfg = BatchConfig::figure_5_6(200);
+    let with = go(&cfg);
+    let without = go(&BatchConfig { frames_per_decade: 0, ..cfg });
+    assert!(with.frames.len() > 200, "{} frames", with.frames.len());
+    assert_eq!(without.frames.len(), 1);
+    assert_eq!(with.fates, without.fates);
+    assert_eq!(with.frames.last(), without.frames.last());
+    assert!(with.fates.iter().any(|f| matches!(f, Fate::Planetesimals { .. })), "nothing to compare");
+}
+
 /// The outputs a computation of `p` offers before its result, and the result.
 fn offered_and_final(p: &SceneParams) -> (Vec<scene::SceneOutput>, scene::SceneOutput) {
     use std::sync::{Arc, Mutex};

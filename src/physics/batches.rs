@@ -67,7 +67,10 @@ pub struct BatchConfig {
     pub coagulation: bool,
     /// How Σ_d is read from the batches.
     pub smoothing: Smoothing,
-    /// Recorded frames per decade of time, from one year (the last frame is at `t_end`).
+    /// Recorded frames per decade of time, from one year (the last frame is
+    /// at `t_end`); 0 records the end state alone (a run asked only for the
+    /// fates: the dynamics never read the frames, so the fates are the same
+    /// to the last bit).
     pub frames_per_decade: usize,
     /// Shift of the initial grid, in batch spacings, 0 ≤ offset < 1: batch i
     /// starts at r_in (r_out/r_in)^{(i + offset)/(N − 1 + offset)} (0: the
@@ -784,14 +787,16 @@ fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resu
     let mut states: Vec<GrowthState> = radii.iter().map(|&r| model.start(r)).collect();
     let mut fates = vec![Fate::Dust; n];
     let mut ranks = Ranks::new(&radii, &masses, cfg.domain());
-    let times = frame_times(cfg.t_end, cfg.frames_per_decade);
+    // The times of the frames; the progress is counted on the regular ones.
+    let regular = frame_times(cfg.t_end, cfg.frames_per_decade);
+    let times = if cfg.frames_per_decade == 0 { vec![cfg.t_end] } else { regular.clone() };
     let blank =
         BatchSample { r: 0.0, mass: 0.0, filling: 1.0, stokes: 0.0, t_grow: 0.0, loading: 0.0, si: false, dust: true };
     let mut samples: Vec<Vec<BatchSample>> = vec![vec![blank; n]; times.len()];
     // The next frame each batch has not yet passed.
     let mut next_frame = vec![0usize; n];
     let mut queue: std::collections::BinaryHeap<Due> = (0..n).map(|i| Due(0.0, i)).collect();
-    let span = (cfg.t_end / times[0]).ln();
+    let span = (cfg.t_end / regular[0]).ln();
     let (mut events, mut waves) = (0usize, 0usize);
     let mut wave: Vec<usize> = Vec::with_capacity(WAVE);
     while let Some(Due(t, _)) = queue.peek().copied() {
@@ -813,7 +818,7 @@ fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resu
             });
         }
         waves += 1;
-        if waves.is_multiple_of(256) && cancelled(((t / times[0]).max(1.0).ln() / span).clamp(0.0, 1.0)) {
+        if waves.is_multiple_of(256) && cancelled(((t / regular[0]).max(1.0).ln() / span).clamp(0.0, 1.0)) {
             return Err(PhysicsError::InvalidParameter { name: "run", value: 0.0, reason: "cancelled" });
         }
         let stepped: Vec<(GrowthState, super::growth::TrackPoint, Option<Stop>)> = wave

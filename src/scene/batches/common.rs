@@ -200,13 +200,32 @@ impl BatchParams {
         Ok(r)
     }
 
+    /// The outermost radius at which planetesimals formed, m (0 if none), as
+    /// one of `total` runs of a sweep (see [`BatchParams::run_in_sweep`]).
+    /// The run keeps no frames but its end state: the same fates to the last
+    /// bit, without the memory and the diagnostics of every frame.
+    pub fn edge_in_sweep(&self, progress: &Progress, done: &AtomicUsize, total: usize) -> Result<f64, SceneError> {
+        let cfg = BatchConfig { frames_per_decade: 0, ..self.config() };
+        let r = Self::run_config(&cfg, progress, &|_| {})?;
+        let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
+        progress.set(finished as f64 / total.max(1) as f64);
+        Ok(r.outermost_planetesimals())
+    }
+
     fn run_reporting(&self, progress: &Progress, report: &(dyn Fn(f64) + Sync)) -> Result<BatchRun, SceneError> {
-        let cfg = self.config();
+        Self::run_config(&self.config(), progress, report)
+    }
+
+    fn run_config(
+        cfg: &BatchConfig,
+        progress: &Progress,
+        report: &(dyn Fn(f64) + Sync),
+    ) -> Result<BatchRun, SceneError> {
         let keep = |f: f64| {
             report(f);
             progress.cancelled()
         };
-        match run(&cfg, &keep) {
+        match run(cfg, &keep) {
             Ok(r) => Ok(r),
             Err(_) if progress.cancelled() => Err(SceneError::Cancelled),
             Err(e) => Err(e.into()),

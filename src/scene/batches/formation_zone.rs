@@ -425,7 +425,7 @@ impl Params {
                 progress.set(finished as f64 / total.max(1) as f64);
                 return Ok(edge);
             }
-            let edge = b.run_in_sweep(progress, &done, total)?.outermost_planetesimals() / AU;
+            let edge = b.edge_in_sweep(progress, &done, total)? / AU;
             edge_memory::keep(b, edge);
             Ok(edge)
         };

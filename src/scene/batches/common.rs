@@ -194,10 +194,7 @@ impl BatchParams {
     /// Runs the model as one of `total` runs of a sweep: progress counts the
     /// finished runs (in `done`), so parallel runs report one monotonic figure.
     pub fn run_in_sweep(&self, progress: &Progress, done: &AtomicUsize, total: usize) -> Result<BatchRun, SceneError> {
-        let r = self.run_reporting(progress, &|_| {})?;
-        let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
-        progress.set(finished as f64 / total.max(1) as f64);
-        Ok(r)
+        Self::counted(&self.config(), progress, done, total)
     }
 
     /// The outermost radius at which planetesimals formed, m (0 if none), as
@@ -206,10 +203,20 @@ impl BatchParams {
     /// bit, without the memory and the diagnostics of every frame.
     pub fn edge_in_sweep(&self, progress: &Progress, done: &AtomicUsize, total: usize) -> Result<f64, SceneError> {
         let cfg = BatchConfig { frames_per_decade: 0, ..self.config() };
-        let r = Self::run_config(&cfg, progress, &|_| {})?;
+        Ok(Self::counted(&cfg, progress, done, total)?.outermost_planetesimals())
+    }
+
+    /// Runs `cfg` as one of `total` runs of a sweep, counting it in `done`.
+    fn counted(
+        cfg: &BatchConfig,
+        progress: &Progress,
+        done: &AtomicUsize,
+        total: usize,
+    ) -> Result<BatchRun, SceneError> {
+        let r = Self::run_config(cfg, progress, &|_| {})?;
         let finished = done.fetch_add(1, Ordering::Relaxed) + 1;
         progress.set(finished as f64 / total.max(1) as f64);
-        Ok(r.outermost_planetesimals())
+        Ok(r)
     }
 
     fn run_reporting(&self, progress: &Progress, report: &(dyn Fn(f64) + Sync)) -> Result<BatchRun, SceneError> {

@@ -174,10 +174,9 @@ disks run in parallel, each also with half the batches: the change estimates the
                 FirstPicture::HalfTheBatches => ((0..masses.len()).collect(), half, "every disk".to_string()),
                 FirstPicture::None => return,
             };
-            let offset = if matches!(first, FirstPicture::HalfTheBatches) { disks.len() } else { 0 };
             let shown_masses: Vec<f64> = shown.iter().map(|&mi| masses[mi]).collect();
-            let edges: Vec<f64> =
-                (0..disks.len()).filter(|d| shown.contains(&(d % masses.len()))).map(|d| edge[offset + d]).collect();
+            // The first stage's runs are the disks shown, in the order of the grid.
+            let edges: Vec<f64> = first_runs.iter().map(|&k| edge[k]).collect();
             let mut out = p.output(&shown_masses, &zs, &edges, &vec![f64::NAN; edges.len()], false);
             out.notes.insert(
                 0,

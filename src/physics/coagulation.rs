@@ -841,10 +841,19 @@ mod tests {
 
     #[test]
     fn the_loop_over_a_row_equals_its_pairs_one_at_a_time_to_the_bit() {
-        // The loop as any processor compiles it, with the compaction law in
-        // the loop and without (the vector-unit build is held to one pair at
-        // a time through `Model::pair_data_row` in tests/monte_carlo.rs).
+        // The loop without vectors and on every vector unit this processor
+        // has, with the compaction law in the loop and without; 403 families,
+        // so that four-pair steps leave a tail (the build that runs is held
+        // to one pair at a time through `Model::pair_data_row` in
+        // tests/monte_carlo.rs too).
+        use column_row::Vectors;
         use rand::{Rng, SeedableRng};
+        let units = match Vectors::found() {
+            Vectors::Avx512 => vec![Vectors::None, Vectors::Avx2, Vectors::Avx512],
+            Vectors::Avx2 => vec![Vectors::None, Vectors::Avx2],
+            Vectors::Simd128 => vec![Vectors::None, Vectors::Simd128],
+            Vectors::None => vec![Vectors::None],
+        };
         let mut rng = rand::rngs::StdRng::seed_from_u64(12);
         let mono = Monomer::ice();
         let m0 = mono.mass();
@@ -866,7 +875,7 @@ mod tests {
                 newton: true,
             };
             let rule = PairRule { volume: 3.7e15, f_m: 0.1, f_phi: 0.1 };
-            let families: Vec<Family<Props>> = (0..400)
+            let families: Vec<Family<Props>> = (0..403)
                 .map(|n| {
                     let mass = m0 * 10f64.powf(rng.random_range(0.0..28.0));
                     let filling = if n % 3 == 0 { 1.0 } else { 10f64.powf(rng.random_range(-5.0..0.0)) };
@@ -880,21 +889,21 @@ mod tests {
             }
             let k = Constants::of(&column);
             let row = column.row_constants(&k, &rule);
-            for lead in [0, 1, 2, 57, 399] {
+            for lead in [0, 1, 2, 57, 399, 402] {
                 let a = &families[lead];
                 let one = |j: usize| {
                     let (rate, effect) = column.pair_with(&k, a, &families[j]);
                     rule.data(a, &families[j], rate, effect)
                 };
-                for compact in [false, true] {
+                for (units, compact) in units.iter().flat_map(|&u| [(u, false), (u, true)]) {
                     let mut out = vec![Pair::default(); families.len()];
-                    column_row::loop_row(compact, &row, &Lead::of(a, k.rho0), &lanes, &mut out, one);
+                    column_row::loop_row(units, compact, &row, &Lead::of(a, k.rho0), &lanes, &mut out, one);
                     for (j, pair) in out.iter().enumerate() {
                         let exact = one(j);
                         assert_eq!(
                             (pair.c.to_bits(), pair.headroom.to_bits()),
                             (exact.c.to_bits(), exact.headroom.to_bits()),
-                            "{compaction:?}, v_eros {v_eros}: pair {lead}, {j}, compaction law in the loop: {compact}"
+                            "{compaction:?}, v_eros {v_eros}: pair {lead}, {j}, {units:?}, compaction law in the loop: {compact}"
                         );
                     }
                 }

@@ -7,9 +7,11 @@
 //! waits on their latency. Here the families' properties are kept beside
 //! them, one array per property ([`Lanes`], updated as families change), and
 //! one loop without branches computes every pair's relative velocity, rate
-//! coefficient, outcome, filling-factor change and headroom, eight pairs
-//! per instruction where the processor has AVX-512 (found when the program
-//! runs; elsewhere pairs are computed one at a time, as before). The loop does exactly the operations of
+//! coefficient, outcome, filling-factor change and headroom, several pairs
+//! per instruction: eight where the processor has AVX-512, four where it has
+//! AVX2 (both found when the program runs), two in WebAssembly with its
+//! 128-bit vectors; elsewhere pairs are computed one at a time. The loop
+//! does exactly the operations of
 //! [`Column::pair`](super::monte_carlo::Model::pair) and [`PairRule::data`]
 //! in the same order, with the branch-free logarithm and exponential of
 //! [`super::fdlibm`] that they take too, so every pair's data are the same to
@@ -17,13 +19,17 @@
 //! normal numbers) is marked and recomputed one at a time by those functions.
 //! A test holds the two equal over random families and every outcome.
 
-// Off x86-64 the loop serves the tests alone.
-#![cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+// Without vector units the loop serves the tests alone.
+#![cfg_attr(
+    not(any(target_arch = "x86_64", all(target_arch = "wasm32", target_feature = "simd128"))),
+    allow(dead_code)
+)]
 
 use super::aggregate::DriftTerms;
 use super::coagulation::Props;
 use super::fdlibm::{EXP_RANGE, exp_moderate, ln_normal, small_integer};
 use super::monte_carlo::{Family, Pair, PairRule};
+use super::wide::{Bits, Wide};
 use std::cell::RefCell;
 
 /// The properties of a column's families that their pairs need, one array
@@ -182,9 +188,11 @@ thread_local! {
 
 /// Computes the pair data of `lead` with every family of `lanes` into
 /// `out[j]`; the pairs that `exact` must compute one at a time are passed to
-/// it (it gets the index j). Without vector units for the loop (AVX-512) every
-/// pair is computed one at a time: the loop alone is no faster, and the
-/// compiler's estimate keeps it out of AVX2's narrower vectors.
+/// it (it gets the index j). The loop runs eight pairs to an instruction
+/// where the processor has AVX-512 (the compiler makes the vectors), four
+/// where it has AVX2 and two in WebAssembly with its 128-bit vectors (both
+/// through [`super::wide`]); elsewhere every pair is computed by `exact`
+/// (without vectors the loop is not worth both sides of every choice).
 pub(crate) fn pair_data_row(
     k: &RowConstants,
     lead: &Lead,
@@ -192,31 +200,104 @@ pub(crate) fn pair_data_row(
     out: &mut [Pair],
     mut exact: impl FnMut(usize) -> Pair,
 ) {
-    #[cfg(target_arch = "x86_64")]
-    if std::arch::is_x86_feature_detected!("avx512f") {
-        return in_rows(k, lead, lanes, out, exact, |compact, k, lead, lanes, row| {
-            // SAFETY: the processor has AVX-512F (checked just above).
-            unsafe {
-                if compact {
-                    run_avx512::<true>(k, lead, lanes, row);
-                } else {
-                    run_avx512::<false>(k, lead, lanes, row);
-                }
-            }
-        });
+    if let Some(run) = Vectors::found().runner() {
+        return in_rows(k, lead, lanes, out, exact, run);
     }
-    #[cfg(not(target_arch = "x86_64"))]
-    let _ = (k, lead);
     for (j, pair) in out.iter_mut().enumerate().take(lanes.len()) {
         *pair = exact(j);
     }
 }
 
-/// [`pair_data_row`] by the loop compiled without vector units, taking the
-/// compaction law in the loop or not: what the loop computes on any
-/// processor, for the tests that hold it to one pair at a time.
+/// The vector units the loop can use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Vectors {
+    /// None: the loop one pair at a time.
+    None,
+    /// AVX2: four pairs a step.
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+    Avx2,
+    /// AVX-512: eight pairs a step.
+    #[cfg_attr(not(target_arch = "x86_64"), allow(dead_code))]
+    Avx512,
+    /// WebAssembly's 128-bit vectors: two pairs a step.
+    Simd128,
+}
+
+/// A row's loop, given whether to take the compaction law in it.
+type Runner = fn(bool, &RowConstants, &Lead, &Lanes, &mut Out);
+
+impl Vectors {
+    /// The best this processor has.
+    pub(crate) fn found() -> Vectors {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if std::arch::is_x86_feature_detected!("avx512f") {
+                return Vectors::Avx512;
+            }
+            if std::arch::is_x86_feature_detected!("avx2") {
+                return Vectors::Avx2;
+            }
+        }
+        if cfg!(all(target_arch = "wasm32", target_feature = "simd128")) {
+            return Vectors::Simd128;
+        }
+        Vectors::None
+    }
+
+    /// The loop for these units; `None` for [`Vectors::None`] and for units
+    /// this processor does not have.
+    fn runner(self) -> Option<Runner> {
+        #[cfg(target_arch = "x86_64")]
+        {
+            if self == Vectors::Avx512 && std::arch::is_x86_feature_detected!("avx512f") {
+                let run: Runner = |compact, k, lead, lanes, row| {
+                    // SAFETY: the processor has AVX-512F (checked above).
+                    unsafe {
+                        if compact {
+                            run_avx512::<true>(k, lead, lanes, row)
+                        } else {
+                            run_avx512::<false>(k, lead, lanes, row)
+                        }
+                    }
+                };
+                return Some(run);
+            }
+            if self == Vectors::Avx2 && std::arch::is_x86_feature_detected!("avx2") {
+                let run: Runner = |compact, k, lead, lanes, row| {
+                    // SAFETY: the processor has AVX2 (checked above).
+                    unsafe {
+                        if compact {
+                            run_avx2::<true>(k, lead, lanes, row)
+                        } else {
+                            run_avx2::<false>(k, lead, lanes, row)
+                        }
+                    }
+                };
+                return Some(run);
+            }
+        }
+        #[cfg(all(target_arch = "wasm32", target_feature = "simd128"))]
+        if self == Vectors::Simd128 {
+            let run: Runner = |compact, k, lead, lanes, row| {
+                if compact {
+                    kernel::<super::wide::F2, true>(k, lead, lanes, row)
+                } else {
+                    kernel::<super::wide::F2, false>(k, lead, lanes, row)
+                }
+            };
+            return Some(run);
+        }
+        None
+    }
+}
+
+/// [`pair_data_row`] by the loop on the given vector units (the loop
+/// without vectors for [`Vectors::None`]), taking the compaction law in the
+/// loop or not: what the loop computes, for the tests that hold it to one
+/// pair at a time. `units` must be among what [`Vectors::found`] allows.
 #[cfg(test)]
 pub(crate) fn loop_row(
+    units: Vectors,
     compact: bool,
     k: &RowConstants,
     lead: &Lead,
@@ -224,14 +305,15 @@ pub(crate) fn loop_row(
     out: &mut [Pair],
     exact: impl FnMut(usize) -> Pair,
 ) {
-    let run = move |_: bool, k: &RowConstants, lead: &Lead, lanes: &Lanes, row: &mut Out| {
+    let scalar: Runner = |compact, k, lead, lanes, row| {
         if compact {
-            kernel::<true>(k, lead, lanes, row);
+            kernel::<f64, true>(k, lead, lanes, row);
         } else {
-            kernel::<false>(k, lead, lanes, row);
+            kernel::<f64, false>(k, lead, lanes, row);
         }
     };
-    in_rows(k, lead, lanes, out, exact, run);
+    let run = units.runner().unwrap_or(scalar);
+    in_rows(k, lead, lanes, out, exact, move |_, k, lead, lanes, row| run(compact, k, lead, lanes, row));
 }
 
 /// A row by `run` (given whether to take the compaction law in the loop),
@@ -261,144 +343,183 @@ fn in_rows(
     });
 }
 
-/// The loop, compiled for AVX-512.
+/// The loop, compiled for AVX-512 (the compiler makes it eight pairs a step).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
 fn run_avx512<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel::<COMPACT>(k, lead, lanes, out);
+    kernel::<f64, COMPACT>(k, lead, lanes, out);
+}
+
+/// The loop, four pairs a step in AVX2's registers.
+#[cfg(target_arch = "x86_64")]
+#[target_feature(enable = "avx2")]
+fn run_avx2<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
+    kernel::<super::wide::F4, COMPACT>(k, lead, lanes, out);
 }
 
 /// ⌊log₂ x⌋ from the binary exponent, and whether x is a positive normal
 /// number (where that is exact; see `monte_carlo::floor_log2`).
 #[inline(always)]
-fn exponent(x: f64) -> (f64, bool) {
-    let biased = (x.to_bits() >> 52) & 0x7ff;
-    (small_integer(biased) - 1023.0, x > 0.0 && biased != 0 && biased != 0x7ff)
+fn exponent<V: Wide>(x: V) -> (V, V::Mask) {
+    let biased = x.to_bits().shr::<52>().and(0x7ff);
+    (small_integer::<V>(biased) - V::splat(1023.0), x.gt(V::splat(0.0)) & !biased.eq(0) & !biased.eq(0x7ff))
 }
 
 /// One row, without branches: the same operations as the pair-at-a-time
-/// functions, with both sides of every choice computed and one kept.
+/// functions, with both sides of every choice computed and one kept; `V::LANES`
+/// pairs at a time, and the last few one at a time.
 #[inline(always)]
-fn kernel<const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
+fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
     let n = lanes.len();
-    let (mass, filling, volume, stokes, sqrt_stokes, inv_1p) = (
-        &lanes.mass[..n],
-        &lanes.filling[..n],
-        &lanes.volume[..n],
-        &lanes.stokes[..n],
-        &lanes.sqrt_stokes[..n],
-        &lanes.inv_1p[..n],
-    );
-    let (settling, radial, azimuthal) = (&lanes.settling[..n], &lanes.radial[..n], &lanes.azimuthal[..n]);
-    let (radius, scale_height2) = (&lanes.radius[..n], &lanes.scale_height2[..n]);
-    let (out_c, out_h, out_s) = (&mut out.c[..n], &mut out.headroom[..n], &mut out.scalar[..n]);
+    let columns = Columns {
+        mass: &lanes.mass[..n],
+        filling: &lanes.filling[..n],
+        volume: &lanes.volume[..n],
+        stokes: &lanes.stokes[..n],
+        sqrt_stokes: &lanes.sqrt_stokes[..n],
+        inv_1p: &lanes.inv_1p[..n],
+        settling: &lanes.settling[..n],
+        radial: &lanes.radial[..n],
+        azimuthal: &lanes.azimuthal[..n],
+        radius: &lanes.radius[..n],
+        scale_height2: &lanes.scale_height2[..n],
+    };
+    let (c, headroom, scalar) = (&mut out.c[..n], &mut out.headroom[..n], &mut out.scalar[..n]);
     // A count rather than a flag per pair: one more array to write tips
     // the compiler's estimate against vectors.
     let mut compacting = 0usize;
-    let d = &a.drift;
-    for i in 0..n {
-        let (mb, phib, sb) = (mass[i], filling[i], stokes[i]);
-        // Relative velocity (Column::velocity_with).
-        let a_first = d.stokes >= sb;
-        let s1 = if a_first { d.stokes } else { sb };
-        let s2 = if a_first { sb } else { d.stokes };
-        let gap = s1 - s2;
-        let spread = k.epsilon * s1;
-        let diff = (gap * gap + spread * spread).sqrt();
-        let s2e = (s1 - diff).max(0.0);
-        let brownian2 = k.brownian * (a.mass + mb) / (a.mass * mb);
-        let sqrt1 = if a_first { d.sqrt_stokes } else { sqrt_stokes[i] };
-        // 1/(1 + St₁), kept per family.
-        let inv1p = if a_first { a.inv_1p } else { inv_1p[i] };
-        let fast = k.vg * (inv1p + 1.0 / (1.0 + s2e)).sqrt();
-        let turbulence = if s1 < k.st_eta {
-            k.vg_re * diff
-        } else if s1 < 1.0 {
-            k.vg_155 * sqrt1
-        } else {
-            fast
-        };
-        let inv1 = 1.0 / (1.0 + s2e);
-        let inv2 = 1.0 / (1.0 + s2e * s2e);
-        let h_d = 1.0 / (1.0 + s2e / k.alpha * (1.0 + 2.0 * s2e) * inv1).sqrt();
-        let settling2 = k.omega * s2e * inv1 * h_d * k.scale_height;
-        let radial2 = 2.0 * s2e * k.eta_vk * inv2;
-        let azimuthal2 = k.eta_vk * inv2;
-        let ds = (if a_first { d.settling } else { settling[i] }) - settling2;
-        let dr = (if a_first { d.radial } else { radial[i] }) - radial2;
-        let da = (if a_first { d.azimuthal } else { azimuthal[i] }) - azimuthal2;
-        let v = (brownian2 + turbulence * turbulence + ds * ds + dr * dr + da * da).sqrt();
-        // Rate coefficient (Column::rate_at).
-        let r = a.radius + radius[i];
-        let rate = 1.253_314_137_315_500_3 * r * r * v / (a.scale_height2 + scale_height2[i]).sqrt();
-        // Outcome (aggregate::outcome).
-        let a_target = a.mass >= mb;
-        let (tm, tphi) = if a_target { (a.mass, a.filling) } else { (mb, phib) };
-        let pm = if a_target { mb } else { a.mass };
-        // Volumes m/(ρ₀φ), kept per family.
-        let (vt, vp) = if a_target { (a.volume, volume[i]) } else { (volume[i], a.volume) };
-        let ratio = tm.min(pm) / tm.max(pm);
-        let small = ratio < k.r_crit;
-        let eroding = small && v > k.v_eros;
-        let shattering = v >= k.v_frag;
-        let fragment = !small && shattering;
-        let bounce = !small && !shattering && v >= k.v_bounce;
-        let stick = !(eroding || fragment || bounce);
-        let lost = k.c1 * (1.0 * (v / k.v_eros)) * pm;
-        let shatter = fragment || (eroding && lost >= tm);
-        // Filling-factor change of sticking (coagulation::filling_change_with).
-        let (va, vb) = if vt >= vp { (vt, vp) } else { (vp, vt) };
-        // hit_and_stick_void: capped above V₁/V₂ = 650.
-        let void =
-            if va > 650.0 * vb { 6.94 * vb } else { (0.99 - 1.03 * ln_normal(2.0 / (va / vb + 1.0))).min(6.94) * vb };
-        let m = tm + pm;
-        let phi_hs = m / (k.rho0 * (va + vb + void));
-        let full = phi_hs >= 1.0;
-        let inv_m = 1.0 / m;
-        let e = 0.5 * tm * pm * inv_m * v * v;
-        let n_mono = m / k.m0;
-        let x = e * k.m0 * inv_m / k.onset;
-        let hs2 = phi_hs * phi_hs;
-        let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
-        let below = x * x * x < hs10 * n_mono * n_mono * (1.0 - 1e-9);
-        // Collisional compaction: the power law where it may exceed φ_hs.
-        let compacting_here = !(full || e <= k.onset || (below && hs10 > 1e-250 && n_mono < 1e100));
-        // Without COMPACT, every pair that gets here is computed one at a time.
-        let (phi_c, in_range) = if COMPACT {
-            let (okx, okn) = (x.is_normal() && x > 0.0, n_mono.is_normal() && n_mono > 0.0);
-            let power = 0.3 * ln_normal(x) - 0.2 * ln_normal(n_mono);
-            (exp_moderate(power), okx && okn && power.abs() < EXP_RANGE)
-        } else {
-            (0.0, false)
-        };
-        let compacted = compacting_here && phi_c > phi_hs;
-        let grown = (vp + void) / vt;
-        let change = if full {
-            1.0 - tphi
-        } else if compacted {
-            phi_c.min(1.0) - tphi
-        } else {
-            tphi * (pm / tm - grown) / (1.0 + grown)
-        };
-        // Pair data (PairRule::data).
-        let c = rate / k.rule.volume;
-        let (dm, dphi) = if stick {
-            (pm, change.abs())
-        } else if bounce {
-            (0.0, 0.0)
-        } else if shatter {
-            (tm, tphi)
-        } else {
-            (lost, 0.0)
-        };
-        let (hm, ok_m) = exponent(k.rule.f_m * tm / dm);
-        let (hp, ok_p) = exponent(k.rule.f_phi * tphi / dphi);
-        let hm = if dm > 0.0 { hm } else { f64::INFINITY };
-        let hp = if dphi > 0.0 { hp } else { f64::INFINITY };
-        out_c[i] = if bounce { 0.0 } else { c };
-        out_h[i] = hm.min(hp) as f32;
-        compacting += usize::from(stick && compacting_here);
-        out_s[i] = (stick && compacting_here && !in_range) || (dm > 0.0 && !ok_m) || (dphi > 0.0 && !ok_p);
+    let whole = n - n % V::LANES;
+    for i in (0..whole).step_by(V::LANES) {
+        compacting += pairs::<V, COMPACT>(k, a, &columns, (&mut *c, &mut *headroom, &mut *scalar), i);
+    }
+    for i in whole..n {
+        compacting += pairs::<f64, COMPACT>(k, a, &columns, (&mut *c, &mut *headroom, &mut *scalar), i);
     }
     out.compacting = compacting;
+}
+
+/// [`Lanes`] cut to the families of one row.
+struct Columns<'a> {
+    mass: &'a [f64],
+    filling: &'a [f64],
+    volume: &'a [f64],
+    stokes: &'a [f64],
+    sqrt_stokes: &'a [f64],
+    inv_1p: &'a [f64],
+    settling: &'a [f64],
+    radial: &'a [f64],
+    azimuthal: &'a [f64],
+    radius: &'a [f64],
+    scale_height2: &'a [f64],
+}
+
+/// The pairs of `a` with families `i..i + V::LANES`, written to `out` (K/V,
+/// headroom, whether to compute the pair one at a time); returns how many of
+/// them stick beyond the onset of collisional compaction.
+#[inline(always)]
+fn pairs<V: Wide, const COMPACT: bool>(
+    k: &RowConstants,
+    a: &Lead,
+    l: &Columns,
+    out: (&mut [f64], &mut [f32], &mut [bool]),
+    i: usize,
+) -> usize {
+    let s = V::splat;
+    let (mb, phib, sb) = (V::load(l.mass, i), V::load(l.filling, i), V::load(l.stokes, i));
+    let d = &a.drift;
+    // Relative velocity (Column::velocity_with).
+    let a_first = s(d.stokes).ge(sb);
+    let s1 = V::select(a_first, s(d.stokes), sb);
+    let s2 = V::select(a_first, sb, s(d.stokes));
+    let gap = s1 - s2;
+    let spread = s(k.epsilon) * s1;
+    let diff = (gap * gap + spread * spread).sqrt();
+    let s2e = (s1 - diff).max(s(0.0));
+    let brownian2 = s(k.brownian) * (s(a.mass) + mb) / (s(a.mass) * mb);
+    let sqrt1 = V::select(a_first, s(d.sqrt_stokes), V::load(l.sqrt_stokes, i));
+    // 1/(1 + St₁), kept per family.
+    let inv1p = V::select(a_first, s(a.inv_1p), V::load(l.inv_1p, i));
+    let fast = s(k.vg) * (inv1p + s(1.0) / (s(1.0) + s2e)).sqrt();
+    let turbulence =
+        V::select(s1.lt(s(k.st_eta)), s(k.vg_re) * diff, V::select(s1.lt(s(1.0)), s(k.vg_155) * sqrt1, fast));
+    let inv1 = s(1.0) / (s(1.0) + s2e);
+    let inv2 = s(1.0) / (s(1.0) + s2e * s2e);
+    let h_d = s(1.0) / (s(1.0) + s2e / s(k.alpha) * (s(1.0) + s(2.0) * s2e) * inv1).sqrt();
+    let settling2 = s(k.omega) * s2e * inv1 * h_d * s(k.scale_height);
+    let radial2 = s(2.0) * s2e * s(k.eta_vk) * inv2;
+    let azimuthal2 = s(k.eta_vk) * inv2;
+    let ds = V::select(a_first, s(d.settling), V::load(l.settling, i)) - settling2;
+    let dr = V::select(a_first, s(d.radial), V::load(l.radial, i)) - radial2;
+    let da = V::select(a_first, s(d.azimuthal), V::load(l.azimuthal, i)) - azimuthal2;
+    let v = (brownian2 + turbulence * turbulence + ds * ds + dr * dr + da * da).sqrt();
+    // Rate coefficient (Column::rate_at).
+    let r = s(a.radius) + V::load(l.radius, i);
+    let rate = s(1.253_314_137_315_500_3) * r * r * v / (s(a.scale_height2) + V::load(l.scale_height2, i)).sqrt();
+    // Outcome (aggregate::outcome).
+    let a_target = s(a.mass).ge(mb);
+    let (tm, tphi) = (V::select(a_target, s(a.mass), mb), V::select(a_target, s(a.filling), phib));
+    let pm = V::select(a_target, mb, s(a.mass));
+    // Volumes m/(ρ₀φ), kept per family.
+    let volume = V::load(l.volume, i);
+    let (vt, vp) = (V::select(a_target, s(a.volume), volume), V::select(a_target, volume, s(a.volume)));
+    let ratio = tm.min(pm) / tm.max(pm);
+    let small = ratio.lt(s(k.r_crit));
+    let eroding = small & v.gt(s(k.v_eros));
+    let shattering = v.ge(s(k.v_frag));
+    let fragment = !small & shattering;
+    let bounce = !small & !shattering & v.ge(s(k.v_bounce));
+    let stick = !(eroding | fragment | bounce);
+    let lost = s(k.c1) * (s(1.0) * (v / s(k.v_eros))) * pm;
+    let shatter = fragment | (eroding & lost.ge(tm));
+    // Filling-factor change of sticking (coagulation::filling_change_with).
+    let larger = vt.ge(vp);
+    let (va, vb) = (V::select(larger, vt, vp), V::select(larger, vp, vt));
+    // hit_and_stick_void: capped above V₁/V₂ = 650.
+    let void = V::select(
+        va.gt(s(650.0) * vb),
+        s(6.94) * vb,
+        (s(0.99) - s(1.03) * ln_normal(s(2.0) / (va / vb + s(1.0)))).min(s(6.94)) * vb,
+    );
+    let m = tm + pm;
+    let phi_hs = m / (s(k.rho0) * (va + vb + void));
+    let full = phi_hs.ge(s(1.0));
+    let inv_m = s(1.0) / m;
+    let e = s(0.5) * tm * pm * inv_m * v * v;
+    let n_mono = m / s(k.m0);
+    let x = e * s(k.m0) * inv_m / s(k.onset);
+    let hs2 = phi_hs * phi_hs;
+    let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
+    let below = (x * x * x).lt(hs10 * n_mono * n_mono * s(1.0 - 1e-9));
+    // Collisional compaction: the power law where it may exceed φ_hs.
+    let compacting_here = !(full | e.le(s(k.onset)) | (below & hs10.gt(s(1e-250)) & n_mono.lt(s(1e100))));
+    // Without COMPACT, every pair that gets here is computed one at a time.
+    let (phi_c, in_range) = if COMPACT {
+        let (okx, okn) = (exponent(x).1, exponent(n_mono).1);
+        let power = s(0.3) * ln_normal(x) - s(0.2) * ln_normal(n_mono);
+        (exp_moderate(power), okx & okn & power.abs().lt(s(EXP_RANGE)))
+    } else {
+        (s(0.0), s(0.0).lt(s(0.0)))
+    };
+    let compacted = compacting_here & phi_c.gt(phi_hs);
+    let grown = (vp + void) / vt;
+    let change = V::select(
+        full,
+        s(1.0) - tphi,
+        V::select(compacted, phi_c.min(s(1.0)) - tphi, tphi * (pm / tm - grown) / (s(1.0) + grown)),
+    );
+    // Pair data (PairRule::data).
+    let c = rate / s(k.rule.volume);
+    let dm = V::select(stick, pm, V::select(bounce, s(0.0), V::select(shatter, tm, lost)));
+    let dphi = V::select(stick, change.abs(), V::select(bounce | !shatter, s(0.0), tphi));
+    let (hm, ok_m) = exponent(s(k.rule.f_m) * tm / dm);
+    let (hp, ok_p) = exponent(s(k.rule.f_phi) * tphi / dphi);
+    let (moves_m, moves_phi) = (dm.gt(s(0.0)), dphi.gt(s(0.0)));
+    let hm = V::select(moves_m, hm, s(f64::INFINITY));
+    let hp = V::select(moves_phi, hp, s(f64::INFINITY));
+    let (out_c, out_h, out_s) = out;
+    V::select(bounce, s(0.0), c).store(out_c, i);
+    hm.min(hp).store_f32(out_h, i);
+    let one_at_a_time = (stick & compacting_here & !in_range) | (moves_m & !ok_m) | (moves_phi & !ok_p);
+    V::store_mask(one_at_a_time, out_s, i);
+    V::count(stick & compacting_here)
 }

@@ -8,6 +8,8 @@
 //! bit. A model that computes a quantity both one at a time and in vectors
 //! takes these in both, so that the two agree exactly.
 
+use super::wide::{Bits, Wide};
+
 // The constants of `e_log.c` and `e_exp.c`, by their bits.
 const LN2_HI: f64 = f64::from_bits(0x3fe6_2e42_fee0_0000);
 const LN2_LO: f64 = f64::from_bits(0x3dea_39ef_3579_3c76);
@@ -31,26 +33,27 @@ pub fn ln(x: f64) -> f64 {
 }
 
 /// ln x for a positive normal x (anything else gives a meaningless number,
-/// never a panic).
+/// never a panic), in each lane of `x` ([`Wide`]: one number or several).
 #[inline(always)]
-pub(crate) fn ln_normal(x: f64) -> f64 {
+pub(crate) fn ln_normal<V: Wide>(x: V) -> V {
+    let s = V::splat;
     let ui = x.to_bits();
     // Reduce x to 2^k (1 + f) with √2/2 < 1 + f < √2, in 64-bit integers
     // throughout (narrower ones cost vector units a shuffle each).
-    let hx = ((ui >> 32) + (0x3ff0_0000 - 0x3fe6_a09e)) & 0xffff_ffff;
-    let biased = hx >> 20;
-    let hx = (hx & 0x000f_ffff) + 0x3fe6_a09e;
-    let x = f64::from_bits((hx << 32) | (ui & 0xffff_ffff));
-    let f = x - 1.0;
-    let hfsq = 0.5 * f * f;
-    let s = f / (2.0 + f);
-    let z = s * s;
+    let hx = ui.shr::<32>().add(0x3ff0_0000 - 0x3fe6_a09e).and(0xffff_ffff);
+    let biased = hx.shr::<20>();
+    let hx = hx.and(0x000f_ffff).add(0x3fe6_a09e);
+    let x = V::from_bits(hx.shl::<32>().or(ui.and(0xffff_ffff)));
+    let f = x - s(1.0);
+    let hfsq = s(0.5) * f * f;
+    let q = f / (s(2.0) + f);
+    let z = q * q;
     let w = z * z;
-    let t1 = w * (LG2 + w * (LG4 + w * LG6));
-    let t2 = z * (LG1 + w * (LG3 + w * (LG5 + w * LG7)));
+    let t1 = w * (s(LG2) + w * (s(LG4) + w * s(LG6)));
+    let t2 = z * (s(LG1) + w * (s(LG3) + w * (s(LG5) + w * s(LG7))));
     let r = t2 + t1;
-    let dk = small_integer(biased) - 1023.0;
-    s * (hfsq + r) + dk * LN2_LO - hfsq + f + dk * LN2_HI
+    let dk = small_integer::<V>(biased) - s(1023.0);
+    q * (hfsq + r) + dk * s(LN2_LO) - hfsq + f + dk * s(LN2_HI)
 }
 
 /// exp x; |x| < 708 without a branch, anything else by `std`.
@@ -63,50 +66,43 @@ pub fn exp(x: f64) -> f64 {
 pub(crate) const EXP_RANGE: f64 = 708.0;
 
 /// exp x for |x| < [`EXP_RANGE`] (anything else gives a meaningless number,
-/// never a panic): `e_exp.c`'s three ranges of |x| computed alike and one
-/// kept.
+/// never a panic), in each lane of `x`: `e_exp.c`'s three ranges of |x|
+/// computed alike and one kept.
 #[inline(always)]
-pub(crate) fn exp_moderate(x: f64) -> f64 {
+pub(crate) fn exp_moderate<V: Wide>(x: V) -> V {
+    let s = V::splat;
     let bits = x.to_bits();
-    let hx = (bits >> 32) & 0x7fff_ffff;
-    let negative = bits >> 63 == 1;
+    let hx = bits.shr::<32>().and(0x7fff_ffff);
+    let negative = bits.shr::<63>().eq(1);
     // Reduce x to r = x − k ln 2 with |r| ≤ ln 2 / 2 (k = 0 below that).
-    let k = if hx > 0x3fd6_2e42 {
-        if hx >= 0x3ff0_a2b2 {
-            (INV_LN2 * x + if negative { -0.5 } else { 0.5 }).trunc()
-        } else if negative {
-            -1.0
-        } else {
-            1.0
-        }
-    } else {
-        0.0
-    };
-    let hi = x - k * LN2_HI;
-    let lo = k * LN2_LO;
+    let far = (s(INV_LN2) * x + V::select(negative, s(-0.5), s(0.5))).trunc();
+    let near = V::select(negative, s(-1.0), s(1.0));
+    let k = V::select(hx.gt(0x3fd6_2e42), V::select(hx.gt(0x3ff0_a2b1), far, near), s(0.0));
+    let hi = x - k * s(LN2_HI);
+    let lo = k * s(LN2_LO);
     let r = hi - lo;
     let rr = r * r;
-    let c = r - rr * (P1 + rr * (P2 + rr * (P3 + rr * (P4 + rr * P5))));
-    let y = 1.0 + (r * c / (2.0 - c) - lo + hi);
+    let c = r - rr * (s(P1) + rr * (s(P2) + rr * (s(P3) + rr * (s(P4) + rr * s(P5)))));
+    let y = s(1.0) + (r * c / (s(2.0) - c) - lo + hi);
     // y 2^k, exact while it is a normal number.
-    let scale = f64::from_bits(((small_integer_of(k + 1023.0)) & 0x7ff) << 52);
-    if hx > 0x3e30_0000 { y * scale } else { 1.0 + x }
+    let scale = V::from_bits(small_integer_of(k + s(1023.0)).and(0x7ff).shl::<52>());
+    V::select(hx.gt(0x3e30_0000), y * scale, s(1.0) + x)
 }
 
 /// The integer n of a float 0 ≤ n < 2⁵² that holds one, without a
 /// float-to-integer conversion.
 #[inline(always)]
-fn small_integer_of(n: f64) -> u64 {
+fn small_integer_of<V: Wide>(n: V) -> V::Bits {
     const TWO_52: f64 = 4_503_599_627_370_496.0;
-    (n + TWO_52).to_bits() - TWO_52.to_bits()
+    (n + V::splat(TWO_52)).to_bits().sub(TWO_52.to_bits())
 }
 
 /// An integer n < 2⁵² as a float, exactly, without an integer-to-float
 /// conversion: 2⁵² + n has n as its last bits.
 #[inline(always)]
-pub(crate) fn small_integer(n: u64) -> f64 {
+pub(crate) fn small_integer<V: Wide>(n: V::Bits) -> V {
     const TWO_52: f64 = 4_503_599_627_370_496.0;
-    f64::from_bits(TWO_52.to_bits() | n) - TWO_52
+    V::from_bits(n.or_c(TWO_52.to_bits())) - V::splat(TWO_52)
 }
 
 #[cfg(test)]

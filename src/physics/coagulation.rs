@@ -912,7 +912,7 @@ mod tests {
     }
 
     #[test]
-    fn the_lanes_and_keys_follow_the_families_through_every_change() {
+    fn the_lanes_keys_and_rates_follow_the_families_through_every_change() {
         // Erosion at 1 m/s: families are added, merged, removed and
         // re-zoomed from the first events on.
         let column = Column {
@@ -933,6 +933,9 @@ mod tests {
         for _ in 0..20_000 {
             assert!(engine.step());
             assert!(engine.mirrors_match(), "after {} events", engine.events());
+            if let Err(e) = engine.rates_match(1e-6) {
+                panic!("after {} events: {e}", engine.events());
+            }
             tally = engine.tally();
         }
         assert!(tally.erode > 100 && tally.merges > 100 && tally.rezooms > 10, "{tally:?}");

@@ -519,6 +519,16 @@ pub struct Engine<M: Model> {
     /// Families whose particles changed in the merges under way (their pair
     /// data are recomputed when the merges are done).
     stale: Vec<bool>,
+    /// Families whose rates are in the partner sums: false for a family
+    /// made by the event under way until its pair data and rates are first
+    /// computed (its groups are not counted until then).
+    rated: Vec<bool>,
+    /// Families whose group count may have fallen below one since the
+    /// merges were last done (the only ones `merge_small` need look at),
+    /// unless `watch_all`.
+    watch: Vec<usize>,
+    /// Every family may hold fewer than one group (after a re-zoom).
+    watch_all: bool,
     /// The particles each family's properties and pair data were computed
     /// for: merges that keep them move the family's mass and φ by at most
     /// `MERGE_REFRESH` from these in all, not per merge.
@@ -588,6 +598,9 @@ impl<M: Model> Engine<M> {
             since_zoom: 0,
             dirty: vec![false],
             stale: vec![false],
+            rated: vec![true],
+            watch: Vec::new(),
+            watch_all: false,
             cached: vec![first],
             by_mass: vec![0],
             lanes: M::Lanes::default(),
@@ -657,6 +670,22 @@ impl<M: Model> Engine<M> {
             m1 += g * f.mass;
             m2 += g * f.mass * f.mass;
             max = max.max(f.mass);
+        }
+        (m1 / n, m2 / m1, max)
+    }
+
+    /// [`Engine::moments`] from the group counts in `counted` and the
+    /// masses and zoom factors in `keys` (compact arrays beside the
+    /// families), where they equal the families' own.
+    fn counted_moments(&self) -> (f64, f64, f64) {
+        debug_assert!(self.families.iter().zip(&self.counted).all(|(f, g)| f.groups == *g));
+        let (mut n, mut m1, mut m2, mut max) = (0.0, 0.0, 0.0, 0.0f64);
+        for (key, groups) in self.keys.iter().zip(&self.counted) {
+            let g = groups * exp2i(key.zoom);
+            n += g;
+            m1 += g * key.mass;
+            m2 += g * key.mass * key.mass;
+            max = max.max(key.mass);
         }
         (m1 / n, m2 / m1, max)
     }
@@ -732,6 +761,7 @@ impl<M: Model> Engine<M> {
 
     /// The cached data of pair (i, j), from the row of the family whose data
     /// were computed last.
+    #[inline]
     fn data(&self, i: usize, j: usize) -> Pair {
         if self.computed[i] >= self.computed[j] { self.pairs.get(i, j) } else { self.pairs.get(j, i) }
     }
@@ -802,13 +832,19 @@ impl<M: Model> Engine<M> {
         self.partner_sum[k] = sum;
         self.counted[k] = now;
         self.in_group[k] = 2.0 * self.in_group_rate(k);
+        self.rated[k] = true;
     }
 
     /// Updates the rates after family k's group count changed (nothing else
     /// about it): a pair's group rate (4.25) is proportional to the group
     /// counts of both families, so every partner's sum moves by the change
-    /// times the pair's unit rate; the in-group rate is recomputed.
+    /// times the pair's unit rate; the in-group rate is recomputed. Nothing
+    /// for a family not yet rated.
     fn scale_rates(&mut self, k: usize) {
+        if !self.rated[k] {
+            // Its groups are counted when its rates are first computed.
+            return;
+        }
         let n = self.families.len();
         let change = self.families[k].groups - self.counted[k];
         if change != 0.0 {
@@ -855,6 +891,8 @@ impl<M: Model> Engine<M> {
         self.counted.push(0.0);
         self.dirty.push(false);
         self.stale.push(true);
+        self.rated.push(false);
+        self.watch.push(k);
         self.cached.push(body);
         self.computed.push(self.rows);
         self.enlist(k);
@@ -889,13 +927,22 @@ impl<M: Model> Engine<M> {
         let last = n - 1;
         if k != last {
             self.unlist(last);
-            // The pair data go to row k, from wherever they are; row k then
-            // counts as the newest, so that they are read from there.
-            for j in 0..last {
-                let pair = if j == k { self.pairs.get(last, last) } else { self.data(last, j) };
-                *self.pairs.at(k, j) = pair;
+            // A family made by this event and not yet rated (usually the one
+            // that moves: products are added last) keeps nothing worth
+            // moving: its pair data and unit rates are computed afresh, over
+            // its whole row and column, when the merges are done, and until
+            // then no partner sum holds its rates (`scale_rates` leaves them
+            // out while it is unrated), so whatever its new row and column
+            // hold is never summed into a rate.
+            if self.rated[last] {
+                // The pair data go to row k, from wherever they are; row k
+                // then counts as the newest, so that they are read from there.
+                for j in 0..last {
+                    let pair = if j == k { self.pairs.get(last, last) } else { self.data(last, j) };
+                    *self.pairs.at(k, j) = pair;
+                }
+                self.units.relocate(last, k, last);
             }
-            self.units.relocate(last, k, last);
         }
         self.computed.swap_remove(k);
         if k != last {
@@ -907,6 +954,13 @@ impl<M: Model> Engine<M> {
         self.counted.swap_remove(k);
         self.dirty.swap_remove(k);
         self.stale.swap_remove(k);
+        self.rated.swap_remove(k);
+        self.watch.retain(|&w| w != k);
+        for w in &mut self.watch {
+            if *w == last {
+                *w = k;
+            }
+        }
         self.cached.swap_remove(k);
         self.families.swap_remove(k);
         self.keys.swap_remove(k);
@@ -943,7 +997,7 @@ impl<M: Model> Engine<M> {
         self.event(i, j);
         self.events += 1;
         self.since_zoom += 1;
-        let (m_a, m_p, m_max) = self.moments();
+        let (m_a, m_p, m_max) = self.counted_moments();
         let moved = |now: f64, then: f64, by: f64| (now / then - 1.0).abs() > by;
         if self.since_zoom >= self.settings.rezoom_every
             || moved(m_a, self.zoomed_at.0, 0.05)
@@ -959,11 +1013,12 @@ impl<M: Model> Engine<M> {
     fn weigh(&mut self) -> f64 {
         debug_assert!(self.families.iter().zip(&self.counted).all(|(f, g)| f.groups == *g));
         debug_assert!(!self.stale.contains(&true));
-        let n = self.families.len();
+        // `event_weight` from the group counts in `counted` (equal to the
+        // families' own here), a compact array beside the families.
         self.weight.clear();
         let mut total = 0.0;
-        for i in 0..n {
-            let w = self.event_weight(i);
+        for ((groups, sum), in_group) in self.counted.iter().zip(&self.partner_sum).zip(&self.in_group) {
+            let w = groups * sum + in_group;
             self.weight.push(w);
             total += w;
         }
@@ -1026,6 +1081,7 @@ impl<M: Model> Engine<M> {
             self.families[hi].groups -= exp2i(-n_eps);
             self.outcome(&l, &h, per, exp2i(l.zoom), l.zoom, &mut made);
         }
+        self.watch.extend([i, j]);
         self.scale_rates(i);
         if j != i {
             self.scale_rates(j);
@@ -1140,7 +1196,7 @@ impl<M: Model> Engine<M> {
     /// `refresh` the rates of magnified families are updated at once (a
     /// re-zoom marks them dirty instead).
     fn merge_small(&mut self, refresh: bool) {
-        while let Some(k) = self.families.iter().position(|f| f.groups < 1.0 - 1e-9) {
+        while let Some(k) = self.first_small() {
             if self.families[k].groups.abs() < 1e-6 {
                 self.absorb_residue(k);
                 self.remove_family(k);
@@ -1175,6 +1231,21 @@ impl<M: Model> Engine<M> {
         }
     }
 
+    /// The family with the lowest index that holds fewer than one group.
+    /// Watched families that hold more stop being watched (a family's group
+    /// count falls only where it is put on the watch).
+    fn first_small(&mut self) -> Option<usize> {
+        let families = &self.families;
+        let small = |k: &usize| families[*k].groups < 1.0 - 1e-9;
+        if self.watch_all {
+            let first = (0..families.len()).find(small);
+            self.watch_all = first.is_some();
+            return first;
+        }
+        self.watch.retain(small);
+        self.watch.iter().copied().min()
+    }
+
     /// The rounding residue of an emptied family (|w| < 10⁻⁶ groups, either
     /// sign) goes to the family holding the most mass, as extra particles of
     /// that family's mass: mass stays conserved and the particle number
@@ -1189,6 +1260,8 @@ impl<M: Model> Engine<M> {
         if let Some(t) = t {
             let g = &mut self.families[t];
             g.groups += residue / g.mass / exp2i(g.zoom);
+            // The residue may be negative.
+            self.watch.push(t);
             self.scale_rates(t);
         }
     }
@@ -1340,6 +1413,7 @@ impl<M: Model> Engine<M> {
                 key.zoom = z;
             }
         }
+        self.watch_all = true;
         self.merge_small(false);
         // Rates change only for families whose zoom changed (merged ones were
         // refreshed as they merged). Now and then, and when many changed,
@@ -1380,6 +1454,43 @@ impl<M: Model> Engine<M> {
             && self.keys.iter().zip(&self.families).all(|(k, f)| k.mass == f.mass && k.zoom == f.zoom)
             && self.cached.len() == self.families.len()
             && self.cached.iter().zip(&self.families).all(|(c, f)| near(f.mass, c.mass) && near(f.filling, c.filling))
+    }
+
+    /// Whether the rates are those of the cached pair data: every family is
+    /// rated with its groups counted, every unit rate is the one its pair's
+    /// data and the families' zoom factors give (and the same both ways),
+    /// and every partner sum equals Σ_j w_j × unit rate summed afresh to
+    /// within `tolerance` of the sum of its terms' sizes. Otherwise says
+    /// where they differ.
+    #[cfg(test)]
+    pub(crate) fn rates_match(&self, tolerance: f64) -> Result<(), String> {
+        let n = self.families.len();
+        for (i, f) in self.families.iter().enumerate() {
+            if !self.rated[i] || self.counted[i] != f.groups {
+                return Err(format!(
+                    "family {i}: rated {}, counted {} of {} groups",
+                    self.rated[i], self.counted[i], f.groups
+                ));
+            }
+            let mut sum = 0.0;
+            let mut size = 0.0;
+            for (j, g) in self.families.iter().enumerate() {
+                let unit = self.units.get(i, j);
+                let expected = if i == j { 0.0 } else { unit_of(f, i, g, j, &self.data(i, j)) };
+                if unit.to_bits() != expected.to_bits() || unit.to_bits() != self.units.get(j, i).to_bits() {
+                    return Err(format!(
+                        "pair ({i}, {j}) of {n}: unit rate {unit}, mirror {}, from its data {expected}",
+                        self.units.get(j, i)
+                    ));
+                }
+                sum += g.groups * unit;
+                size += (g.groups * unit).abs();
+            }
+            if (self.partner_sum[i] - sum).abs() > tolerance * size {
+                return Err(format!("family {i} of {n}: partner sum {} against {sum} afresh", self.partner_sum[i]));
+            }
+        }
+        Ok(())
     }
 
     /// Mass per unit volume per ln m in logarithmic bins, `per_decade` bins

@@ -1015,12 +1015,13 @@ impl<M: Model> Engine<M> {
         debug_assert!(!self.stale.contains(&true));
         // `event_weight` from the group counts in `counted` (equal to the
         // families' own here), a compact array beside the families.
-        self.weight.clear();
+        self.weight.resize(self.counted.len(), 0.0);
         let mut total = 0.0;
-        for ((groups, sum), in_group) in self.counted.iter().zip(&self.partner_sum).zip(&self.in_group) {
-            let w = groups * sum + in_group;
-            self.weight.push(w);
-            total += w;
+        for (weight, ((groups, sum), in_group)) in
+            self.weight.iter_mut().zip(self.counted.iter().zip(&self.partner_sum).zip(&self.in_group))
+        {
+            *weight = groups * sum + in_group;
+            total += *weight;
         }
         total
     }
@@ -1223,11 +1224,12 @@ impl<M: Model> Engine<M> {
                 }
             }
         }
-        for k in 0..self.families.len() {
-            if self.stale[k] {
-                self.stale[k] = false;
-                self.refresh_pairs(k);
-            }
+        let mut k = 0;
+        while let Some(at) = self.stale[k..].iter().position(|&stale| stale) {
+            k += at;
+            self.stale[k] = false;
+            self.refresh_pairs(k);
+            k += 1;
         }
     }
 
@@ -1598,7 +1600,10 @@ fn unit_row_avx2(
 }
 
 /// [`unit_row`] without branches: [`order_of`] and [`unit_of`] with both
-/// sides of every choice computed and one kept (the same numbers).
+/// sides of every choice computed and one kept (the same numbers). With
+/// equal zoom factors N_ε is 0 whichever family is lo, so the order of the
+/// pair matters only through the lower zoom factor and whether its family
+/// is the lighter one.
 #[inline(always)]
 fn unit_row_lanes(
     (zk, mk, k): (i32, f64, usize),
@@ -1613,19 +1618,26 @@ fn unit_row_lanes(
     for j in 0..n {
         let Key { mass: mj, zoom: zj } = keys[j];
         let Pair { c, headroom } = pairs[j];
-        let lo_first = zk < zj || (zk == zj && (mk > mj || (mk == mj && k < j)));
-        let (zl, ml, zh, mh) = if lo_first { (zk, mk, zj, mj) } else { (zj, mj, zk, mk) };
-        let span = zh - zl;
+        let span = (zk - zj).abs();
+        let zl = zk.min(zj);
+        let lighter_lo = if zk < zj { mk < mj } else { mj < mk };
         let short = f64::from(span) - f64::from(headroom);
-        let general = if short.is_finite() { (short.max(0.0) as i32).min(span) } else { 0 };
+        // The headroom is an integer or ±∞: within [0, span] `short` is an
+        // exact integer, and ±∞ gives 0.
+        let clamped = if short == f64::INFINITY { 0.0 } else { short.max(0.0).min(f64::from(span)) };
+        // SAFETY: `clamped` is finite and within [0, span], an i32.
+        let general = unsafe { clamped.to_int_unchecked::<i32>() };
         let n_eps = if span == 0 {
             0
-        } else if ml < mh {
+        } else if lighter_lo {
             span
         } else {
             general
         };
-        let unit = if c <= 0.0 || j == k { 0.0 } else { exp2i(zl + n_eps) * c };
+        // exp2i(zl + N_ε) from its bits: 2^e for −1022 ≤ e ≤ 1023, 0 below
+        // (e = −1023) and ∞ above (e = 1024).
+        let e = (zl + n_eps).max(-1023).min(1024);
+        let unit = if c <= 0.0 || j == k { 0.0 } else { f64::from_bits(((e + 1023) as u64) << 52) * c };
         let old = units[j];
         units[j] = unit;
         let moved = now * unit - before * old;

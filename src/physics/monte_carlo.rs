@@ -1636,7 +1636,7 @@ fn unit_row_lanes(
         };
         // exp2i(zl + N_ε) from its bits: 2^e for −1022 ≤ e ≤ 1023, 0 below
         // (e = −1023) and ∞ above (e = 1024).
-        let e = (zl + n_eps).max(-1023).min(1024);
+        let e = (zl + n_eps).clamp(-1023, 1024);
         let unit = if c <= 0.0 || j == k { 0.0 } else { f64::from_bits(((e + 1023) as u64) << 52) * c };
         let old = units[j];
         units[j] = unit;

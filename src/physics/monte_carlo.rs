@@ -663,15 +663,7 @@ impl<M: Model> Engine<M> {
 
     /// Average mass m_a, peak mass m_p (4.28)–(4.29) and largest mass.
     pub fn moments(&self) -> (f64, f64, f64) {
-        let (mut n, mut m1, mut m2, mut max) = (0.0, 0.0, 0.0, 0.0f64);
-        for f in &self.families {
-            let g = f.particles();
-            n += g;
-            m1 += g * f.mass;
-            m2 += g * f.mass * f.mass;
-            max = max.max(f.mass);
-        }
-        (m1 / n, m2 / m1, max)
+        moments_of(self.families.iter().map(|f| (f.particles(), f.mass)))
     }
 
     /// [`Engine::moments`] from the group counts in `counted` and the
@@ -679,15 +671,7 @@ impl<M: Model> Engine<M> {
     /// families), where they equal the families' own.
     fn counted_moments(&self) -> (f64, f64, f64) {
         debug_assert!(self.families.iter().zip(&self.counted).all(|(f, g)| f.groups == *g));
-        let (mut n, mut m1, mut m2, mut max) = (0.0, 0.0, 0.0, 0.0f64);
-        for (key, groups) in self.keys.iter().zip(&self.counted) {
-            let g = groups * exp2i(key.zoom);
-            n += g;
-            m1 += g * key.mass;
-            m2 += g * key.mass * key.mass;
-            max = max.max(key.mass);
-        }
-        (m1 / n, m2 / m1, max)
+        moments_of(self.keys.iter().zip(&self.counted).map(|(key, groups)| (groups * exp2i(key.zoom), key.mass)))
     }
 
     /// Average and peak filling factors φ_a = ⟨φ⟩, φ_p = ⟨mφ⟩/⟨m⟩ (4.28)–(4.29).
@@ -1500,6 +1484,18 @@ impl<M: Model> Engine<M> {
     pub fn mass_spectrum(&self, per_decade: usize) -> Vec<(f64, f64)> {
         spectrum(self.families.iter().map(|f| (f.mass, f.mass * f.particles())), per_decade, self.volume)
     }
+}
+
+/// (m_a, m_p, m_max) of families given as (particles, mass), summed in their order.
+fn moments_of(families: impl Iterator<Item = (f64, f64)>) -> (f64, f64, f64) {
+    let (mut n, mut m1, mut m2, mut max) = (0.0, 0.0, 0.0, 0.0f64);
+    for (g, mass) in families {
+        n += g;
+        m1 += g * mass;
+        m2 += g * mass * mass;
+        max = max.max(mass);
+    }
+    (m1 / n, m2 / m1, max)
 }
 
 /// Mass per volume per ln m in logarithmic bins from (mass, total mass) pairs.

@@ -460,3 +460,31 @@ fn a_row_of_pair_data_equals_its_pairs_one_at_a_time_to_the_bit() {
     }
     assert!(seen.iter().all(|&n| n > 100), "outcomes seen: {seen:?}");
 }
+
+#[test]
+fn a_column_that_grinds_down_keeps_its_mass_with_no_limit_on_a_sequence() {
+    // Erosion at 1 cm/s with f_m = f_φ = 1 (the top of the f_limit range):
+    // a sequence of erosive collisions may then wear a target down below a
+    // monomer, and such a particle, as a projectile, sheds less than a
+    // monomer's mass. Fragments are never lighter than a monomer, so that
+    // mass goes as a fraction of one; it was counted as whole monomers, and
+    // the column gained 5 × 10⁻⁵ of its mass over this setting's run.
+    use grainscope::scene::monte_carlo::common::ColumnParams;
+    let p = ColumnParams {
+        runs: 1,
+        v_eros: 1e-2,
+        f_limit: 1.0,
+        groups_per_decade: 10.0,
+        t_first_yr: 1.0,
+        t_end_yr: 3000.0,
+        snapshots: 2,
+        max_events_millions: 0.03,
+        ..ColumnParams::default()
+    };
+    let cfg = p.config().expect("valid");
+    let run = cfg.run(1, &|_| true).expect("runs");
+    assert!(run.events >= 29_000 && run.tally.erode > 1000, "{} events, {:?}", run.events, run.tally);
+    for s in &run.history {
+        assert!(s.mass_error.abs() < 1e-12, "mass error {:e} at t = {:e} s", s.mass_error, s.t);
+    }
+}

@@ -366,22 +366,29 @@ impl Model for Column {
         let v = self.velocity(target, projectile);
         let (t, p) = (target.body(), projectile.body());
         let m0 = self.monomer.mass();
-        let fragments_of = |mass: f64| (projectile.mass / 10.0).max(m0).min(mass);
+        // Fragments of a tenth of the projectile's mass, at least a monomer,
+        // at most `mass` in all; counted by the mass they are given, so that
+        // `count` of them carry `mass` exactly, also where `mass` is less
+        // than one monomer (`fragment` never makes a lighter one).
+        let fragments_of = |mass: f64| {
+            let fragment = self.fragment((projectile.mass / 10.0).max(m0).min(mass), t);
+            (fragment, mass / fragment.mass)
+        };
         match outcome(t.mass, p.mass, v, &self.thresholds) {
             Outcome::Stick => Collision::Stick { change: self.filling_change(t, p, v) },
             Outcome::Erode { efficiency } => {
                 let eps = self.c1 * efficiency; // erosion_efficiency(c1, v, v_eros)
                 let lost = eps * p.mass;
                 if lost >= t.mass {
-                    let mf = fragments_of(t.mass + p.mass);
-                    return Collision::Shatter { fragment: self.fragment(mf, t), count: (t.mass + p.mass) / mf };
+                    let (fragment, count) = fragments_of(t.mass + p.mass);
+                    return Collision::Shatter { fragment, count };
                 }
-                let mf = fragments_of((1.0 + eps) * p.mass);
-                Collision::Erode { loss: lost, fragment: self.fragment(mf, t), count: (1.0 + eps) * p.mass / mf }
+                let (fragment, count) = fragments_of((1.0 + eps) * p.mass);
+                Collision::Erode { loss: lost, fragment, count }
             }
             Outcome::Fragment => {
-                let mf = fragments_of(t.mass + p.mass);
-                Collision::Shatter { fragment: self.fragment(mf, t), count: (t.mass + p.mass) / mf }
+                let (fragment, count) = fragments_of(t.mass + p.mass);
+                Collision::Shatter { fragment, count }
             }
             Outcome::Bounce => Collision::Bounce,
         }
@@ -909,6 +916,64 @@ mod tests {
                 }
             }
         }
+    }
+
+    /// A column eroding at `v_eros` (m/s), as in the tests below.
+    fn eroding(v_eros: f64) -> Column {
+        Column {
+            env: GasDisk::mmsn(1e-3, 0.01).local(5.0 * AU),
+            monomer: Monomer::ice(),
+            thresholds: Thresholds { v_frag: 80.0, v_eros, v_bounce: f64::INFINITY, r_crit: 1e-2 },
+            c1: 1.0,
+            compaction: Compaction::Full,
+            turbulence: TurbulenceModel::Thesis,
+            epsilon: 0.1,
+            newton: true,
+        }
+    }
+
+    #[test]
+    fn fragments_are_monomers_at_least_and_carry_exactly_the_mass_they_take() {
+        // Projectiles from a tenth of a monomer to 10⁴ monomers, on targets
+        // 100 to 10⁸ times heavier, eroding and shattering: the fragments
+        // of one collision carry the mass that leaves, and none is lighter
+        // than a monomer (sub-monomer fragments were counted as if they
+        // kept their own mass, and created mass).
+        let shattering =
+            Column { thresholds: Thresholds { v_frag: 1e-3, ..eroding(1e-2).thresholds }, ..eroding(1e-2) };
+        let mut seen = (0, 0);
+        for column in [eroding(1e-2), shattering] {
+            let m0 = column.monomer.mass();
+            let family = |mass: f64| {
+                let body = Body { mass, filling: 0.5 };
+                Family { mass, filling: 0.5, groups: 1.0, zoom: 0, props: column.props(body) }
+            };
+            for p in [0.1, 0.5, 0.999, 1.0, 3.0, 1e4].map(|x| x * m0) {
+                for ratio in [1.0, 3.0, 1e2, 1e4, 1e8] {
+                    let (t, q) = (family(ratio * p), family(p));
+                    let (fragment, count, leaves) = match column.collide(&t, &q) {
+                        Collision::Erode { loss, fragment, count } => {
+                            seen.0 += 1;
+                            (fragment, count, loss + p)
+                        }
+                        Collision::Shatter { fragment, count } => {
+                            seen.1 += 1;
+                            (fragment, count, t.mass + p)
+                        }
+                        // Slower pairs stick.
+                        Collision::Stick { .. } | Collision::Bounce => continue,
+                    };
+                    // (m₀ itself may differ in its last bit from one call site to another.)
+                    assert!(fragment.mass >= m0 * (1.0 - 1e-14), "a fragment of {:e} m0", fragment.mass / m0);
+                    let carried = count * fragment.mass;
+                    assert!(
+                        (carried / leaves - 1.0).abs() < 1e-13,
+                        "{carried:e} kg leave as fragments, {leaves:e} kg left"
+                    );
+                }
+            }
+        }
+        assert!(seen.0 > 3 && seen.1 > 0, "(eroding, shattering) cases: {seen:?}");
     }
 
     #[test]

@@ -1344,9 +1344,10 @@ impl<M: Model> Engine<M> {
 
     /// (4.27): adds family k to family t, conserving particles and mass.
     /// Returns whether t's particles moved far enough (10⁻³ in mass or φ
-    /// from those its properties and pair data were computed for) for them
-    /// to be recomputed; otherwise its mass, φ and group count change and the
-    /// cached properties and rates per pair are kept.
+    /// from those its properties and pair data were computed for), or its
+    /// zoom factor changed, for its pair data and rates to be recomputed;
+    /// otherwise its mass, φ and group count change and the cached
+    /// properties and rates per pair are kept.
     fn merge_into(&mut self, k: usize, t: usize) -> bool {
         let a = self.families[k];
         self.merge_particles_into(a.body(), a.particles(), t)
@@ -1358,6 +1359,16 @@ impl<M: Model> Engine<M> {
         let g = count + b.particles();
         let mass = (body.mass * count + b.mass * b.particles()) / g;
         let filling = (body.filling * count + b.filling * b.particles()) / g;
+        // The merged family keeps family t's zoom factor unless that would
+        // give it more groups than a whole mass decade is meant to hold (w*,
+        // 4.26): then it takes the smallest zoom factor that gives it at
+        // most w*, the least that z*(m) (4.26) of a decade holding these
+        // particles would be. A family of a few large bodies (z = 0) that
+        // takes in many particles would otherwise count each as a group,
+        // and multiply the rate of its events, each moving one particle,
+        // by as much until the next re-zoom.
+        let w_star = self.settings.groups_per_decade;
+        let z = if g / exp2i(b.zoom) > w_star { b.zoom.max((g / w_star).log2().ceil() as i32) } else { b.zoom };
         self.tally.merges += 1;
         // Measured from the particles the cached data belong to, so that a
         // run of small merges cannot carry the family away from them.
@@ -1372,13 +1383,15 @@ impl<M: Model> Engine<M> {
         if mass != b.mass {
             self.unlist(t);
         }
-        self.families[t] = Family { mass, filling, groups: g / exp2i(b.zoom), zoom: b.zoom, props };
+        self.families[t] = Family { mass, filling, groups: g / exp2i(z), zoom: z, props };
         self.model.set_lane(&mut self.lanes, t, &self.families[t]);
-        self.keys[t].mass = mass;
+        self.keys[t] = Key { mass, zoom: z };
         if mass != b.mass {
             self.enlist(t);
         }
-        moved
+        // A new zoom factor changes the family's unit rates: they are
+        // computed afresh, with its pair data, once the merges are done.
+        moved || z != b.zoom
     }
 
     /// Sets every family's zoom factor to z*(m) (4.26) and merges families

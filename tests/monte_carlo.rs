@@ -470,20 +470,7 @@ fn a_column_that_grinds_down_keeps_its_mass_with_no_limit_on_a_sequence() {
     // mass goes as a fraction of one; it was counted as whole monomers, and
     // the column gained 9 × 10⁻⁶ of its mass in these 30 000 events
     // (5 × 10⁻⁵ by 1 000 yr).
-    use grainscope::scene::monte_carlo::common::ColumnParams;
-    let p = ColumnParams {
-        runs: 1,
-        v_eros: 1e-2,
-        f_limit: 1.0,
-        groups_per_decade: 10.0,
-        t_first_yr: 1.0,
-        t_end_yr: 3000.0,
-        snapshots: 2,
-        max_events_millions: 0.03,
-        ..ColumnParams::default()
-    };
-    let cfg = p.config().expect("valid");
-    let run = cfg.run(1, &|_| true).expect("runs");
+    let run = grinding_column(0.03).run(1, &|_| true).expect("runs");
     assert!(run.events >= 29_000 && run.tally.erode > 1000, "{} events, {:?}", run.events, run.tally);
     for s in &run.history {
         assert!(s.mass_error.abs() < 1e-12, "mass error {:e} at t = {:e} s", s.mass_error, s.t);
@@ -498,6 +485,16 @@ fn a_column_that_grinds_down_reaches_its_end_time() {
     // next re-zoom every event moved a single particle, and the run spent
     // its 5 million events by 300 yr. A merged family now holds at most w*
     // groups, and the run takes about 130 000.
+    let run = grinding_column(1.0).run(1, &|_| true).expect("runs");
+    assert_eq!(run.ended, "end time", "after {} events", run.events);
+    for s in &run.history {
+        assert!(s.mass_error.abs() < 1e-12, "mass error {:e} at t = {:e} s", s.mass_error, s.t);
+    }
+}
+
+/// The column of the two tests above: erosion at 1 cm/s, f_m = f_φ = 1,
+/// w* = 10, one run to 3 000 yr, at most `millions` million events.
+fn grinding_column(millions: f64) -> RunConfig {
     use grainscope::scene::monte_carlo::common::ColumnParams;
     let p = ColumnParams {
         runs: 1,
@@ -507,12 +504,8 @@ fn a_column_that_grinds_down_reaches_its_end_time() {
         t_first_yr: 1.0,
         t_end_yr: 3000.0,
         snapshots: 2,
-        max_events_millions: 1.0,
+        max_events_millions: millions,
         ..ColumnParams::default()
     };
-    let run = p.config().expect("valid").run(1, &|_| true).expect("runs");
-    assert_eq!(run.ended, "end time", "after {} events", run.events);
-    for s in &run.history {
-        assert!(s.mass_error.abs() < 1e-12, "mass error {:e} at t = {:e} s", s.mass_error, s.t);
-    }
+    p.config().expect("valid")
 }

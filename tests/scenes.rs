@@ -321,3 +321,28 @@ fn what_matters_shared_among_processes_equals_the_undivided_ranking() {
         assert_eq!(shared, whole, "{n} processes");
     }
 }
+
+/// A column's scalars say how many of its runs the event limit stopped, so
+/// that a sweep or a script reading `run --json` sees a run that ended short
+/// of its end time: both runs at 0.01 million events, neither with the end
+/// time within reach.
+#[test]
+fn a_column_counts_its_runs_stopped_by_the_event_limit() {
+    let limited = |millions: &str, t_end_yr: &str| {
+        let mut p = SceneParams::default_for("mass-distribution").expect("scene");
+        for (key, value) in
+            [("runs", "2"), ("max_events_millions", millions), ("t_first_yr", "1"), ("t_end_yr", t_end_yr)]
+        {
+            p.set(key, value).expect(key);
+        }
+        let out = scene::compute(&p, &Progress::default()).expect("computes");
+        let t_end = out.scalar("t_end").expect("t_end");
+        (out.scalar("runs_at_event_limit").expect("scalar"), t_end / 3.156e7)
+    };
+    let (stopped, reached) = limited("0.01", "10000");
+    assert_eq!(stopped, 2.0);
+    assert!(reached < 1e4, "{reached} yr");
+    let (stopped, reached) = limited("1", "10");
+    assert_eq!(stopped, 0.0);
+    assert!((reached - 10.0).abs() < 0.1, "{reached} yr");
+}

@@ -513,6 +513,9 @@ pub struct Sample {
     pub mass_error: f64,
 }
 
+/// How a run that reached its event limit ended ([`Run::ended`]).
+pub const ENDED_AT_EVENT_LIMIT: &str = "event limit";
+
 /// The result of one run.
 #[derive(Debug, Clone, PartialEq, serde::Serialize, serde::Deserialize)]
 pub struct Run {
@@ -712,7 +715,7 @@ impl RunConfig {
         'outer: for (t, is_snapshot) in marks {
             while engine.time() < t {
                 if engine.events() >= self.max_events {
-                    ended = "event limit";
+                    ended = ENDED_AT_EVENT_LIMIT;
                     break 'outer;
                 }
                 if !engine.run_until(t, 250.min(self.max_events - engine.events())) {

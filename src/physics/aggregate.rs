@@ -4,6 +4,7 @@
 
 use super::constants::{G, K_B};
 use super::disk::Local;
+use super::tabled;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -21,7 +22,7 @@ pub struct Aggregate {
 impl Aggregate {
     /// Radius a = a₀ (m/(m₀φ))^{1/3}, m.
     pub fn radius(&self, mono: &Monomer) -> f64 {
-        mono.radius * (self.mass / (mono.mass() * self.filling)).cbrt()
+        mono.radius * tabled::cbrt(self.mass / (mono.mass() * self.filling))
     }
 
     /// Orientation-averaged projected area A (below (4.8) and App. 5.A), m²:
@@ -88,8 +89,8 @@ fn bcca_inverse(n: f64, a0: f64) -> f64 {
         return 1.0 / bcca_area(n, a0) - 1.0 / (PI * a_bcca * a_bcca);
     }
     let ln_n = n.ln();
-    let area = (0.352 + 0.566 * (-0.138 * ln_n).exp()) * n * PI * a0 * a0;
-    let a_bcca = a0 * (BCCA_EXPONENT * ln_n).exp();
+    let area = (0.352 + 0.566 * tabled::exp(-0.138 * ln_n)) * n * PI * a0 * a0;
+    let a_bcca = a0 * tabled::exp(BCCA_EXPONENT * ln_n);
     1.0 / area - 1.0 / (PI * a_bcca * a_bcca)
 }
 
@@ -190,7 +191,7 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
     let (stokes_c, intermediate_c, newton_c) =
         (base - 24f64.ln() + ln_k, base - 24f64.ln() + 0.6 * ln_k, base - 0.44f64.ln());
     let g = |x: f64| {
-        let st = omega * x.exp();
+        let st = omega * tabled::exp(x);
         let v = gas_relative_velocity(eta_vk, st).max(1e-300);
         let re = re_per_v * v;
         let (ln_implied, slope_cd) = if re < 1.0 {
@@ -227,7 +228,7 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
             break;
         }
     }
-    let t = x.exp();
+    let t = tabled::exp(x);
     let re = reynolds(t);
     let regime = if re < 800.0 { DragRegime::Intermediate } else { DragRegime::Newton };
     Stopping { time: t, regime, reynolds: re, iterations }
@@ -532,7 +533,7 @@ impl FixedMass {
     fn new(mono: &Monomer, mass: f64) -> FixedMass {
         let n = (mass / mono.mass()).max(1.0);
         FixedMass {
-            compact_radius: mono.radius * (mass / mono.mass()).cbrt(),
+            compact_radius: mono.radius * tabled::cbrt(mass / mono.mass()),
             bcca_inverse: bcca_inverse(n, mono.radius),
             monomers_area: n * PI * mono.radius * mono.radius,
         }
@@ -541,7 +542,7 @@ impl FixedMass {
     /// Radius (m) and projected area (m²) at ln φ, as [`Aggregate::radius`]
     /// and [`Aggregate::area`].
     fn at(&self, ln_phi: f64) -> (f64, f64) {
-        let a = self.compact_radius * (-ln_phi / 3.0).exp();
+        let a = self.compact_radius * tabled::exp(-ln_phi / 3.0);
         let sphere = PI * a * a;
         if ln_phi >= 0.0 {
             return (a, sphere);
@@ -558,10 +559,23 @@ impl FixedMass {
 /// step's) starts secant steps from there; pass 0 for none (a bracketed
 /// search over 10⁻¹² ≤ φ ≤ 1).
 pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bool, hint: f64) -> f64 {
+    gas_compaction_filling_with(env, mono, mono.rolling_energy(), mass, newton, hint)
+}
+
+/// [`gas_compaction_filling`] with the monomers' rolling energy `e_roll` (J)
+/// given (a caller that has it spares its power law).
+pub(crate) fn gas_compaction_filling_with(
+    env: &Local,
+    mono: &Monomer,
+    e_roll: f64,
+    mass: f64,
+    newton: bool,
+    hint: f64,
+) -> f64 {
     let eta_vk = env.eta_vk;
     let omega = env.omega;
     let shape = FixedMass::new(mono, mass);
-    let strength = (mono.rolling_energy() / mono.radius.powi(3)).ln();
+    let strength = (e_roll / mono.radius.powi(3)).ln();
     let excess = |ln_phi: f64| {
         let (a, area) = shape.at(ln_phi);
         let ts = stopping_time_of(env, mass, a, area, newton).time;
@@ -584,7 +598,7 @@ pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bo
             }
             let e1 = excess(x1);
             if e1 == 0.0 {
-                return x1.exp();
+                return tabled::exp(x1);
             }
             if e1 == e0 {
                 break;
@@ -594,7 +608,7 @@ pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bo
                 break;
             }
             if (x2 - x1).abs() <= 1e-11 {
-                return x2.exp();
+                return tabled::exp(x2);
             }
             (x0, e0, x1) = (x1, e1, x2);
         }
@@ -607,7 +621,7 @@ pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bo
     if e_hi < 0.0 {
         return 1.0;
     }
-    crate::solver::illinois(excess, [lo, hi], [e_lo, e_hi], 1e-10, 200).x().exp()
+    tabled::exp(crate::solver::illinois(excess, [lo, hi], [e_lo, e_hi], 1e-10, 200).x())
 }
 
 /// Filling factor set by self-gravity, φ = (Gm₀²/(πa₀E_roll))^{3/5}(m/m₀)^{2/5} (4.15 = 4.16).
@@ -618,7 +632,7 @@ pub fn gravity_compaction_filling(mono: &Monomer, mass: f64) -> f64 {
 /// [`gravity_compaction_filling`] with the rolling energy `e_roll` (J) given.
 pub(crate) fn gravity_filling(mono: &Monomer, e_roll: f64, mass: f64) -> f64 {
     let m0 = mono.mass();
-    (0.6 * (G * m0 * m0 / (PI * mono.radius * e_roll)).ln() + 0.4 * (mass / m0).ln()).exp().min(1.0)
+    tabled::exp(0.6 * (G * m0 * m0 / (PI * mono.radius * e_roll)).ln() + 0.4 * (mass / m0).ln()).min(1.0)
 }
 
 #[cfg(test)]

@@ -28,7 +28,7 @@
 use super::PhysicsError;
 use super::aggregate::{
     Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants, TurbulenceModel,
-    dust_scale_height, effective_difference, gas_compaction_filling, gas_relative_velocity, gravity_compaction_filling,
+    dust_scale_height, effective_difference, gas_compaction_filling_with, gas_relative_velocity, gravity_filling,
     hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
 };
 use super::column_row::{self, Lanes, Lead, RowConstants};
@@ -186,9 +186,9 @@ impl Column {
         let p_gas =
             gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m / (PI * agg.radius(mono).powi(2) * ts);
         if e_roll / mono.radius.powi(3) * phi.powi(3) < p_gas {
-            phi = phi.max(gas_compaction_filling(&self.env, mono, m, self.newton, phi));
+            phi = phi.max(gas_compaction_filling_with(&self.env, mono, e_roll, m, self.newton, phi));
         }
-        phi.max(gravity_compaction_filling(mono, m)).min(1.0)
+        phi.max(gravity_filling(mono, e_roll, m)).min(1.0)
     }
 
     /// A fragment of mass `m` (at least a monomer) chipped off a target with

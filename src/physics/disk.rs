@@ -2,6 +2,7 @@
 //! the truncated power law of ch. 5 (Eqs. 5.1–5.5). SI units; radii in m.
 
 pub use super::constants::{AU, G, K_B, M_SUN, YEAR};
+use super::tabled;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -61,7 +62,7 @@ impl GasDisk {
                 let sigma0 = mass * M_SUN * (2.0 - slope) / (2.0 * PI * rc * rc);
                 let x = r / rc;
                 let taper = x.powf(2.0 - slope);
-                (sigma0 * x.powf(-slope) * (-taper).exp(), -slope - (2.0 - slope) * taper)
+                (sigma0 * x.powf(-slope) * tabled::exp(-taper), -slope - (2.0 - slope) * taper)
             }
         }
     }

@@ -15,9 +15,10 @@
 
 use super::aggregate::{
     Aggregate, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel, dust_scale_height,
-    gas_compaction_filling, gravity_filling, radial_drift, relative_velocity, stopping_time,
+    gas_compaction_filling_with, gravity_filling, radial_drift, relative_velocity, stopping_time,
 };
 use super::disk::{GasDisk, Local};
+use super::tabled;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -345,7 +346,7 @@ impl GrowthModel {
         let (mut lands, mut leaves) = (false, false);
         if self.midpoint && dt > 0.0 {
             let half = 0.5 * dt;
-            let m_h = if halted { m } else { m * (half / t_grow).exp() };
+            let m_h = if halted { m } else { m * tabled::exp(half / t_grow) };
             let r_h = if self.drift { r - v_drift * half } else { r };
             if r_h > 0.0 {
                 let phi_h = if halted { phi } else { self.filling(s.onset, m, phi, v, m_h, r_h, &env).phi };
@@ -358,7 +359,7 @@ impl GrowthModel {
             }
             // End the step where the particle reaches the planetesimal mass
             // or the inner edge, not beyond.
-            if !halted && m * (dt / growth_time).exp() >= self.planetesimal_mass {
+            if !halted && m * tabled::exp(dt / growth_time) >= self.planetesimal_mass {
                 dt = growth_time * (self.planetesimal_mass / m).ln();
                 lands = true;
             }
@@ -380,9 +381,9 @@ impl GrowthModel {
         let m_new = if lands && !leaves {
             self.planetesimal_mass
         } else if self.midpoint {
-            (m * (dt / growth_time).exp()).min(self.planetesimal_mass)
+            (m * tabled::exp(dt / growth_time)).min(self.planetesimal_mass)
         } else {
-            m * (dt / growth_time).exp()
+            m * tabled::exp(dt / growth_time)
         };
         let next = self.filling(s.onset, m, phi, v, m_new, s.r, &env);
         if next.onset != s.onset {
@@ -432,7 +433,7 @@ impl GrowthModel {
             }
             None => phi_hs,
             Some((mc, phic, ec)) => {
-                (phic * (0.3 * (e_per_n / ec).ln() - 0.2 * (n / (mc / m0)).ln()).exp()).max(phi_hs).min(1.0)
+                (phic * tabled::exp(0.3 * (e_per_n / ec).ln() - 0.2 * (n / (mc / m0)).ln())).max(phi_hs).min(1.0)
             }
         };
         if self.porosity != Porosity::Full {
@@ -447,7 +448,7 @@ impl GrowthModel {
             let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
                 / (PI * trial.radius(&mono).powi(2) * ts);
             let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
-            if p_c < p_gas { gas_compaction_filling(&env2, &mono, m_new, self.newton, phi) } else { 0.0 }
+            if p_c < p_gas { gas_compaction_filling_with(&env2, &mono, e_roll, m_new, self.newton, phi) } else { 0.0 }
         };
         let grav = gravity_filling(&mono, e_roll, m_new);
         out.gas = gas > collisional && gas >= grav;

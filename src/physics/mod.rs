@@ -21,6 +21,7 @@ pub mod monomer;
 pub mod monte_carlo;
 pub mod plasticity;
 pub mod rolling;
+pub mod tabled;
 mod wide;
 
 /// Error for physically meaningless input to a model function.

@@ -343,8 +343,8 @@ async function everything() {
   // whole computation, from the start of the page's job (its preview
   // included) to the result, is timed against the native binary's whole
   // process on the same machine. The aim is 1.5×; here, on two cores with
-  // no GPU, it is about 1.8×: the WebAssembly batch model is 1.6-1.8×
-  // slower than native on one core (its logarithms and exponentials), and
+  // no GPU, it is about 1.55×: the WebAssembly batch model is slower than
+  // native on one core (its logarithms and powers are Rust's libm), and
   // the frames drawn in software take the GPU process 50-250 ms of a core
   // each, so that the page, seeing SwiftShader, redraws every 2 s while
   // the workers compute (every 400 ms it took 2.1×). One worker alone

@@ -325,7 +325,8 @@ fn what_matters_shared_among_processes_equals_the_undivided_ranking() {
 /// A column's scalars say how many of its runs the event limit stopped, so
 /// that a sweep or a script reading `run --json` sees a run that ended short
 /// of its end time: both runs at 0.01 million events, neither with the end
-/// time within reach.
+/// time within reach; and the erosion balance counts the runs of its three
+/// thresholds together.
 #[test]
 fn a_column_counts_its_runs_stopped_by_the_event_limit() {
     let limited = |millions: &str, t_end_yr: &str| {
@@ -345,4 +346,11 @@ fn a_column_counts_its_runs_stopped_by_the_event_limit() {
     let (stopped, reached) = limited("1", "10");
     assert_eq!(stopped, 0.0);
     assert!((reached - 10.0).abs() < 0.1, "{reached} yr");
+    // The erosion balance counts the runs of its three thresholds together.
+    let mut p = SceneParams::default_for("erosion-balance").expect("scene");
+    for (key, value) in [("runs", "1"), ("max_events_millions", "0.01")] {
+        p.set(key, value).expect(key);
+    }
+    let out = scene::compute(&p, &Progress::default()).expect("computes");
+    assert_eq!(out.scalar("runs_at_event_limit"), Some(3.0));
 }

@@ -285,13 +285,19 @@ pub fn summary(runs: &[Run]) -> Vec<Scalar> {
         Scalar { key: "events", label: "group events per run", value: mean(&|s| s.events as f64), unit: "" },
         Scalar { key: "families", label: "families", value: mean(&|s| s.families as f64), unit: "" },
         Scalar { key: "mass_error", label: "largest |ΔM|/M", value: worst_mass, unit: "" },
-        Scalar {
-            key: "runs_at_event_limit",
-            label: "runs stopped by the event limit",
-            value: runs.iter().filter(|r| r.ended == crate::physics::coagulation::ENDED_AT_EVENT_LIMIT).count() as f64,
-            unit: "",
-        },
+        at_event_limit(runs.iter()),
     ]
+}
+
+/// The scalar `runs_at_event_limit`: how many of `runs` the event limit
+/// stopped (their scalars are where they stopped).
+pub fn at_event_limit<'a>(runs: impl Iterator<Item = &'a Run>) -> Scalar {
+    Scalar {
+        key: "runs_at_event_limit",
+        label: "runs stopped by the event limit",
+        value: runs.filter(|r| r.ended == crate::physics::coagulation::ENDED_AT_EVENT_LIMIT).count() as f64,
+        unit: "",
+    }
 }
 
 /// Notes on how the runs ended.

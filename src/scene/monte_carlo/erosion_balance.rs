@@ -194,6 +194,7 @@ fn output(p: &Params, sets: &[(f64, Arc<Vec<Run>>)]) -> SceneOutput {
             scalars.push(Scalar { key: keys[k].2, label: "lowest ζ", value: zmin, unit: "" });
         }
     }
+    scalars.push(super::common::at_event_limit(sets.iter().flat_map(|(_, runs)| runs.iter())));
     // ζ = 0, where gains and losses balance, across the Stokes numbers
     // reached: the axis spans growth and erosion from the first live view on.
     let reached = sets.iter().flat_map(|(_, runs)| runs.iter()).flat_map(|r| r.history.iter()).map(|s| s.stokes_max);

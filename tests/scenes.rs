@@ -338,7 +338,7 @@ fn a_column_counts_its_runs_stopped_by_the_event_limit() {
         }
         let out = scene::compute(&p, &Progress::default()).expect("computes");
         let t_end = out.scalar("t_end").expect("t_end");
-        (out.scalar("runs_at_event_limit").expect("scalar"), t_end / 3.156e7)
+        (out.scalar("runs_at_event_limit").expect("scalar"), t_end / grainscope::physics::constants::YEAR)
     };
     let (stopped, reached) = limited("0.01", "10000");
     assert_eq!(stopped, 2.0);

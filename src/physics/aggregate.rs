@@ -559,15 +559,41 @@ impl FixedMass {
 /// step's) starts secant steps from there; pass 0 for none (a bracketed
 /// search over 10⁻¹² ≤ φ ≤ 1).
 pub fn gas_compaction_filling(env: &Local, mono: &Monomer, mass: f64, newton: bool, hint: f64) -> f64 {
-    gas_compaction_filling_with(env, mono, mono.rolling_energy(), mass, newton, hint)
+    gas_compaction_filling_with(env, mono, &CompactionConstants::of(mono), mass, newton, hint)
 }
 
-/// [`gas_compaction_filling`] with the monomers' rolling energy `e_roll` (J)
-/// given (a caller that has it spares its power law).
+/// What the monomers fix in the compaction laws (4.15)–(4.16): the rolling
+/// energy and the logarithms built on it, taken once for the many aggregates
+/// of a run (each is a power law or a logarithm an aggregate would otherwise
+/// repeat).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub(crate) struct CompactionConstants {
+    /// Rolling energy E_roll, J.
+    pub e_roll: f64,
+    /// ln(E_roll/a₀³): the logarithm of the compressive strength at φ = 1 (Pa).
+    strength: f64,
+    /// (3/5) ln(Gm₀²/(πa₀E_roll)): the self-gravity filling factor's
+    /// logarithm at one monomer's mass.
+    gravity: f64,
+}
+
+impl CompactionConstants {
+    /// The constants of monomers `mono`.
+    pub(crate) fn of(mono: &Monomer) -> CompactionConstants {
+        let (m0, e_roll) = (mono.mass(), mono.rolling_energy());
+        CompactionConstants {
+            e_roll,
+            strength: (e_roll / mono.radius.powi(3)).ln(),
+            gravity: 0.6 * (G * m0 * m0 / (PI * mono.radius * e_roll)).ln(),
+        }
+    }
+}
+
+/// [`gas_compaction_filling`] with the monomers' constants given.
 pub(crate) fn gas_compaction_filling_with(
     env: &Local,
     mono: &Monomer,
-    e_roll: f64,
+    constants: &CompactionConstants,
     mass: f64,
     newton: bool,
     hint: f64,
@@ -575,7 +601,7 @@ pub(crate) fn gas_compaction_filling_with(
     let eta_vk = env.eta_vk;
     let omega = env.omega;
     let shape = FixedMass::new(mono, mass);
-    let strength = (e_roll / mono.radius.powi(3)).ln();
+    let strength = constants.strength;
     let excess = |ln_phi: f64| {
         let (a, area) = shape.at(ln_phi);
         let ts = stopping_time_of(env, mass, a, area, newton).time;
@@ -626,13 +652,12 @@ pub(crate) fn gas_compaction_filling_with(
 
 /// Filling factor set by self-gravity, φ = (Gm₀²/(πa₀E_roll))^{3/5}(m/m₀)^{2/5} (4.15 = 4.16).
 pub fn gravity_compaction_filling(mono: &Monomer, mass: f64) -> f64 {
-    gravity_filling(mono, mono.rolling_energy(), mass)
+    gravity_filling(mono, &CompactionConstants::of(mono), mass)
 }
 
-/// [`gravity_compaction_filling`] with the rolling energy `e_roll` (J) given.
-pub(crate) fn gravity_filling(mono: &Monomer, e_roll: f64, mass: f64) -> f64 {
-    let m0 = mono.mass();
-    tabled::exp(0.6 * (G * m0 * m0 / (PI * mono.radius * e_roll)).ln() + 0.4 * (mass / m0).ln()).min(1.0)
+/// [`gravity_compaction_filling`] with the monomers' constants given.
+pub(crate) fn gravity_filling(mono: &Monomer, constants: &CompactionConstants, mass: f64) -> f64 {
+    tabled::exp(constants.gravity + 0.4 * (mass / mono.mass()).ln()).min(1.0)
 }
 
 #[cfg(test)]

@@ -784,6 +784,7 @@ fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resu
         model.thresholds.v_frag = 0.0;
     }
     let smoothing = cfg.density_smoothing();
+    let stepper = model.stepper();
     let mut states: Vec<GrowthState> = radii.iter().map(|&r| model.start(r)).collect();
     let mut fates = vec![Fate::Dust; n];
     let mut ranks = Ranks::new(&radii, &masses, cfg.domain());
@@ -826,7 +827,7 @@ fn run_here(cfg: &BatchConfig, cancelled: &(dyn Fn(f64) -> bool + Sync)) -> Resu
             .map(|&i| {
                 let sigma = |t: f64, r: f64| ranks.density(i, t, r, smoothing);
                 let mut s = states[i].clone();
-                let (point, ended) = model.step(&mut s, Some(&sigma), cfg.t_end);
+                let (point, ended) = stepper.step(&mut s, Some(&sigma), cfg.t_end);
                 (s, point, ended)
             })
             .collect();

@@ -27,9 +27,10 @@
 
 use super::PhysicsError;
 use super::aggregate::{
-    Aggregate, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants, TurbulenceModel,
-    dust_scale_height, effective_difference, gas_compaction_filling_with, gas_relative_velocity, gravity_filling,
-    hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity, stopping_time,
+    Aggregate, CompactionConstants, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants,
+    TurbulenceModel, dust_scale_height, effective_difference, gas_compaction_filling_with, gas_relative_velocity,
+    gravity_filling, hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity,
+    stopping_time,
 };
 use super::column_row::{self, Lanes, Lead, RowConstants};
 use super::constants::K_B;
@@ -179,16 +180,17 @@ impl Column {
     pub fn external_compaction(&self, body: Body) -> f64 {
         let mono = &self.monomer;
         let (m, mut phi) = (body.mass, body.filling);
-        let e_roll = mono.rolling_energy();
+        let constants = CompactionConstants::of(mono);
+        let e_roll = constants.e_roll;
         // Gas ram pressure: solve only if it exceeds the strength P_c = E_roll φ³/a₀³ (4.15).
         let agg = Aggregate { mass: m, filling: phi };
         let ts = stopping_time(&self.env, mono, &agg, self.newton).time;
         let p_gas =
             gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m / (PI * agg.radius(mono).powi(2) * ts);
         if e_roll / mono.radius.powi(3) * phi.powi(3) < p_gas {
-            phi = phi.max(gas_compaction_filling_with(&self.env, mono, e_roll, m, self.newton, phi));
+            phi = phi.max(gas_compaction_filling_with(&self.env, mono, &constants, m, self.newton, phi));
         }
-        phi.max(gravity_filling(mono, e_roll, m)).min(1.0)
+        phi.max(gravity_filling(mono, &constants, m)).min(1.0)
     }
 
     /// A fragment of mass `m` (at least a monomer) chipped off a target with

@@ -14,8 +14,8 @@
 //! closed forms φ ∝ m^{-1/8}, const and m^{-1/5}.
 
 use super::aggregate::{
-    Aggregate, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel, dust_scale_height,
-    gas_compaction_filling_with, gravity_filling, radial_drift, relative_velocity, stopping_time,
+    Aggregate, CompactionConstants, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel,
+    dust_scale_height, gas_compaction_filling_with, gravity_filling, radial_drift, relative_velocity, stopping_time,
 };
 use super::disk::{GasDisk, Local};
 use super::tabled;
@@ -85,6 +85,27 @@ pub struct GrowthModel {
     /// entered. False: the thesis's first-order scheme (rates at the start of
     /// the step, the held value where a step first lands in the regime).
     pub midpoint: bool,
+}
+
+/// A [`GrowthModel`] ready for a run of steps: the constants its monomers
+/// fix in the compaction laws (the rolling energy and logarithms built on
+/// it) are taken once, where each step would otherwise take them twice.
+#[derive(Debug, Clone, Copy)]
+pub struct Stepper<'a> {
+    model: &'a GrowthModel,
+    compaction: CompactionConstants,
+}
+
+impl Stepper<'_> {
+    /// [`GrowthModel::step`], with the same result to the last bit.
+    pub fn step(
+        &self,
+        s: &mut GrowthState,
+        sigma_d: Option<&dyn Fn(f64, f64) -> f64>,
+        t_until: f64,
+    ) -> (TrackPoint, Option<Stop>) {
+        self.model.step_with(&self.compaction, s, sigma_d, t_until)
+    }
 }
 
 /// Growth and drift rates of a particle at one place.
@@ -227,8 +248,12 @@ impl GrowthModel {
     /// factor `phi` at radius `r` (m) in dust of surface density `sigma_d`
     /// (kg m⁻²; `None`: the disk's own).
     fn rates(&self, m: f64, phi: f64, r: f64, sigma_d: Option<f64>) -> Rates {
+        self.rates_in(self.disk.local(r), m, phi, sigma_d)
+    }
+
+    /// [`GrowthModel::rates`] in the environment `env` (the disk's at the radius).
+    fn rates_in(&self, env: Local, m: f64, phi: f64, sigma_d: Option<f64>) -> Rates {
         let mono = self.monomer;
-        let env = self.disk.local(r);
         let agg = Aggregate { mass: m, filling: phi };
         let stopping = stopping_time(&env, &mono, &agg, self.newton);
         let st = stopping.time * env.omega;
@@ -252,6 +277,23 @@ impl GrowthModel {
     /// the state is then final).
     pub fn step(
         &self,
+        s: &mut GrowthState,
+        sigma_d: Option<&dyn Fn(f64, f64) -> f64>,
+        t_until: f64,
+    ) -> (TrackPoint, Option<Stop>) {
+        self.stepper().step(s, sigma_d, t_until)
+    }
+
+    /// The model ready for a run of steps ([`Stepper::step`]): what its
+    /// monomers fix in the compaction laws is taken once, not at every step.
+    pub fn stepper(&self) -> Stepper<'_> {
+        Stepper { model: self, compaction: CompactionConstants::of(&self.monomer) }
+    }
+
+    /// [`GrowthModel::step`] with the monomers' compaction constants given.
+    fn step_with(
+        &self,
+        constants: &CompactionConstants,
         s: &mut GrowthState,
         sigma_d: Option<&dyn Fn(f64, f64) -> f64>,
         t_until: f64,
@@ -349,8 +391,10 @@ impl GrowthModel {
             let m_h = if halted { m } else { m * tabled::exp(half / t_grow) };
             let r_h = if self.drift { r - v_drift * half } else { r };
             if r_h > 0.0 {
-                let phi_h = if halted { phi } else { self.filling(s.onset, m, phi, v, m_h, r_h, &env).phi };
-                let mid = self.rates(m_h, phi_h, r_h, sigma_d.map(|f| f(s.t + half, r_h)));
+                // The disk at the middle, for its filling factor and rates.
+                let env_h = if self.drift { self.disk.local(r_h) } else { env };
+                let phi_h = if halted { phi } else { self.filling(constants, s.onset, m, phi, v, m_h, &env_h).phi };
+                let mid = self.rates_in(env_h, m_h, phi_h, sigma_d.map(|f| f(s.t + half, r_h)));
                 growth_time = match s.frozen_t_grow {
                     Some(frozen) if mid.first_regime => frozen,
                     _ => mid.t_grow,
@@ -385,7 +429,9 @@ impl GrowthModel {
         } else {
             m * tabled::exp(dt / growth_time)
         };
-        let next = self.filling(s.onset, m, phi, v, m_new, s.r, &env);
+        // The disk where the step ends (only gas compaction reads it).
+        let env_new = if self.drift && self.porosity == Porosity::Full { self.disk.local(s.r) } else { env };
+        let next = self.filling(constants, s.onset, m, phi, v, m_new, &env_new);
         if next.onset != s.onset {
             s.markers.collisional = Some([m, phi]);
         }
@@ -402,23 +448,23 @@ impl GrowthModel {
     }
 
     /// The filling factor after growth from mass `m` (kg, filling factor
-    /// `phi`, same-size velocity `v`, m s⁻¹) to `m_new` at radius `r_new` (m),
-    /// given the collisional compaction onset so far; `env` is the
-    /// environment at the start, used when the particle does not drift.
+    /// `phi`, same-size velocity `v`, m s⁻¹) to `m_new` in the environment
+    /// `env_new` (the disk's where the step ends), given the collisional
+    /// compaction onset so far and the monomers' compaction constants.
     #[allow(clippy::too_many_arguments)]
     fn filling(
         &self,
+        constants: &CompactionConstants,
         onset: Option<(f64, f64, f64)>,
         m: f64,
         phi: f64,
         v: f64,
         m_new: f64,
-        r_new: f64,
-        env: &super::disk::Local,
+        env_new: &Local,
     ) -> Filling {
         let mono = self.monomer;
         let m0 = mono.mass();
-        let e_roll = mono.rolling_energy();
+        let e_roll = constants.e_roll;
         let n = m_new / m0;
         let phi_hs = (1.0 / n.sqrt()).min(1.0);
         let mut out = Filling { phi: 1.0, onset, gas: false, gravity: false };
@@ -440,17 +486,20 @@ impl GrowthModel {
             out.phi = collisional;
             return out;
         }
-        let env2 = if self.drift { self.disk.local(r_new) } else { *env };
         let gas = {
             // Only solve for the gas-compaction φ when the gas can compress.
             let trial = Aggregate { mass: m_new, filling: collisional };
-            let ts = stopping_time(&env2, &mono, &trial, self.newton).time;
-            let p_gas = super::aggregate::gas_relative_velocity(env2.eta_vk, env2.omega * ts) * m_new
+            let ts = stopping_time(env_new, &mono, &trial, self.newton).time;
+            let p_gas = super::aggregate::gas_relative_velocity(env_new.eta_vk, env_new.omega * ts) * m_new
                 / (PI * trial.radius(&mono).powi(2) * ts);
             let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
-            if p_c < p_gas { gas_compaction_filling_with(&env2, &mono, e_roll, m_new, self.newton, phi) } else { 0.0 }
+            if p_c < p_gas {
+                gas_compaction_filling_with(env_new, &mono, constants, m_new, self.newton, phi)
+            } else {
+                0.0
+            }
         };
-        let grav = gravity_filling(&mono, e_roll, m_new);
+        let grav = gravity_filling(&mono, constants, m_new);
         out.gas = gas > collisional && gas >= grav;
         out.gravity = grav > collisional && grav > gas;
         out.phi = collisional.max(gas).max(grav).min(1.0);
@@ -487,12 +536,13 @@ impl GrowthModel {
 
     /// Runs a track from monomers at radius `r0` (m) for `t_end` seconds.
     pub fn run(&self, r0: f64, t_end: f64) -> Track {
+        let stepper = self.stepper();
         let mut s = self.start(r0);
         let mut points = Vec::new();
         let mut stop = Stop::Steps;
         for _ in 0..200_000 {
             let done = s.t >= t_end;
-            let (point, ended) = self.step(&mut s, None, t_end);
+            let (point, ended) = stepper.step(&mut s, None, t_end);
             points.push(point);
             if let Some(e) = ended {
                 stop = e;

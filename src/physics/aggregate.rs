@@ -35,7 +35,13 @@ impl Aggregate {
     /// A solid grain (φ = 1) has πa²; a hit-and-stick aggregate has a third
     /// (10⁴ monomers) to a seventh (10⁸) of it, which is what sets its stopping time while it is fluffy.
     pub fn area(&self, mono: &Monomer) -> f64 {
-        let sphere = PI * self.radius(mono).powi(2);
+        self.area_at_radius(mono, self.radius(mono))
+    }
+
+    /// [`Aggregate::area`] given the aggregate's radius `a` (m, as
+    /// [`Aggregate::radius`] computes it).
+    fn area_at_radius(&self, mono: &Monomer, a: f64) -> f64 {
+        let sphere = PI * a.powi(2);
         if self.filling >= 1.0 {
             // A solid grain (φ = 1): its geometric cross-section.
             return sphere;
@@ -152,7 +158,14 @@ fn gas_relative_velocity_slope(st: f64) -> f64 {
 /// fixed point is found by Newton's method in log t_s, kept inside a bracket,
 /// which converges for every mass.
 pub fn stopping_time(env: &Local, mono: &Monomer, agg: &Aggregate, newton: bool) -> Stopping {
-    stopping_time_of(env, agg.mass, agg.radius(mono), agg.area(mono), newton)
+    stopping_time_and_radius(env, mono, agg, newton).0
+}
+
+/// [`stopping_time`] with the aggregate's radius (m, [`Aggregate::radius`]),
+/// which it computes on the way.
+pub(crate) fn stopping_time_and_radius(env: &Local, mono: &Monomer, agg: &Aggregate, newton: bool) -> (Stopping, f64) {
+    let a = agg.radius(mono);
+    (stopping_time_of(env, agg.mass, a, agg.area_at_radius(mono, a), newton), a)
 }
 
 /// [`stopping_time`] of a particle of mass `mass` (kg), radius `a` (m) and
@@ -203,8 +216,11 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
         };
         (ln_implied - x, -(1.0 + slope_cd) * gas_relative_velocity_slope(st) - 1.0)
     };
-    let floor = (t_st * 1e-30).ln();
-    let (mut lo, mut hi) = (floor, t_st.ln());
+    // The bracket's lower end, 30 decades below the Stokes time: never
+    // reached, since no drag coefficient exceeds Stokes's by more than Re/55.
+    let ln_t_st = t_st.ln();
+    let floor = ln_t_st - 30.0 * std::f64::consts::LN_10;
+    let (mut lo, mut hi) = (floor, ln_t_st);
     let mut x = hi;
     let mut iterations = 0;
     while iterations < 100 {

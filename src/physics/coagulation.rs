@@ -30,7 +30,7 @@ use super::aggregate::{
     Aggregate, CompactionConstants, DriftTerms, Monomer, Outcome, Particle, Thresholds, TurbulenceConstants,
     TurbulenceModel, dust_scale_height, effective_difference, gas_compaction_filling_with, gas_relative_velocity,
     gravity_filling, hit_and_stick_growth, hit_and_stick_volume, outcome, radial_drift, relative_velocity,
-    stopping_time,
+    stopping_time, stopping_time_and_radius,
 };
 use super::column_row::{self, Lanes, Lead, RowConstants};
 use super::constants::K_B;
@@ -184,9 +184,9 @@ impl Column {
         let e_roll = constants.e_roll;
         // Gas ram pressure: solve only if it exceeds the strength P_c = E_roll φ³/a₀³ (4.15).
         let agg = Aggregate { mass: m, filling: phi };
-        let ts = stopping_time(&self.env, mono, &agg, self.newton).time;
-        let p_gas =
-            gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m / (PI * agg.radius(mono).powi(2) * ts);
+        let (stopping, a) = stopping_time_and_radius(&self.env, mono, &agg, self.newton);
+        let ts = stopping.time;
+        let p_gas = gas_relative_velocity(self.env.eta_vk, self.env.omega * ts) * m / (PI * a.powi(2) * ts);
         if e_roll / mono.radius.powi(3) * phi.powi(3) < p_gas {
             phi = phi.max(gas_compaction_filling_with(&self.env, mono, &constants, m, self.newton, phi));
         }
@@ -302,10 +302,11 @@ impl Model for Column {
 
     fn props(&self, body: Body) -> Props {
         let agg = Aggregate { mass: body.mass, filling: body.filling };
-        let st = stopping_time(&self.env, &self.monomer, &agg, self.newton).time * self.env.omega;
+        let (stopping, radius) = stopping_time_and_radius(&self.env, &self.monomer, &agg, self.newton);
+        let st = stopping.time * self.env.omega;
         let scale_height = dust_scale_height(self.env.alpha, st) * self.env.scale_height;
         Props {
-            radius: agg.radius(&self.monomer),
+            radius,
             stokes: st,
             scale_height,
             drift: DriftTerms::of(&self.env, st),

@@ -16,6 +16,7 @@
 use super::aggregate::{
     Aggregate, CompactionConstants, Monomer, Particle, R_CRIT, RelativeVelocity, Thresholds, TurbulenceModel,
     dust_scale_height, gas_compaction_filling_with, gravity_filling, radial_drift, relative_velocity, stopping_time,
+    stopping_time_and_radius,
 };
 use super::disk::{GasDisk, Local};
 use super::tabled;
@@ -232,6 +233,7 @@ impl GrowthModel {
             previous: None,
             markers: Markers::default(),
             halted_by: None,
+            disk_here: None,
         }
     }
 
@@ -255,9 +257,8 @@ impl GrowthModel {
     fn rates_in(&self, env: Local, m: f64, phi: f64, sigma_d: Option<f64>) -> Rates {
         let mono = self.monomer;
         let agg = Aggregate { mass: m, filling: phi };
-        let stopping = stopping_time(&env, &mono, &agg, self.newton);
+        let (stopping, a) = stopping_time_and_radius(&env, &mono, &agg, self.newton);
         let st = stopping.time * env.omega;
-        let a = agg.radius(&mono);
         let me = Particle { mass: m, stokes: st };
         let rv = self.relative_velocity(&env, &me, &me);
         let h_d = dust_scale_height(env.alpha, st) * env.scale_height;
@@ -301,7 +302,12 @@ impl GrowthModel {
         let mono = self.monomer;
         let m0 = mono.mass();
         let (m, phi, r) = (s.mass, s.filling, s.r);
-        let start = self.rates(m, phi, r, sigma_d.map(|f| f(s.t, r)));
+        // The disk here, kept from the step that ended here if there was one.
+        let here = match s.disk_here {
+            Some(env) if env.r.to_bits() == r.to_bits() => env,
+            _ => self.disk.local(r),
+        };
+        let start = self.rates_in(here, m, phi, sigma_d.map(|f| f(s.t, r)));
         let Rates { env, stopping, stokes: st, radius: a, v_rel: rv, first_regime, v_drift, .. } = start;
         let mono_particle = Particle {
             mass: m0,
@@ -444,6 +450,7 @@ impl GrowthModel {
         s.onset = next.onset;
         s.filling = next.phi;
         s.mass = m_new;
+        s.disk_here = Some(env_new);
         (point, None)
     }
 
@@ -489,9 +496,10 @@ impl GrowthModel {
         let gas = {
             // Only solve for the gas-compaction φ when the gas can compress.
             let trial = Aggregate { mass: m_new, filling: collisional };
-            let ts = stopping_time(env_new, &mono, &trial, self.newton).time;
+            let (stopping, a) = stopping_time_and_radius(env_new, &mono, &trial, self.newton);
+            let ts = stopping.time;
             let p_gas = super::aggregate::gas_relative_velocity(env_new.eta_vk, env_new.omega * ts) * m_new
-                / (PI * trial.radius(&mono).powi(2) * ts);
+                / (PI * a.powi(2) * ts);
             let p_c = e_roll / mono.radius.powi(3) * collisional.powi(3);
             if p_c < p_gas {
                 gas_compaction_filling_with(env_new, &mono, constants, m_new, self.newton, phi)
@@ -578,12 +586,43 @@ pub struct GrowthState {
     pub markers: Markers,
     /// Why growth was last halted.
     pub halted_by: Option<&'static str>,
+    /// The disk where a step ended, where the full model computed it: the
+    /// next step starts there (kept only while [`GrowthState::r`] is its radius).
+    disk_here: Option<Local>,
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::physics::constants::{AU, YEAR};
+
+    /// A step that starts where the last one ended takes the disk that step
+    /// computed there: a drifting track of the full model, which fragmentation
+    /// halts (and a halted step drifts without computing the disk where it
+    /// ends), is the same to the last bit when every step computes its disk
+    /// afresh.
+    #[test]
+    fn the_disk_kept_between_steps_changes_no_step() {
+        let mut model = GrowthModel::chapter4(Porosity::Full);
+        model.drift = true;
+        model.thresholds.v_frag = 5.0;
+        let stepper = model.stepper();
+        let (mut kept, mut fresh) = (model.start(20.0 * AU), model.start(20.0 * AU));
+        let (mut steps, mut reused) = (0, 0);
+        loop {
+            fresh.disk_here = None;
+            reused += usize::from(kept.disk_here.is_some_and(|e| e.r.to_bits() == kept.r.to_bits()));
+            let (a, b) = (stepper.step(&mut kept, None, 1e6 * YEAR), stepper.step(&mut fresh, None, 1e6 * YEAR));
+            assert_eq!(a, b, "step {steps}");
+            assert_eq!((kept.t, kept.r, kept.mass, kept.filling), (fresh.t, fresh.r, fresh.mass, fresh.filling));
+            steps += 1;
+            if a.1.is_some() || kept.t >= 1e6 * YEAR || steps == 100_000 {
+                break;
+            }
+        }
+        let halted = kept.halted_by.is_some();
+        assert!(halted && steps > 100 && reused + 1 >= steps / 2, "{reused} of {steps} steps took the kept disk");
+    }
 
     #[test]
     fn local_perfect_sticking_reaches_planetesimal_mass() {

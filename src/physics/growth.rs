@@ -587,7 +587,8 @@ pub struct GrowthState {
     /// Why growth was last halted.
     pub halted_by: Option<&'static str>,
     /// The disk where a step ended, where the full model computed it: the
-    /// next step starts there (kept only while [`GrowthState::r`] is its radius).
+    /// next step starts there (kept only while [`GrowthState::r`] is its
+    /// radius; a state is stepped by the model that started it).
     disk_here: Option<Local>,
 }
 

@@ -12,17 +12,21 @@ target="${CARGO_TARGET_DIR:-target}"
 # `release` for a quicker build while working on the page.
 profile="${GRAINSCOPE_WEB_PROFILE:-web}"
 
-# The wasm-bindgen tool must be the version of the library in Cargo.lock.
+# The bindings' tool, web/bindgen: wasm-bindgen's library at the exact
+# version of the `wasm-bindgen` crate in Cargo.lock (its own lock file pins
+# it; the two must agree). It compiles in about a minute, half of what
+# `cargo install wasm-bindgen-cli` takes, since it leaves out the command's
+# test runner, and it is built once per cargo target.
 version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)
-if ! wasm-bindgen --version 2>/dev/null | grep -qx "wasm-bindgen $version"; then
-    echo "== installing wasm-bindgen-cli $version"
-    if ! cargo install wasm-bindgen-cli --version "$version" --locked; then
-        # A registry mirror may lack a crate version the tool's own lock file
-        # names; the tool itself is still the exact version.
-        echo "(its locked dependencies are not all in this registry; resolving them afresh)" >&2
-        cargo install wasm-bindgen-cli --version "$version"
-    fi
+tool_version=$(awk '/^name = "wasm-bindgen-cli-support"$/ { getline; gsub(/"/, "", $3); print $3; exit }' web/bindgen/Cargo.lock)
+if [ "$version" != "$tool_version" ]; then
+    echo "web/bindgen uses wasm-bindgen-cli-support $tool_version, but the page links wasm-bindgen $version:" \
+        "set web/bindgen/Cargo.toml to =$version and run \`cargo update --manifest-path web/bindgen/Cargo.toml\`" >&2
+    exit 1
 fi
+echo "== the bindings' tool (web/bindgen, wasm-bindgen $version)"
+CARGO_TARGET_DIR="$target" cargo build --release --locked --manifest-path web/bindgen/Cargo.toml
+bindgen="$target/release/grainscope-bindgen"
 if command -v rustup >/dev/null; then
     rustup target add wasm32-unknown-unknown >/dev/null
 fi
@@ -40,8 +44,7 @@ cargo build -p grainscope-web --profile "$profile" --target wasm32-unknown-unkno
 echo "== web/dist"
 staging=$(mktemp -d web/dist.XXXXXX)
 trap 'rm -rf "$staging"' EXIT
-wasm-bindgen --target web --no-typescript --out-dir "$staging" --out-name grainscope \
-    "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm"
+"$bindgen" "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm" "$staging"
 # Binaryen's optimiser (npm package `binaryen`, pinned in web/package-lock.json;
 # Debian's binaryen is too old for this module), for speed (-O3): the module
 # is 13 % smaller than the compiler's, and Fig. 5.9's formation zone computes

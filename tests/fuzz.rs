@@ -3,8 +3,11 @@
 //! whatever is accepted is valid and round-trips; whatever is rejected
 //! changes nothing (no parameter, no existing file, no temporary left).
 //!
-//! Each property runs `PROPTEST_CASES` cases (proptest's own variable;
-//! 256 by default); `.ci/run` raises it so that CI runs over 10 000 cases.
+//! Each property runs `GRAINSCOPE_FUZZ_CASES` cases (256 by default), and
+//! the one that computes and writes a scene a sixteenth of them; `.ci/run`
+//! raises it so that CI runs over 10 000 cases. proptest's own
+//! `PROPTEST_CASES`, if set, overrides both counts: the test macro applies it
+//! over a property's configuration.
 
 use grainscope::cli::{Command, run};
 use grainscope::preset::{Preset, SHIPPED};
@@ -13,10 +16,10 @@ use proptest::prelude::*;
 use proptest::sample::Index;
 use std::path::Path;
 
-/// Cases per property: `PROPTEST_CASES`, divided by `cost` for the
+/// Cases per property: `GRAINSCOPE_FUZZ_CASES`, divided by `cost` for the
 /// properties that compute and write a scene.
 fn config(cost: u32) -> ProptestConfig {
-    let cases = std::env::var("PROPTEST_CASES").ok().and_then(|v| v.parse::<u32>().ok()).unwrap_or(256);
+    let cases = std::env::var("GRAINSCOPE_FUZZ_CASES").ok().and_then(|v| v.parse::<u32>().ok()).unwrap_or(256);
     ProptestConfig { cases: (cases / cost).max(8), failure_persistence: None, ..ProptestConfig::default() }
 }
 

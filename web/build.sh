@@ -14,7 +14,7 @@ profile="${GRAINSCOPE_WEB_PROFILE:-web}"
 
 # The bindings' tool, web/bindgen: wasm-bindgen's library at the exact
 # version of the `wasm-bindgen` crate in Cargo.lock (its own lock file pins
-# it; the two must agree). It compiles in about a minute, half of what
+# it; the two must agree). It compiles in about a minute, a third of what
 # `cargo install wasm-bindgen-cli` takes, since it leaves out the command's
 # test runner, and it is built once per cargo target.
 version=$(awk '/^name = "wasm-bindgen"$/ { getline; gsub(/"/, "", $3); print $3; exit }' Cargo.lock)

@@ -3,7 +3,9 @@
 //! Run with `cargo bench --bench collision`. For each tolerance it prints the
 //! time per collision (median of repeated runs) and |e − e_ref|, where e_ref
 //! comes from a run at rtol = 1e-11; then the time of whole scenes.
-//! `cargo bench --bench collision -- solver` prints the solver's tables alone.
+//! `cargo bench --bench collision -- solver` prints the solver's tables alone;
+//! `-- sweep` prints, for four families of collisions over a range of
+//! speeds each, the mean time and steps per collision and the worst |e − e_ref|.
 
 use grainscope::physics::collision::{Options, Setup, collide, sticking_search};
 use grainscope::physics::crack::CrackLaw;
@@ -45,7 +47,68 @@ fn solver_table(name: &str, setup: &Setup, v: f64) {
     }
 }
 
+/// `n` speeds spaced evenly in ln v from `lo` to `hi`, m/s.
+fn speeds(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    (0..n).map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64)).collect()
+}
+
+/// Speed against error over ranges of speeds: reference ice at 3–25 m/s, the
+/// quasi-static hard cases T_vis = 10⁻¹⁴ and 10⁻¹⁵ s at 1.5–20 m/s and a
+/// viscous case T_vis = 10⁻¹⁰ s at 30–200 m/s, 40 speeds each (sticking
+/// collisions among them), e_ref at rtol 10⁻¹¹. Per tolerance: the mean time,
+/// accepted and rejected steps of a collision and the worst |e − e_ref| with
+/// the speed where it occurs.
+fn sweeps() {
+    let ice = Setup::reference_ice();
+    let with_t_vis = |t_vis| Setup { t_vis, ..ice };
+    let cases = [
+        ("reference ice, 3-25 m/s", ice, speeds(3.0, 25.0, 40)),
+        ("T_vis = 1e-14 s, 1.5-20 m/s", with_t_vis(1e-14), speeds(1.5, 20.0, 40)),
+        ("T_vis = 1e-15 s, 1.5-20 m/s", with_t_vis(1e-15), speeds(1.5, 20.0, 40)),
+        ("T_vis = 1e-10 s, 30-200 m/s", with_t_vis(1e-10), speeds(30.0, 200.0, 40)),
+    ];
+    println!(
+        "{:<30} {:>6} {:>10} {:>8} {:>8} {:>12} {:>8} {:>12}",
+        "case", "rtol", "time [µs]", "steps", "rejected", "worst |Δe|", "at v", "median |Δe|"
+    );
+    for (name, setup, vs) in &cases {
+        let reference: Vec<f64> = vs
+            .iter()
+            .map(|&v| collide(setup, v, &Options { rtol: 1e-11, ..Options::default() }).expect("reference").e_adhesive)
+            .collect();
+        for rtol in [1e-5, 3e-6, 1e-6] {
+            let opts = Options { rtol, ..Options::default() };
+            let (mut steps, mut rejected, mut worst, mut at) = (0, 0, 0.0_f64, 0.0);
+            let mut errors = Vec::new();
+            for (&v, &e_ref) in vs.iter().zip(&reference) {
+                let c = collide(setup, v, &opts).expect("collision");
+                steps += c.stats.accepted;
+                rejected += c.stats.rejected;
+                let err = (c.e_adhesive - e_ref).abs();
+                errors.push(err);
+                if err > worst {
+                    (worst, at) = (err, v);
+                }
+            }
+            errors.sort_by(f64::total_cmp);
+            let median = errors[errors.len() / 2];
+            let t = time(|| vs.iter().map(|&v| collide(setup, v, &opts).expect("collision").e_adhesive).sum::<f64>());
+            let n = vs.len() as f64;
+            println!(
+                "{name:<30} {rtol:>6.0e} {:>10.1} {:>8.1} {:>8.1} {worst:>12.2e} {at:>8.2} {median:>12.2e}",
+                t.as_secs_f64() * 1e6 / n,
+                steps as f64 / n,
+                rejected as f64 / n
+            );
+        }
+    }
+}
+
 fn main() {
+    if std::env::args().skip(1).any(|a| a == "sweep") {
+        sweeps();
+        return;
+    }
     let ice = Setup::reference_ice();
     solver_table("reference ice collision", &ice, 8.0);
     solver_table("reference ice, the thesis's crack law", &ice.with_crack(CrackLaw::thesis(0.02)), 8.0);

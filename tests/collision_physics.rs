@@ -215,11 +215,12 @@ fn the_step_size_follows_the_healing_neck_at_the_default_tolerance() {
     // of the tolerance there, with h/t ≈ 0.6; the predictive controller
     // lets the step grow until the error is near the tolerance. Reference
     // ice at 8 m/s took 254 steps with the former (|Δe| = 1.9 × 10⁻⁸) and
-    // 211 with the latter (2.0 × 10⁻⁸).
+    // 211 with the latter (2.0 × 10⁻⁸); 214 (5.2 × 10⁻⁸, a twentieth of the
+    // tolerance) since it keeps the last accepted step across rejections.
     let c = collide(&ice(), 8.0, &opts()).expect("collides");
     let e_ref = collide(&ice(), 8.0, &Options { rtol: 1e-11, ..opts() }).expect("collides").e_adhesive;
     assert!(c.stats.accepted <= 230, "{:?}", c.stats);
-    assert!((c.e_adhesive - e_ref).abs() <= 5e-8, "|Δe| = {:e}", (c.e_adhesive - e_ref).abs());
+    assert!((c.e_adhesive - e_ref).abs() <= 1e-7, "|Δe| = {:e}", (c.e_adhesive - e_ref).abs());
 }
 
 #[test]

@@ -197,6 +197,11 @@ impl<const N: usize> Lu<N> {
     }
 }
 
+/// x^{1/4} by two square roots (a `powf` was a twentieth of a collision).
+fn fourth_root(x: f64) -> f64 {
+    x.sqrt().sqrt()
+}
+
 /// Adaptive Rosenbrock integrator with mixed relative/absolute error control.
 ///
 /// The local error of component `i` is measured against
@@ -216,8 +221,8 @@ pub struct Rosenbrock4<const N: usize> {
     pub h: f64,
     /// Work counters.
     pub stats: SolverStats,
-    /// The step and error norm of the last accepted step, when the step
-    /// before it was accepted too (for the predictive step-size controller).
+    /// The step and error norm of the last accepted step (for the
+    /// predictive step-size controller).
     last: Option<(f64, f64)>,
 }
 
@@ -276,10 +281,12 @@ impl<const N: usize> Rosenbrock4<N> {
 
     /// Advances `y` by one accepted step no longer than `h_max`, adapting the
     /// step size. Returns the new state and the step taken. After two
-    /// accepted steps in a row the next step follows Gustafsson's
-    /// predictive controller (Hairer & Wanner, Sect. IV.8),
-    /// h_{n+1} = 0.9 h_n (h_n/h_{n−1}) (err_{n−1}/err_n)^{1/4} err_n^{−1/4};
-    /// otherwise h_{n+1} = 0.9 h_n err_n^{−1/4}.
+    /// accepted step the next one follows Gustafsson's predictive controller
+    /// (Hairer & Wanner, Sect. IV.8),
+    /// h_{n+1} = 0.9 h_n (h_n/h_{n−1}) (err_{n−1}/err_n)^{1/4} err_n^{−1/4},
+    /// with h_{n−1} and err_{n−1} those of the accepted step before, rejected
+    /// attempts in between or not; after a rejection the step does not grow.
+    /// The first accepted step takes h_{n+1} = 0.9 h_n err_n^{−1/4}.
     pub fn advance<S: StiffSystem<N>>(
         &mut self,
         sys: &S,
@@ -304,27 +311,28 @@ impl<const N: usize> Rosenbrock4<N> {
                     self.stats.accepted += 1;
                     let growth = if rejected { 1.0 } else { 5.0 };
                     let err = err.max(1e-4);
-                    let mut factor = 0.9 * err.powf(-0.25);
-                    if let (Some((h_last, err_last)), false) = (self.last, rejected) {
+                    let mut factor = 0.9 / fourth_root(err);
+                    if let Some((h_last, err_last)) = self.last {
                         // Gustafsson's predictive controller: where the
                         // error per step stays put while the step grows (a
-                        // power law in t), the step keeps growing.
-                        factor *= (h / h_last) * (err_last / err).powf(0.25);
+                        // power law in t), the step keeps growing. A
+                        // rejection in between does not reset it: the last
+                        // accepted step still says where the error goes
+                        // (as in Hairer & Wanner's RADAU5).
+                        factor *= (h / h_last) * fourth_root(err_last / err);
                     }
                     self.h = h * factor.clamp(0.2, growth);
-                    self.last = if rejected { None } else { Some((h, err)) };
+                    self.last = Some((h, err));
                     return Ok((y_new, h));
                 }
                 Some((_, err)) => {
                     self.stats.rejected += 1;
                     rejected = true;
-                    self.last = None;
-                    h *= (0.9 * err.powf(-1.0 / 3.0)).clamp(0.1, 0.5);
+                    h *= (0.9 / err.cbrt()).clamp(0.1, 0.5);
                 }
                 None => {
                     self.stats.rejected += 1;
                     rejected = true;
-                    self.last = None;
                     h *= 0.25;
                 }
             }

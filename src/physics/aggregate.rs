@@ -125,7 +125,7 @@ pub struct Stopping {
     pub regime: DragRegime,
     /// Particle Reynolds number.
     pub reynolds: f64,
-    /// Bisection iterations of the Newton-drag solve (0 otherwise).
+    /// Iterations of the Newton-drag solve (0 otherwise).
     pub iterations: usize,
 }
 
@@ -192,9 +192,11 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
     // Solve t = 2m/(C_D(Re(t)) ρ v_dg(t) A) for t in (0, t_st]: the drag only
     // grows with Re. With x = ln t, g(x) = ln[2m/(C_D ρ v_dg A)] − x has the
     // slope −(1 + d ln C_D/d ln Re)(d ln v_dg/d ln St) − 1, between −2 and
-    // −0.88 in every regime: Newton's method from x = ln t_st (where g ≤ 0)
-    // converges in a few steps. The bracket [lo, hi] (g(lo) > 0 ≥ g(hi))
-    // catches a step across the small jump of C_D at Re = 800.
+    // −0.88 in every regime: Newton's method converges in a few steps, from
+    // the root at the nearer end of the Stokes numbers (`newton_start`) or
+    // else from x = ln t_st (where g ≤ 0). The bracket [lo, hi]
+    // (g(lo) > 0 ≥ g(hi)) catches a step across the small jump of C_D at
+    // Re = 800.
     // In logarithms, with C_D = 24/Re, 24 Re^{-3/5} or 0.44 and Re = k v_dg,
     // ln[2m/(C_D ρ v_dg A)] = ln[2m/(ρA)] − ln C_D − ln v_dg is a constant of
     // each regime plus a multiple of ln v_dg: one logarithm an evaluation.
@@ -221,8 +223,10 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
     let ln_t_st = t_st.ln();
     let floor = ln_t_st - 30.0 * std::f64::consts::LN_10;
     let (mut lo, mut hi) = (floor, ln_t_st);
-    let mut x = hi;
+    let guess = newton_start(intermediate_c, newton_c, ln_k, eta_vk.ln(), omega.ln());
+    let mut x = if guess > floor && guess < hi { guess } else { hi };
     let mut iterations = 0;
+    let mut last_step = f64::INFINITY;
     while iterations < 100 {
         let (gx, slope) = g(x);
         iterations += 1;
@@ -235,7 +239,8 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
             hi = x;
         }
         let mut next = x - gx / slope;
-        if !(next > lo && next < hi) {
+        let newton_step = next > lo && next < hi;
+        if !newton_step {
             next = if lo > floor { 0.5 * (lo + hi) } else { next.max(floor).min(hi) };
         }
         let step = (next - x).abs();
@@ -243,11 +248,41 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
         if step <= 1e-12 * (1.0 + x.abs()) || hi - lo <= 1e-12 || x <= floor {
             break;
         }
+        // Newton's method converging quadratically (this step a hundredth of
+        // the last or less): the error left is about the step squared times
+        // |g''/2g'| (below 1 here), under 10⁻¹⁴.
+        if newton_step && step <= 1e-7 * (1.0 + x.abs()) && step <= 1e-2 * last_step {
+            break;
+        }
+        last_step = step;
     }
     let t = tabled::exp(x);
     let re = reynolds(t);
     let regime = if re < 800.0 { DragRegime::Intermediate } else { DragRegime::Newton };
     Stopping { time: t, regime, reynolds: re, iterations }
+}
+
+/// Where Newton's method for ln t_s starts: the root at one end of the
+/// Stokes numbers, where the velocity relative to the gas is a power of t:
+/// ηv_K for St ≫ 1, 2ηv_K St = 2ηv_KΩt for St ≪ 1. Then
+/// ln[2m/(C_D ρ v_dg A)] − ln t is linear in ln t in each drag regime
+/// (`intermediate_c` − 0.4 ln v_dg with C_D = 24 Re^{-3/5}, `newton_c` −
+/// ln v_dg with C_D = 0.44; Re = k v_dg). The large-St root is taken where
+/// its Stokes number is at least 1, else the small-St one; each in the
+/// regime its Reynolds number gives. Between the ends v_dg is up to 1.16
+/// times ηv_K, and the iterations correct that. `ln_k`, `ln_ev` and
+/// `ln_omega` are ln k, ln ηv_K and ln Ω.
+fn newton_start(intermediate_c: f64, newton_c: f64, ln_k: f64, ln_ev: f64, ln_omega: f64) -> f64 {
+    let ln_800 = 800f64.ln();
+    // St ≫ 1: v_dg = ηv_K, a constant.
+    let large = if ln_k + ln_ev < ln_800 { intermediate_c - 0.4 * ln_ev } else { newton_c - ln_ev };
+    if large + ln_omega >= 0.0 {
+        return large;
+    }
+    // St ≪ 1: ln v_dg = ln 2ηv_KΩ + ln t.
+    let ln_2ev = std::f64::consts::LN_2 + ln_ev + ln_omega;
+    let small = (intermediate_c - 0.4 * ln_2ev) / 1.4;
+    if ln_k + ln_2ev + small < ln_800 { small } else { 0.5 * (newton_c - ln_2ev) }
 }
 
 /// Turbulent relative velocity model.

@@ -5,10 +5,12 @@
 //! comes from a run at rtol = 1e-11; then the time of whole scenes.
 //! `cargo bench --bench collision -- solver` prints the solver's tables alone;
 //! `-- sweep` prints, for four families of collisions over a range of
-//! speeds each, the mean time and steps per collision and the worst |e − e_ref|.
+//! speeds each, the mean time and steps per collision and the worst and the
+//! median |e − e_ref|.
 
 use grainscope::physics::collision::{Options, Setup, collide, sticking_search};
 use grainscope::physics::crack::CrackLaw;
+use grainscope::scene::grid::logspace;
 use grainscope::scene::{self, Caches, Progress, SceneParams};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
@@ -47,11 +49,6 @@ fn solver_table(name: &str, setup: &Setup, v: f64) {
     }
 }
 
-/// `n` speeds spaced evenly in ln v from `lo` to `hi`, m/s.
-fn speeds(lo: f64, hi: f64, n: usize) -> Vec<f64> {
-    (0..n).map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64)).collect()
-}
-
 /// Speed against error over ranges of speeds: reference ice at 3–25 m/s, the
 /// quasi-static hard cases T_vis = 10⁻¹⁴ and 10⁻¹⁵ s at 1.5–20 m/s and a
 /// viscous case T_vis = 10⁻¹⁰ s at 30–200 m/s, 40 speeds each (sticking
@@ -62,10 +59,10 @@ fn sweeps() {
     let ice = Setup::reference_ice();
     let with_t_vis = |t_vis| Setup { t_vis, ..ice };
     let cases = [
-        ("reference ice, 3-25 m/s", ice, speeds(3.0, 25.0, 40)),
-        ("T_vis = 1e-14 s, 1.5-20 m/s", with_t_vis(1e-14), speeds(1.5, 20.0, 40)),
-        ("T_vis = 1e-15 s, 1.5-20 m/s", with_t_vis(1e-15), speeds(1.5, 20.0, 40)),
-        ("T_vis = 1e-10 s, 30-200 m/s", with_t_vis(1e-10), speeds(30.0, 200.0, 40)),
+        ("reference ice, 3-25 m/s", ice, logspace(3.0, 25.0, 40)),
+        ("T_vis = 1e-14 s, 1.5-20 m/s", with_t_vis(1e-14), logspace(1.5, 20.0, 40)),
+        ("T_vis = 1e-15 s, 1.5-20 m/s", with_t_vis(1e-15), logspace(1.5, 20.0, 40)),
+        ("T_vis = 1e-10 s, 30-200 m/s", with_t_vis(1e-10), logspace(30.0, 200.0, 40)),
     ];
     println!(
         "{:<30} {:>6} {:>10} {:>8} {:>8} {:>12} {:>8} {:>12}",

@@ -280,7 +280,7 @@ impl<const N: usize> Rosenbrock4<N> {
     }
 
     /// Advances `y` by one accepted step no longer than `h_max`, adapting the
-    /// step size. Returns the new state and the step taken. After two
+    /// step size. Returns the new state and the step taken. After an
     /// accepted step the next one follows Gustafsson's predictive controller
     /// (Hairer & Wanner, Sect. IV.8),
     /// h_{n+1} = 0.9 h_n (h_n/h_{n−1}) (err_{n−1}/err_n)^{1/4} err_n^{−1/4},

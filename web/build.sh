@@ -36,8 +36,8 @@ echo "== building the WebAssembly module"
 # Safari since 16.4, 2023): the compiler pairs the model's independent
 # floating-point operations, the same IEEE operations, so the same numbers.
 # Fig. 5.9's formation zone computes about 6 % faster, and the module is
-# 0.5 MB smaller. Only this build sets it: clippy and `cargo check` for
-# wasm32 check the same code without it.
+# 0.5 MB smaller. Only this build sets it: `.ci/run`'s `cargo check` for
+# wasm32 checks and lints the same code without it.
 export CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS="${CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUSTFLAGS:--C target-feature=+simd128}"
 cargo build -p grainscope-web --profile "$profile" --target wasm32-unknown-unknown
 

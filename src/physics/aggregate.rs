@@ -509,7 +509,8 @@ pub const R_CRIT: f64 = 1e-2;
 /// Erosion efficiency ε_eros = c₁ v/v_eros (4.13, γ = 1): projectile masses
 /// the larger body loses per collision.
 pub fn erosion_efficiency(c1: f64, v: f64, v_eros: f64) -> f64 {
-    c1 * (v / v_eros)
+    // By the reciprocal, as a row of pairs takes it once for all its pairs.
+    c1 * (v * (1.0 / v_eros))
 }
 
 /// Thresholds of the collision model.
@@ -527,8 +528,8 @@ pub struct Thresholds {
 
 /// The outcome of a collision of masses m₁, m₂ at velocity v.
 pub fn outcome(m1: f64, m2: f64, v: f64, th: &Thresholds) -> Outcome {
-    let ratio = m1.min(m2) / m1.max(m2);
-    if ratio < th.r_crit {
+    // The mass ratio below r_crit, compared as a product.
+    if m1.min(m2) < th.r_crit * m1.max(m2) {
         if v > th.v_eros {
             Outcome::Erode { efficiency: erosion_efficiency(1.0, v, th.v_eros) }
         } else {
@@ -565,7 +566,7 @@ fn hit_and_stick_void(a: f64, b: f64) -> f64 {
     if a > 650.0 * b {
         return 6.94 * b;
     }
-    (0.99 - 1.03 * super::fdlibm::ln(2.0 / (a / b + 1.0))).min(6.94) * b
+    (0.99 - 1.03 * super::fdlibm::ln(2.0 * b / (a + b))).min(6.94) * b
 }
 
 /// The geometry of aggregates of one mass at any filling factor: what

@@ -145,7 +145,8 @@ impl Column {
         let (p1, p2) = if a.props.stokes >= b.props.stokes { (a, b) } else { (b, a) };
         let (s1, s2) = (p1.props.stokes, p2.props.stokes);
         let (diff, s2_eff) = effective_difference(s1, s2, self.epsilon);
-        let brownian2 = k.brownian * (a.mass + b.mass) / (a.mass * b.mass);
+        // 8k_BT/(πμ) with 1/μ = 1/m_a + 1/m_b (the row keeps every 1/m).
+        let brownian2 = k.brownian * (1.0 / a.mass + 1.0 / b.mass);
         let d1 = &p1.props.drift;
         let turbulence = k.turbulence.velocity(d1, s2_eff, diff);
         let (settling2, radial2, azimuthal2) = if s2_eff > 0.0 { drift_terms(env, s2_eff) } else { k.at_rest };
@@ -208,12 +209,13 @@ impl Column {
 }
 
 /// The settling, radial and azimuthal terms of [`DriftTerms::of`] with
-/// three divisions instead of five (the same formulas; a test holds the
-/// velocity built from them to [`relative_velocity`]).
+/// three divisions instead of five and St/α taken as St·(1/α), as a row of
+/// pairs takes it (the same formulas; a test holds the velocity built from
+/// them to [`relative_velocity`]).
 fn drift_terms(env: &Local, st: f64) -> (f64, f64, f64) {
     let inv1 = 1.0 / (1.0 + st);
     let inv2 = 1.0 / (1.0 + st * st);
-    let h_d = 1.0 / (1.0 + st / env.alpha * (1.0 + 2.0 * st) * inv1).sqrt();
+    let h_d = 1.0 / (1.0 + st * (1.0 / env.alpha) * (1.0 + 2.0 * st) * inv1).sqrt();
     (env.omega * st * inv1 * h_d * env.scale_height, 2.0 * st * env.eta_vk * inv2, env.eta_vk * inv2)
 }
 
@@ -241,8 +243,8 @@ fn sticking_filling(k: &Constants, (mt, vt): (f64, f64), (mp, vp): (f64, f64), v
     if e <= onset {
         return (phi_hs, true);
     }
-    let n = m / k.m0;
-    let x = e * k.m0 * inv_m / onset;
+    let n = m * (1.0 / k.m0);
+    let x = e * k.m0 * inv_m * (1.0 / onset);
     let hs2 = phi_hs * phi_hs;
     let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
     let below = x * x * x < hs10 * n * n * (1.0 - 1e-9);
@@ -267,8 +269,9 @@ fn filling_change_with(k: &Constants, (mt, vt, phi_t): (f64, f64, f64), (mp, vp)
     if !hit_and_stick {
         return phi - phi_t;
     }
-    let grown = hit_and_stick_growth(vt, vp) / vt;
-    phi_t * (mp / mt - grown) / (1.0 + grown)
+    // φ_t (m_p/m_t − g/V_t)/(1 + g/V_t) for the volume g added, in one division.
+    let grown = hit_and_stick_growth(vt, vp);
+    phi_t * (mp * vt - mt * grown) / (mt * (vt + grown))
 }
 
 impl Column {
@@ -413,19 +416,23 @@ impl Column {
             vg_re: k.turbulence.vg * k.turbulence.re_quarter,
             vg_155: k.turbulence.vg * 1.55,
             vg: k.turbulence.vg,
-            alpha: self.env.alpha,
+            inv_alpha: 1.0 / self.env.alpha,
             omega: self.env.omega,
             scale_height: self.env.scale_height,
             eta_vk: self.env.eta_vk,
             rho0: k.rho0,
             m0: k.m0,
+            inv_m0: 1.0 / k.m0,
             onset: 3.0 * B_COMPACT * k.e_roll,
+            inv_onset: 1.0 / (3.0 * B_COMPACT * k.e_roll),
             r_crit: th.r_crit,
             v_eros: th.v_eros,
+            inv_v_eros: 1.0 / th.v_eros,
             v_frag: th.v_frag,
             v_bounce: th.v_bounce,
             c1: self.c1,
             rule: *rule,
+            inv_volume: 1.0 / rule.volume,
         }
     }
 

@@ -2,9 +2,9 @@
 //! family, computed over the whole row at once.
 //!
 //! A run computes a new family's row after almost every event (the product of
-//! a sticking collision is a family of its own), and a pair's data take about
-//! thirty divisions and square roots in a chain: one pair at a time the row
-//! waits on their latency. Here the families' properties are kept beside
+//! a sticking collision is a family of its own), and a pair's data take nine
+//! divisions, five square roots and a logarithm in a chain: one pair at a
+//! time the row waits on their latency. Here the families' properties are kept beside
 //! them, one array per property ([`Lanes`], updated as families change), and
 //! one loop without branches computes every pair's relative velocity, rate
 //! coefficient, outcome, filling-factor change and headroom, several pairs
@@ -28,7 +28,7 @@
 use super::aggregate::DriftTerms;
 use super::coagulation::Props;
 use super::fdlibm::{EXP_RANGE, exp_moderate, ln_normal, small_integer};
-use super::monte_carlo::{Family, Pair, PairRule};
+use super::monte_carlo::{Family, Pair, PairRule, SIGNIFICAND};
 use super::wide::{Bits, Wide};
 use std::cell::RefCell;
 
@@ -37,6 +37,8 @@ use std::cell::RefCell;
 #[derive(Debug, Default, Clone, PartialEq)]
 pub struct Lanes {
     mass: Vec<f64>,
+    /// 1/m.
+    inv_mass: Vec<f64>,
     filling: Vec<f64>,
     /// Volume m/(ρ₀φ), m³.
     volume: Vec<f64>,
@@ -55,6 +57,7 @@ pub struct Lanes {
 #[derive(Debug, Clone, Copy)]
 pub(crate) struct Lead {
     pub mass: f64,
+    pub inv_mass: f64,
     pub filling: f64,
     pub volume: f64,
     pub drift: DriftTerms,
@@ -68,6 +71,7 @@ impl Lead {
     pub fn of(f: &Family<Props>, rho0: f64) -> Lead {
         Lead {
             mass: f.mass,
+            inv_mass: 1.0 / f.mass,
             filling: f.filling,
             volume: f.mass / (rho0 * f.filling),
             drift: f.props.drift,
@@ -80,9 +84,10 @@ impl Lead {
 
 impl Lanes {
     /// The arrays, each as a mutable vector.
-    fn arrays(&mut self) -> [&mut Vec<f64>; 11] {
+    fn arrays(&mut self) -> [&mut Vec<f64>; 12] {
         [
             &mut self.mass,
+            &mut self.inv_mass,
             &mut self.filling,
             &mut self.volume,
             &mut self.stokes,
@@ -101,6 +106,7 @@ impl Lanes {
         let d = &lead.drift;
         let values = [
             lead.mass,
+            lead.inv_mass,
             lead.filling,
             lead.volume,
             d.stokes,
@@ -163,23 +169,31 @@ pub(crate) struct RowConstants {
     pub vg_re: f64,
     pub vg_155: f64,
     pub vg: f64,
-    /// Gas: α, Ω, H, ηv_K.
-    pub alpha: f64,
+    /// Gas: 1/α, Ω, H, ηv_K.
+    pub inv_alpha: f64,
     pub omega: f64,
     pub scale_height: f64,
     pub eta_vk: f64,
     /// Monomer internal density ρ₀ and mass m₀; collisional-compaction onset 3bE_roll.
     pub rho0: f64,
     pub m0: f64,
+    /// 1/m₀.
+    pub inv_m0: f64,
     pub onset: f64,
+    /// 1/(3bE_roll).
+    pub inv_onset: f64,
     /// Thresholds and erosion prefactor c₁.
     pub r_crit: f64,
     pub v_eros: f64,
+    /// 1/v_eros.
+    pub inv_v_eros: f64,
     pub v_frag: f64,
     pub v_bounce: f64,
     pub c1: f64,
     /// From the engine: V, f_m, f_φ.
     pub rule: PairRule,
+    /// 1/V.
+    pub inv_volume: f64,
 }
 
 thread_local! {
@@ -365,6 +379,17 @@ fn exponent<V: Wide>(x: V) -> (V, V::Mask) {
     (small_integer::<V>(biased) - V::splat(1023.0), x.gt(V::splat(0.0)) & !biased.eq(0) & !biased.eq(0x7ff))
 }
 
+/// ⌊log₂(fx/dx)⌋ of `monte_carlo::room` for dx > 0, from the binary
+/// exponents and significands of fx and dx, and whether both are positive
+/// normal numbers (where that is exact).
+#[inline(always)]
+fn room<V: Wide>(fx: V, dx: V) -> (V, V::Mask) {
+    let ((ea, oka), (eb, okb)) = (exponent(fx), exponent(dx));
+    let significand = |y: V| V::from_bits(y.to_bits().and(SIGNIFICAND).or_c(1f64.to_bits()));
+    let borrow = V::select(significand(fx).lt(significand(dx)), V::splat(1.0), V::splat(0.0));
+    (ea - eb - borrow, oka & okb)
+}
+
 /// One row, without branches: the same operations as the pair-at-a-time
 /// functions, with both sides of every choice computed and one kept; `V::LANES`
 /// pairs at a time, and the last few one at a time.
@@ -373,6 +398,7 @@ fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lane
     let n = lanes.len();
     let columns = Columns {
         mass: &lanes.mass[..n],
+        inv_mass: &lanes.inv_mass[..n],
         filling: &lanes.filling[..n],
         volume: &lanes.volume[..n],
         stokes: &lanes.stokes[..n],
@@ -401,6 +427,7 @@ fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lane
 /// [`Lanes`] cut to the families of one row.
 struct Columns<'a> {
     mass: &'a [f64],
+    inv_mass: &'a [f64],
     filling: &'a [f64],
     volume: &'a [f64],
     stokes: &'a [f64],
@@ -435,7 +462,7 @@ fn pairs<V: Wide, const COMPACT: bool>(
     let spread = s(k.epsilon) * s1;
     let diff = (gap * gap + spread * spread).sqrt();
     let s2e = (s1 - diff).max(s(0.0));
-    let brownian2 = s(k.brownian) * (s(a.mass) + mb) / (s(a.mass) * mb);
+    let brownian2 = s(k.brownian) * (s(a.inv_mass) + V::load(l.inv_mass, i));
     let sqrt1 = V::select(a_first, s(d.sqrt_stokes), V::load(l.sqrt_stokes, i));
     // 1/(1 + St₁), kept per family.
     let inv1p = V::select(a_first, s(a.inv_1p), V::load(l.inv_1p, i));
@@ -444,7 +471,7 @@ fn pairs<V: Wide, const COMPACT: bool>(
         V::select(s1.lt(s(k.st_eta)), s(k.vg_re) * diff, V::select(s1.lt(s(1.0)), s(k.vg_155) * sqrt1, fast));
     let inv1 = s(1.0) / (s(1.0) + s2e);
     let inv2 = s(1.0) / (s(1.0) + s2e * s2e);
-    let h_d = s(1.0) / (s(1.0) + s2e / s(k.alpha) * (s(1.0) + s(2.0) * s2e) * inv1).sqrt();
+    let h_d = s(1.0) / (s(1.0) + s2e * s(k.inv_alpha) * (s(1.0) + s(2.0) * s2e) * inv1).sqrt();
     let settling2 = s(k.omega) * s2e * inv1 * h_d * s(k.scale_height);
     let radial2 = s(2.0) * s2e * s(k.eta_vk) * inv2;
     let azimuthal2 = s(k.eta_vk) * inv2;
@@ -462,14 +489,13 @@ fn pairs<V: Wide, const COMPACT: bool>(
     // Volumes m/(ρ₀φ), kept per family.
     let volume = V::load(l.volume, i);
     let (vt, vp) = (V::select(a_target, s(a.volume), volume), V::select(a_target, volume, s(a.volume)));
-    let ratio = tm.min(pm) / tm.max(pm);
-    let small = ratio.lt(s(k.r_crit));
+    let small = tm.min(pm).lt(s(k.r_crit) * tm.max(pm));
     let eroding = small & v.gt(s(k.v_eros));
     let shattering = v.ge(s(k.v_frag));
     let fragment = !small & shattering;
     let bounce = !small & !shattering & v.ge(s(k.v_bounce));
     let stick = !(eroding | fragment | bounce);
-    let lost = s(k.c1) * (s(1.0) * (v / s(k.v_eros))) * pm;
+    let lost = s(k.c1) * (s(1.0) * (v * s(k.inv_v_eros))) * pm;
     let shatter = fragment | (eroding & lost.ge(tm));
     // Filling-factor change of sticking (coagulation::filling_change_with).
     let larger = vt.ge(vp);
@@ -478,15 +504,15 @@ fn pairs<V: Wide, const COMPACT: bool>(
     let void = V::select(
         va.gt(s(650.0) * vb),
         s(6.94) * vb,
-        (s(0.99) - s(1.03) * ln_normal(s(2.0) / (va / vb + s(1.0)))).min(s(6.94)) * vb,
+        (s(0.99) - s(1.03) * ln_normal(s(2.0) * vb / (va + vb))).min(s(6.94)) * vb,
     );
     let m = tm + pm;
     let phi_hs = m / (s(k.rho0) * (va + vb + void));
     let full = phi_hs.ge(s(1.0));
     let inv_m = s(1.0) / m;
     let e = s(0.5) * tm * pm * inv_m * v * v;
-    let n_mono = m / s(k.m0);
-    let x = e * s(k.m0) * inv_m / s(k.onset);
+    let n_mono = m * s(k.inv_m0);
+    let x = e * s(k.m0) * inv_m * s(k.inv_onset);
     let hs2 = phi_hs * phi_hs;
     let hs10 = hs2 * hs2 * hs2 * hs2 * hs2;
     let below = (x * x * x).lt(hs10 * n_mono * n_mono * s(1.0 - 1e-9));
@@ -501,18 +527,18 @@ fn pairs<V: Wide, const COMPACT: bool>(
         (s(0.0), s(0.0).lt(s(0.0)))
     };
     let compacted = compacting_here & phi_c.gt(phi_hs);
-    let grown = (vp + void) / vt;
+    let grown = vp + void;
     let change = V::select(
         full,
         s(1.0) - tphi,
-        V::select(compacted, phi_c.min(s(1.0)) - tphi, tphi * (pm / tm - grown) / (s(1.0) + grown)),
+        V::select(compacted, phi_c.min(s(1.0)) - tphi, tphi * (pm * vt - tm * grown) / (tm * (vt + grown))),
     );
     // Pair data (PairRule::data).
-    let c = rate / s(k.rule.volume);
+    let c = rate * s(k.inv_volume);
     let dm = V::select(stick, pm, V::select(bounce, s(0.0), V::select(shatter, tm, lost)));
     let dphi = V::select(stick, change.abs(), V::select(bounce | !shatter, s(0.0), tphi));
-    let (hm, ok_m) = exponent(s(k.rule.f_m) * tm / dm);
-    let (hp, ok_p) = exponent(s(k.rule.f_phi) * tphi / dphi);
+    let (hm, ok_m) = room(s(k.rule.f_m) * tm, dm);
+    let (hp, ok_p) = room(s(k.rule.f_phi) * tphi, dphi);
     let (moves_m, moves_phi) = (dm.gt(s(0.0)), dphi.gt(s(0.0)));
     let hm = V::select(moves_m, hm, s(f64::INFINITY));
     let hp = V::select(moves_phi, hp, s(f64::INFINITY));

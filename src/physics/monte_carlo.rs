@@ -437,7 +437,7 @@ impl PairRule {
     /// rate coefficient and effect.
     pub fn data<P>(&self, a: &Family<P>, b: &Family<P>, rate: f64, effect: Effect) -> Pair {
         let (t, p) = if a.mass >= b.mass { (a, b) } else { (b, a) };
-        let c = rate / self.volume;
+        let c = rate * (1.0 / self.volume);
         let (dm, dphi, c) = match effect {
             Effect::Stick { change } => (p.mass, change.abs(), c),
             Effect::Erode { loss } => (loss, 0.0, c),
@@ -451,10 +451,35 @@ impl PairRule {
     }
 }
 
-/// ⌊log₂(f x/dx)⌋, or +∞ where dx ≤ 0 (no change).
-fn room(f: f64, x: f64, dx: f64) -> f64 {
-    if dx > 0.0 { floor_log2(f * x / dx) } else { f64::INFINITY }
+/// ⌊log₂(f x/dx)⌋, or +∞ where dx ≤ 0 (no change). Where f x and dx are
+/// positive normal numbers it is read off their binary exponents and
+/// significands (the floor of the exact ratio, without a division);
+/// elsewhere it is taken from the rounded ratio.
+pub(crate) fn room(f: f64, x: f64, dx: f64) -> f64 {
+    if dx <= 0.0 {
+        return f64::INFINITY;
+    }
+    let fx = f * x;
+    let normal = |y: f64| y > 0.0 && y.is_normal();
+    if normal(fx) && normal(dx) {
+        exponent_of(fx) - exponent_of(dx) - if significand_of(fx) < significand_of(dx) { 1.0 } else { 0.0 }
+    } else {
+        floor_log2(fx / dx)
+    }
 }
+
+/// The binary exponent of a positive normal number.
+fn exponent_of(y: f64) -> f64 {
+    f64::from(((y.to_bits() >> 52) & 0x7ff) as i32 - 1023)
+}
+
+/// The significand of a positive normal number, in [1, 2).
+pub(crate) fn significand_of(y: f64) -> f64 {
+    f64::from_bits((y.to_bits() & SIGNIFICAND) | 1f64.to_bits())
+}
+
+/// The significand's bits of an `f64`.
+pub(crate) const SIGNIFICAND: u64 = (1 << 52) - 1;
 
 /// Counts of what the events did.
 #[derive(Debug, Clone, Copy, PartialEq, Default, serde::Serialize, serde::Deserialize)]
@@ -671,7 +696,7 @@ impl<M: Model> Engine<M> {
     /// families), where they equal the families' own.
     fn counted_moments(&self) -> (f64, f64, f64) {
         debug_assert!(self.families.iter().zip(&self.counted).all(|(f, g)| f.groups == *g));
-        moments_of(self.keys.iter().zip(&self.counted).map(|(key, groups)| (groups * exp2i(key.zoom), key.mass)))
+        moments_in_chains(&self.keys, &self.counted)
     }
 
     /// Average and peak filling factors φ_a = ⟨φ⟩, φ_p = ⟨mφ⟩/⟨m⟩ (4.28)–(4.29).
@@ -786,7 +811,9 @@ impl<M: Model> Engine<M> {
         let at = self.computed[k];
         // The pair data of row k, from wherever they are (after its pair
         // data were computed, from row k itself).
-        let pairs = if self.computed.iter().all(|&c| c <= at) {
+        // Row k computed last (the usual case, right after its pair data)
+        // needs no look at the others.
+        let pairs = if at == self.rows || self.computed.iter().all(|&c| c <= at) {
             self.pairs.row(k, n)
         } else {
             let (own, pairs) = (self.pairs.row(k, n), &self.pairs);
@@ -804,14 +831,8 @@ impl<M: Model> Engine<M> {
         let fk = &self.families[k];
         let lead = (fk.zoom, fk.mass, k);
         unit_row(lead, (now, before), &self.keys, pairs, self.units.row_mut(k, n), &mut self.partner_sum[..n]);
-        // Family k's own sum in order of mass, as it always was summed.
-        let units = self.units.row(k, n);
-        let mut sum = 0.0;
-        for &j in &self.by_mass {
-            if j != k {
-                sum += self.counted[j] * units[j];
-            }
-        }
+        // Family k's own sum (unit(k, k) = 0).
+        let sum = dot_in_chains(self.units.row(k, n), &self.counted[..n]);
         self.units.mirror_row(k, n);
         self.partner_sum[k] = sum;
         self.counted[k] = now;
@@ -1000,14 +1021,12 @@ impl<M: Model> Engine<M> {
         // `event_weight` from the group counts in `counted` (equal to the
         // families' own here), a compact array beside the families.
         self.weight.resize(self.counted.len(), 0.0);
-        let mut total = 0.0;
         for (weight, ((groups, sum), in_group)) in
             self.weight.iter_mut().zip(self.counted.iter().zip(&self.partner_sum).zip(&self.in_group))
         {
             *weight = groups * sum + in_group;
-            total += *weight;
         }
-        total
+        sum_in_chains(&self.weight)
     }
 
     /// The partner of family i in an event: itself with weight in_group_i,
@@ -1020,19 +1039,8 @@ impl<M: Model> Engine<M> {
         }
         let n = self.families.len();
         let scaled = (target - in_group) / self.families[i].groups;
-        let mut acc = 0.0;
-        let mut last = if in_group > 0.0 { i } else { 0 };
-        for (j, (unit, groups)) in self.units.row(i, n).iter().zip(&self.counted).enumerate() {
-            let w = unit * groups;
-            if w > 0.0 {
-                acc += w;
-                last = j;
-                if acc > scaled {
-                    return j;
-                }
-            }
-        }
-        last
+        let none = if in_group > 0.0 { i } else { 0 };
+        cumulative_pick(&Products(self.units.row(i, n), &self.counted[..n]), scaled, none)
     }
 
     /// Runs until time `t_end` or until `max_events` more events; returns
@@ -1700,6 +1708,12 @@ fn exp2i(k: i32) -> f64 {
     }
 }
 
+/// [`exp2i`] without a branch: the exponent clamped to where 2^k is 0 or ∞.
+#[inline(always)]
+fn exp2i_clamped(k: i32) -> f64 {
+    f64::from_bits(((1023 + k.clamp(-1023, 1024)) as u64) << 52)
+}
+
 /// z* = [log₂(N₁₀/w*)] ≥ 0 (4.26).
 /// The largest zoom factor at which one group of particles of mass `m`
 /// holds at most `cap` of the total mass `total` (no limit for `cap` ≥ 1).
@@ -1713,18 +1727,158 @@ fn zoom_for(n10: f64, w_star: f64) -> i32 {
 
 /// Index whose cumulative weight first exceeds `target` (the last positive one otherwise).
 fn pick(weights: &[f64], target: f64) -> usize {
+    cumulative_pick(&weights, target, 0)
+}
+
+/// Partial sums kept side by side in the scans of an event. One running sum
+/// waits on the latency of every addition (four cycles, for some 500
+/// families every event, several times); this many independent ones overlap.
+const CHAINS: usize = 8;
+
+/// a₀ + … + a₇, pairwise.
+#[inline(always)]
+fn pairwise(a: [f64; CHAINS]) -> f64 {
+    ((a[0] + a[1]) + (a[2] + a[3])) + ((a[4] + a[5]) + (a[6] + a[7]))
+}
+
+/// Σ xᵢ in [`CHAINS`] interleaved partial sums, added pairwise, then the tail in order.
+fn sum_in_chains(xs: &[f64]) -> f64 {
+    let chunks = xs.chunks_exact(CHAINS);
+    let tail = chunks.remainder();
+    let mut acc = [0.0; CHAINS];
+    for c in chunks {
+        for (a, x) in acc.iter_mut().zip(c) {
+            *a += x;
+        }
+    }
+    tail.iter().fold(pairwise(acc), |s, x| s + x)
+}
+
+/// Σ a_i b_i in [`CHAINS`] interleaved partial sums, added pairwise, then the tail in order.
+fn dot_in_chains(a: &[f64], b: &[f64]) -> f64 {
+    let n = a.len().min(b.len());
+    let (a, b) = (&a[..n], &b[..n]);
+    let (ca, cb) = (a.chunks_exact(CHAINS), b.chunks_exact(CHAINS));
+    let tail = ca.remainder().iter().zip(cb.remainder());
+    let mut acc = [0.0; CHAINS];
+    for (xa, xb) in ca.zip(cb) {
+        for ((s, x), y) in acc.iter_mut().zip(xa).zip(xb) {
+            *s += x * y;
+        }
+    }
+    tail.fold(pairwise(acc), |s, (x, y)| s + x * y)
+}
+
+/// (m_a, m_p, m_max) of families given by their keys (mass, zoom factor) and
+/// group counts, in four interleaved partial sums of each moment.
+fn moments_in_chains(keys: &[Key], groups: &[f64]) -> (f64, f64, f64) {
+    const L: usize = 4;
+    let n = keys.len().min(groups.len());
+    let (keys, groups) = (&keys[..n], &groups[..n]);
+    let (mut c, mut m1, mut m2, mut max) = ([0.0; L], [0.0; L], [0.0; L], [0.0f64; L]);
+    let (ck, cg) = (keys.chunks_exact(L), groups.chunks_exact(L));
+    let tail = ck.remainder().iter().zip(cg.remainder());
+    for (ks, gs) in ck.zip(cg) {
+        for l in 0..L {
+            let (g, mass) = (gs[l] * exp2i_clamped(ks[l].zoom), ks[l].mass);
+            c[l] += g;
+            m1[l] += g * mass;
+            m2[l] += g * mass * mass;
+            max[l] = max[l].max(mass);
+        }
+    }
+    let (mut c, mut m1, mut m2) =
+        ((c[0] + c[1]) + (c[2] + c[3]), (m1[0] + m1[1]) + (m1[2] + m1[3]), (m2[0] + m2[1]) + (m2[2] + m2[3]));
+    let mut max = max[0].max(max[1]).max(max[2].max(max[3]));
+    for (key, groups) in tail {
+        let g = groups * exp2i(key.zoom);
+        c += g;
+        m1 += g * key.mass;
+        m2 += g * key.mass * key.mass;
+        max = max.max(key.mass);
+    }
+    (m1 / c, m2 / m1, max)
+}
+
+/// Weights read in blocks of [`CHAINS`] (see [`cumulative_pick`]).
+trait Weights {
+    /// The number of weights.
+    fn len(&self) -> usize;
+    /// Weight j.
+    fn at(&self, j: usize) -> f64;
+    /// Weights base..base + CHAINS (all within the length).
+    fn block(&self, base: usize) -> [f64; CHAINS];
+}
+
+impl Weights for &[f64] {
+    fn len(&self) -> usize {
+        <[f64]>::len(self)
+    }
+    fn at(&self, j: usize) -> f64 {
+        self[j]
+    }
+    #[inline(always)]
+    fn block(&self, base: usize) -> [f64; CHAINS] {
+        let b = &self[base..base + CHAINS];
+        std::array::from_fn(|l| b[l])
+    }
+}
+
+/// Weights a_j b_j of two slices of one length.
+struct Products<'a>(&'a [f64], &'a [f64]);
+
+impl Weights for Products<'_> {
+    fn len(&self) -> usize {
+        self.0.len().min(self.1.len())
+    }
+    fn at(&self, j: usize) -> f64 {
+        self.0[j] * self.1[j]
+    }
+    #[inline(always)]
+    fn block(&self, base: usize) -> [f64; CHAINS] {
+        let (a, b) = (&self.0[base..base + CHAINS], &self.1[base..base + CHAINS]);
+        std::array::from_fn(|l| a[l] * b[l])
+    }
+}
+
+/// Index whose cumulative weight, over the positive weights alone, first
+/// exceeds `target`; the last positive one if none does (rounding), `none` if
+/// no weight is positive. Whole blocks of [`CHAINS`] weights whose sum does
+/// not reach the target are passed over by that sum (independent additions);
+/// the block that may reach it is walked weight by weight.
+#[inline(always)]
+fn cumulative_pick(w: &impl Weights, target: f64, none: usize) -> usize {
+    let positive = |x: f64| if x > 0.0 { x } else { 0.0 };
+    let n = w.len();
     let mut acc = 0.0;
-    let mut last = 0;
-    for (k, w) in weights.iter().enumerate() {
-        if *w > 0.0 {
-            acc += w;
-            last = k;
+    let mut base = 0;
+    while base + CHAINS <= n {
+        let block = w.block(base).map(positive);
+        let s = pairwise(block);
+        if acc + s > target {
+            for (l, &x) in block.iter().enumerate() {
+                if x > 0.0 {
+                    acc += x;
+                    if acc > target {
+                        return base + l;
+                    }
+                }
+            }
+        } else {
+            acc += s;
+        }
+        base += CHAINS;
+    }
+    for j in base..n {
+        let x = w.at(j);
+        if x > 0.0 {
+            acc += x;
             if acc > target {
-                return k;
+                return j;
             }
         }
     }
-    last
+    (0..n).rev().find(|&j| w.at(j) > 0.0).unwrap_or(none)
 }
 
 #[cfg(test)]
@@ -1809,6 +1963,119 @@ mod tests {
             let out: f64 = made.iter().map(|(b, n, _, _)| b.mass * n).sum();
             let into = units * (lo.mass + per * hi.mass);
             assert!((out / into - 1.0).abs() < 1e-12, "{collision:?}: {out} out of {into}: {made:?}");
+        }
+    }
+
+    /// N_ε's ⌊log₂(f x/dx)⌋ read off exponents and significands is the floor
+    /// of the exact ratio: 2^h ≤ f x/dx < 2^{h+1}, checked by products with
+    /// powers of two (exact), over ratios of either order, exact powers of
+    /// two and significands that tie.
+    #[test]
+    fn the_headroom_is_the_floor_of_the_exact_ratio() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(11);
+        let mut cases: Vec<(f64, f64)> = (0..20_000)
+            .map(|_| (10f64.powf(rng.random_range(-30.0..30.0)), 10f64.powf(rng.random_range(-30.0..30.0))))
+            .collect();
+        cases.extend([
+            (1.0, 1.0),
+            (8.0, 2.0),
+            (3.0, 1.5),
+            (1.5, 3.0),
+            (1.0, 1.0 + f64::EPSILON),
+            (1.0 + f64::EPSILON, 1.0),
+        ]);
+        for (fx, dx) in cases {
+            let h = room(1.0, fx, dx);
+            assert_eq!(h, h.trunc(), "{fx} / {dx}");
+            let p = exp2i(h as i32);
+            assert!(dx * p <= fx && fx < dx * 2.0 * p, "{fx} / {dx}: {h}");
+        }
+        assert_eq!(room(0.1, 1.0, 0.0), f64::INFINITY);
+        // Off the normal numbers it is the rounded ratio's.
+        assert_eq!(room(1.0, 1.0, 1e-310), floor_log2(1.0 / 1e-310));
+    }
+
+    /// The draw over blocks of weights picks what one running sum picks,
+    /// except where the target lies within rounding of a boundary; with
+    /// nothing left to exceed, the last positive weight; with no positive
+    /// weight, the fallback. Sums in chains are the sum to rounding.
+    #[test]
+    fn a_draw_by_blocks_picks_what_a_running_sum_picks() {
+        use rand::{Rng, SeedableRng};
+        let running = |w: &[f64], target: f64, none: usize| {
+            let (mut acc, mut last) = (0.0, none);
+            for (k, &x) in w.iter().enumerate() {
+                if x > 0.0 {
+                    acc += x;
+                    last = k;
+                    if acc > target {
+                        return k;
+                    }
+                }
+            }
+            last
+        };
+        let mut rng = rand::rngs::StdRng::seed_from_u64(12);
+        for round in 0..2000 {
+            let n = rng.random_range(0..80);
+            let w: Vec<f64> = (0..n)
+                .map(|_| match rng.random_range(0..6) {
+                    0 => 0.0,
+                    1 => -rng.random::<f64>(),
+                    _ => 10f64.powf(rng.random_range(-6.0..6.0)),
+                })
+                .collect();
+            let b: Vec<f64> = (0..n).map(|_| rng.random_range(0.5..2.0)).collect();
+            let total: f64 = w.iter().filter(|x| **x > 0.0).sum();
+            let products: Vec<f64> = w.iter().zip(&b).map(|(x, y)| x * y).collect();
+            let product_total: f64 = products.iter().filter(|x| **x > 0.0).sum();
+            for _ in 0..20 {
+                let u = rng.random::<f64>() * 1.01;
+                let near_boundary = |w: &[f64], target: f64| {
+                    let mut acc = 0.0;
+                    w.iter().filter(|x| **x > 0.0).any(|x| {
+                        acc += x;
+                        (acc - target).abs() <= 1e-12 * acc
+                    })
+                };
+                if !near_boundary(&w, u * total) {
+                    assert_eq!(pick(&w, u * total), running(&w, u * total, 0), "round {round}: {w:?} at {u}");
+                }
+                if !near_boundary(&products, u * product_total) {
+                    let blocks = cumulative_pick(&Products(&w, &b), u * product_total, 3);
+                    assert_eq!(blocks, running(&products, u * product_total, 3), "round {round}");
+                }
+            }
+            let sequential: f64 = w.iter().sum();
+            let scale: f64 = w.iter().map(|x| x.abs()).sum();
+            assert!((sum_in_chains(&w) - sequential).abs() <= 1e-14 * scale, "round {round}");
+            let dot: f64 = w.iter().zip(&b).map(|(x, y)| x * y).sum();
+            let dot_scale: f64 = w.iter().zip(&b).map(|(x, y)| (x * y).abs()).sum();
+            assert!((dot_in_chains(&w, &b) - dot).abs() <= 1e-14 * dot_scale, "round {round}");
+        }
+        assert_eq!(pick(&[0.0, -1.0, 0.0], 0.5), 0);
+        assert_eq!(cumulative_pick(&Products(&[0.0; 9], &[1.0; 9]), 0.5, 7), 7);
+    }
+
+    /// The moments in chains are the moments summed in order, to rounding.
+    #[test]
+    fn moments_in_chains_equal_the_moments_in_order() {
+        use rand::{Rng, SeedableRng};
+        let mut rng = rand::rngs::StdRng::seed_from_u64(13);
+        for _ in 0..200 {
+            let n = rng.random_range(1..50);
+            let keys: Vec<Key> = (0..n)
+                .map(|_| Key { mass: 10f64.powf(rng.random_range(-15.0..10.0)), zoom: rng.random_range(0..60) })
+                .collect();
+            let groups: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..100.0)).collect();
+            let (a, p, m) = moments_in_chains(&keys, &groups);
+            let (a0, p0, m0) = moments_of(keys.iter().zip(&groups).map(|(k, g)| (g * exp2i(k.zoom), k.mass)));
+            assert_eq!(m, m0);
+            assert!((a / a0 - 1.0).abs() < 1e-13 && (p / p0 - 1.0).abs() < 1e-13, "{a} {a0} {p} {p0}");
+        }
+        for k in [-2000, -1075, -1023, -1022, 0, 1, 1023, 1024, 5000] {
+            assert_eq!(exp2i_clamped(k).to_bits(), exp2i(k).to_bits(), "2^{k}");
         }
     }
 }

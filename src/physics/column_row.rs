@@ -4,11 +4,11 @@
 //! A run computes a new family's row after almost every event (the product of
 //! a sticking collision is a family of its own), and a pair's data take nine
 //! divisions, five square roots and a logarithm in a chain: one pair at a
-//! time the row waits on their latency. Here the families' properties are kept beside
-//! them, one array per property ([`Lanes`], updated as families change), and
-//! one loop without branches computes every pair's relative velocity, rate
-//! coefficient, outcome, filling-factor change and headroom, several pairs
-//! per instruction: eight where the processor has AVX-512, four where it has
+//! time the row waits on their latency. Here the families' properties are
+//! kept beside them, one array per property ([`Lanes`], updated as families
+//! change), and one loop without branches computes every pair's relative
+//! velocity, rate coefficient, outcome, filling-factor change and headroom,
+//! several pairs per instruction: eight where the processor has AVX-512, four where it has
 //! AVX2 (both found when the program runs), two in WebAssembly with its
 //! 128-bit vectors; elsewhere pairs are computed one at a time. The loop
 //! does exactly the operations of

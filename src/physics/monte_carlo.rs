@@ -474,7 +474,7 @@ fn exponent_of(y: f64) -> f64 {
 }
 
 /// The significand of a positive normal number, in [1, 2).
-pub(crate) fn significand_of(y: f64) -> f64 {
+fn significand_of(y: f64) -> f64 {
     f64::from_bits((y.to_bits() & SIGNIFICAND) | 1f64.to_bits())
 }
 

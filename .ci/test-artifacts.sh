@@ -19,7 +19,15 @@ bin=$(realpath "$2")
 shots=$(realpath -m "$3")
 mkdir -p "$shots"
 work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+wheel_pid=""
+cleanup() {
+    if [ -n "$wheel_pid" ]; then
+        kill "$wheel_pid" 2>/dev/null || true
+        wait "$wheel_pid" 2>/dev/null || true
+    fi
+    rm -rf "$work"
+}
+trap cleanup EXIT
 version=$(awk -F'"' '/^version = / { print $2; exit }' Cargo.toml)
 
 echo "== the Linux archive"
@@ -47,6 +55,26 @@ if [ -n "$hints" ]; then
 fi
 HOME="$work/home" sh "$linux/install.sh" --uninstall >/dev/null
 test ! -e "$work/home/.local/bin/grainscope"
+
+# The wheel's test runs beside Wine's (each keeps one process busy, and
+# Wine's window test waits half a minute): its output is printed after.
+wheel_log="$work/wheel.log"
+(
+    set -euo pipefail
+    wheel=$(ls "$out"/grainscope-*-abi3-manylinux*.whl)
+    python3 -m venv "$work/venv"
+    clean_path="$work/venv/bin:/usr/local/bin:/usr/bin:/bin"
+    if PATH="$clean_path" command -v cargo rustc; then
+        echo "cargo or rustc is on the clean PATH" >&2
+        exit 1
+    fi
+    PATH="$clean_path" "$work/venv/bin/pip" install -q --only-binary :all: "$wheel[test]"
+    repo=$PWD
+    cd "$work"
+    PATH="$clean_path" GRAINSCOPE_BIN="$bin" NOTEBOOK_OUT="$shots/grainscope-from-python.ipynb" \
+        "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$repo/python/tests"
+) >"$wheel_log" 2>&1 &
+wheel_pid=$!
 
 echo "== the Windows archive under Wine"
 (cd "$work" && unzip -q "$out/grainscope-$version-x86_64-windows.zip")
@@ -87,15 +115,13 @@ echo "   $compared presets equal Linux's to 1e-6 relative"
 test "$compared" -ge 20
 SCREEN=1024x768 WAIT=25 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice
 
-echo "== the wheel in a fresh virtual environment, with no Rust on PATH"
-wheel=$(ls "$out"/grainscope-*-abi3-manylinux*.whl)
-python3 -m venv "$work/venv"
-clean_path="$work/venv/bin:/usr/local/bin:/usr/bin:/bin"
-if PATH="$clean_path" command -v cargo rustc; then
-    echo "cargo or rustc is on the clean PATH" >&2
+echo "== the wheel in a fresh virtual environment, with no Rust on PATH (run beside Wine's test)"
+wheel_status=0
+wait "$wheel_pid" || wheel_status=$?
+wheel_pid=""
+cat "$wheel_log"
+if [ "$wheel_status" != 0 ]; then
+    echo "the wheel's test failed (exit $wheel_status); its output is above" >&2
     exit 1
 fi
-PATH="$clean_path" "$work/venv/bin/pip" install -q --only-binary :all: "$wheel[test]"
-(cd "$work" && PATH="$clean_path" GRAINSCOPE_BIN="$bin" NOTEBOOK_OUT="$shots/grainscope-from-python.ipynb" \
-    "$work/venv/bin/python" -m pytest -q -p no:cacheprovider "$OLDPWD/python/tests")
 ls -l "$out"

@@ -455,22 +455,17 @@ impl PairRule {
 /// positive normal numbers it is read off their binary exponents and
 /// significands (the floor of the exact ratio, without a division);
 /// elsewhere it is taken from the rounded ratio.
-pub(crate) fn room(f: f64, x: f64, dx: f64) -> f64 {
+fn room(f: f64, x: f64, dx: f64) -> f64 {
     if dx <= 0.0 {
         return f64::INFINITY;
     }
     let fx = f * x;
     let normal = |y: f64| y > 0.0 && y.is_normal();
     if normal(fx) && normal(dx) {
-        exponent_of(fx) - exponent_of(dx) - if significand_of(fx) < significand_of(dx) { 1.0 } else { 0.0 }
+        floor_log2(fx) - floor_log2(dx) - if significand_of(fx) < significand_of(dx) { 1.0 } else { 0.0 }
     } else {
         floor_log2(fx / dx)
     }
-}
-
-/// The binary exponent of a positive normal number.
-fn exponent_of(y: f64) -> f64 {
-    f64::from(((y.to_bits() >> 52) & 0x7ff) as i32 - 1023)
 }
 
 /// The significand of a positive normal number, in [1, 2).
@@ -1791,7 +1786,7 @@ fn moments_in_chains(keys: &[Key], groups: &[f64]) -> (f64, f64, f64) {
         ((c[0] + c[1]) + (c[2] + c[3]), (m1[0] + m1[1]) + (m1[2] + m1[3]), (m2[0] + m2[1]) + (m2[2] + m2[3]));
     let mut max = max[0].max(max[1]).max(max[2].max(max[3]));
     for (key, groups) in tail {
-        let g = groups * exp2i(key.zoom);
+        let g = groups * exp2i_clamped(key.zoom);
         c += g;
         m1 += g * key.mass;
         m2 += g * key.mass * key.mass;

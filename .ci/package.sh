@@ -20,6 +20,10 @@
 #   its own while other builds use CARGO_TARGET_DIR:
 #     .ci/package.sh --prepare-windows   installs what the Windows build needs
 #     .ci/package.sh --build-windows     builds grainscope.exe and nothing else
+#   and so that the macOS check and the wheel can run beforehand, while
+#   another step leaves a core idle:
+#     .ci/package.sh --macos-and-wheel [OUT]   the macOS check, then the wheel into OUT
+#     .ci/package.sh --archives [OUT]          the two archives alone
 set -euo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_TARGET_DIR="${CARGO_TARGET_DIR:-$HOME/.cache/grainscope-target}"
@@ -46,6 +50,19 @@ case "${1:-}" in
     --build-windows)
         build_windows
         exit 0
+        ;;
+esac
+# What this run makes: both archives, and the macOS check and the wheel.
+archives=1
+macos_and_wheel=1
+case "${1:-}" in
+    --macos-and-wheel)
+        archives=0
+        shift
+        ;;
+    --archives)
+        macos_and_wheel=0
+        shift
         ;;
 esac
 out=$(realpath -m "${1:-ci-output/release}")
@@ -79,6 +96,29 @@ pack_zip() {
     (cd "$1" && find "$2" -print | LC_ALL=C sort | zip -X -q -9 "$3.tmp" -@)
     mv "$3.tmp" "$3"
 }
+
+# The macOS check and the wheel: builds only, which share nothing with the
+# archives (maturin's zig linker enters every crate's fingerprint).
+macos_and_wheel() {
+    echo "== macOS on Apple silicon: cargo check"
+    rustup target add aarch64-apple-darwin >/dev/null
+    cargo check --release --target aarch64-apple-darwin --bin grainscope
+
+    echo "== the Python wheel (maturin, zig as the linker)"
+    local venv="$HOME/.cache/grainscope-build-venv"
+    if [ ! -x "$venv/bin/maturin" ] || ! "$venv/bin/python" -c "import ziglang" 2>/dev/null; then
+        python3 -m venv "$venv"
+        "$venv/bin/pip" install -q "maturin>=1.9,<2" "ziglang>=0.13,<0.16"
+    fi
+    rm -f "$out"/grainscope-*.whl
+    PATH="$venv/bin:$PATH" maturin build --release --zig --compatibility manylinux2014 \
+        --manifest-path python/Cargo.toml --out "$out" --quiet
+}
+if [ "$archives" = 0 ]; then
+    macos_and_wheel
+    ls -l "$out"
+    exit 0
+fi
 
 echo "== Linux x86_64"
 cargo build --release --bin grainscope
@@ -142,17 +182,7 @@ EOF
 sed -i 's/$/\r/' "$dir/INSTALL.txt"
 pack_zip "$stage" "$name" "$out/$name.zip"
 
-echo "== macOS on Apple silicon: cargo check"
-rustup target add aarch64-apple-darwin >/dev/null
-cargo check --release --target aarch64-apple-darwin --bin grainscope
-
-echo "== the Python wheel (maturin, zig as the linker)"
-venv="$HOME/.cache/grainscope-build-venv"
-if [ ! -x "$venv/bin/maturin" ] || ! "$venv/bin/python" -c "import ziglang" 2>/dev/null; then
-    python3 -m venv "$venv"
-    "$venv/bin/pip" install -q "maturin>=1.9,<2" "ziglang>=0.13,<0.16"
+if [ "$macos_and_wheel" = 1 ]; then
+    macos_and_wheel
 fi
-rm -f "$out"/grainscope-*.whl
-PATH="$venv/bin:$PATH" maturin build --release --zig --compatibility manylinux2014 \
-    --manifest-path python/Cargo.toml --out "$out" --quiet
 ls -l "$out"

@@ -91,7 +91,12 @@ slow="mass-distribution|families|erosion-balance|kernel-tests|disk-map|surface-d
 compared=0
 for preset in $("$bin" presets | awk -v slow="^($slow)\$" '$2 !~ slow { sub(/\.ron$/, "", $1); print $1 }'); do
     "$bin" run "$preset" --json >"$work/linux.json"
-    "$wine" "$windows/grainscope.exe" run "$preset" --json | tr -d '\r' >"$work/windows.json"
+    if ! "$wine" "$windows/grainscope.exe" run "$preset" --json >"$work/windows.raw"; then
+        echo "$preset: grainscope.exe run under Wine failed; its output:" >&2
+        cat "$work/windows.raw" >&2
+        exit 1
+    fi
+    tr -d '\r' <"$work/windows.raw" >"$work/windows.json"
     python3 - "$preset" "$work/linux.json" "$work/windows.json" <<'EOF'
 import json, math, sys
 name, a, b = sys.argv[1], json.load(open(sys.argv[2])), json.load(open(sys.argv[3]))
@@ -113,7 +118,13 @@ EOF
 done
 echo "   $compared presets equal Linux's to 1e-6 relative"
 test "$compared" -ge 20
-SCREEN=1024x768 WAIT=25 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice
+# Wine's first window in a fresh prefix can take longer than 25 s on a busy
+# machine (a cold run once saw a black screen there, and a window at once
+# when run again): a blank screen gets one more try with a minute's wait.
+if ! SCREEN=1024x768 WAIT=25 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice; then
+    echo "the Windows window: nothing drawn after 25 s; once more, waiting 60 s"
+    SCREEN=1024x768 WAIT=60 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice
+fi
 
 echo "== the wheel in a fresh virtual environment, with no Rust on PATH (run beside Wine's test)"
 wheel_status=0

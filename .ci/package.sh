@@ -42,6 +42,9 @@ build_windows() {
     CARGO_TARGET_DIR="$windows_target" CARGO_TARGET_X86_64_PC_WINDOWS_GNU_LINKER=x86_64-w64-mingw32-gcc \
         cargo build --release --target x86_64-pc-windows-gnu --bin grainscope
 }
+# What this run makes: both archives, and the macOS check and the wheel.
+archives=1
+macos_and_wheel=1
 case "${1:-}" in
     --prepare-windows)
         prepare_windows
@@ -51,11 +54,6 @@ case "${1:-}" in
         build_windows
         exit 0
         ;;
-esac
-# What this run makes: both archives, and the macOS check and the wheel.
-archives=1
-macos_and_wheel=1
-case "${1:-}" in
     --macos-and-wheel)
         archives=0
         shift

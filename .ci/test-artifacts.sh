@@ -122,7 +122,7 @@ test "$compared" -ge 20
 # machine (a cold run once saw a black screen there, and a window at once
 # when run again): a blank screen gets one more try with a minute's wait.
 if ! SCREEN=1024x768 WAIT=25 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice; then
-    echo "the Windows window: nothing drawn after 25 s; once more, waiting 60 s"
+    echo "the Windows window failed its test (above); once more, waiting 60 s"
     SCREEN=1024x768 WAIT=60 bash .ci/smoke-window.sh "$wine" "$shots/windows-window.png" "$windows/grainscope.exe" gui restitution-ice
 fi
 

@@ -5,4 +5,4 @@ mod rosenbrock;
 pub mod sampling;
 
 pub use roots::{Root, illinois};
-pub use rosenbrock::{Matrix, Rosenbrock4, SolverError, SolverStats, State, StiffSystem};
+pub use rosenbrock::{ClockInstant, LogClock, Matrix, Rosenbrock4, SolverError, SolverStats, State, StiffSystem};

@@ -102,6 +102,88 @@ const C: [[f64; 5]; 5] = [
     ],
 ];
 
+// The coefficients d_i of ∂f/∂t of the same method, for non-autonomous
+// systems (here: an autonomous one in a changed time); its stage times are
+// c = (0, 0.386, 0.21, 0.63, 1, 1).
+const D: [f64; 6] = [0.25, -0.1043, 0.1035, -0.0362, 0.0, 0.0];
+
+/// A change of the independent variable, t = t(σ), for a solution that
+/// varies on the time scale of t itself at first (a power law in t, such as
+/// a crack that starts far from equilibrium at t = 0) and on a fixed time
+/// scale later: dt/dσ = (t + t₀) t₁/(t + t₀ + t₁) in effect, logarithmic
+/// time ln(1 + t/t₀) while t ≪ t₁ and t/t₁ beyond, as the closed form
+/// t(σ) = t₁ ln(1 + (t₀/t₁)(e^σ − 1)).
+///
+/// A fourth-order method in t needs a step of about a quarter of t to follow
+/// a power law to 10⁻⁵, so every decade of t costs some ten steps; in
+/// logarithmic time the same solution is nearly linear.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct LogClock {
+    t1: f64,
+    /// t₀/t₁, ln t₀/t₁ and ln(1 − t₀/t₁).
+    a: f64,
+    ln_a: f64,
+    ln_1ma: f64,
+}
+
+/// A point σ of a [`LogClock`]'s changed time, with b = ((1 − a)/a)e^{−σ}
+/// (a = t₀/t₁), in which dt/dσ = t₁/(1 + b): a step multiplies b by
+/// e^{−h}, and a stage's rate needs no more.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ClockInstant {
+    sigma: f64,
+    b: f64,
+}
+
+impl LogClock {
+    /// A clock with the inner time scale `t0` and the outer one `t1` (0 < t0 < t1).
+    pub fn new(t0: f64, t1: f64) -> Self {
+        let a = t0 / t1;
+        Self { t1, a, ln_a: a.ln(), ln_1ma: (-a).ln_1p() }
+    }
+
+    /// σ = 0, where t = 0.
+    pub fn start(&self) -> ClockInstant {
+        ClockInstant { sigma: 0.0, b: (1.0 - self.a) / self.a }
+    }
+
+    /// The instant `h` later in σ.
+    pub fn after(&self, at: ClockInstant, h: f64) -> ClockInstant {
+        ClockInstant { sigma: at.sigma + h, b: at.b * (-h).exp() }
+    }
+
+    /// The time t at an instant: t₁ ln(1 − a + a e^σ), written so that
+    /// neither a small t nor a large σ loses digits.
+    pub fn time(&self, at: ClockInstant) -> f64 {
+        if at.b > 1e-200 {
+            self.t1 * (self.ln_1ma + (1.0 / at.b).ln_1p())
+        } else {
+            self.t1 * (at.sigma + self.ln_a + at.b.ln_1p())
+        }
+    }
+
+    /// dt/dσ at an instant.
+    pub fn rate(&self, at: ClockInstant) -> f64 {
+        self.t1 / (1.0 + at.b)
+    }
+
+    /// dt/dσ at each stage of a step of `h` from `at`, and d²t/dσ² at `at`.
+    fn stage_rates(&self, at: ClockInstant, h: f64) -> ([f64; 6], f64) {
+        let r = |b: f64| self.t1 / (1.0 + b);
+        let (e21, e386, e1) = ((-0.21 * h).exp(), (-0.386 * h).exp(), (-h).exp());
+        let b = at.b;
+        let (r0, r1) = (r(b), r(b * e1));
+        ([r0, r(b * e386), r(b * e21), r(b * (e21 * e21 * e21)), r1, r1], r0 * b / (1.0 + b))
+    }
+}
+
+/// What a step in changed time σ needs: dt/dσ at each stage, and
+/// d²t/dσ² f(yₙ) (the time derivative of the changed right-hand side).
+struct Tick<const N: usize> {
+    rate: [f64; 6],
+    slope_f: State<N>,
+}
+
 /// LU factorisation with partial pivoting of a small dense matrix.
 ///
 /// Written out because nalgebra's `LU` needs type-level dimension bounds
@@ -237,6 +319,7 @@ impl<const N: usize> Rosenbrock4<N> {
     /// refused a stage state.
     /// One step of size `h` from `y`, where `f(y)` and the Jacobian are
     /// `at` (shared by the retries of a rejected step).
+    #[cfg(test)]
     fn try_step<S: StiffSystem<N>>(
         &mut self,
         sys: &S,
@@ -244,14 +327,34 @@ impl<const N: usize> Rosenbrock4<N> {
         at: &(State<N>, Matrix<N>),
         h: f64,
     ) -> Option<(State<N>, f64)> {
+        self.try_step_ticked(sys, y, at, h, None)
+    }
+
+    /// [`try_step`](Self::try_step) in changed time σ when `tick` is given:
+    /// the system is then dy/dσ = (dt/dσ)(σ) f(y), non-autonomous, and each
+    /// stage adds h dᵢ times its σ-derivative.
+    fn try_step_ticked<S: StiffSystem<N>>(
+        &mut self,
+        sys: &S,
+        y: &State<N>,
+        at: &(State<N>, Matrix<N>),
+        h: f64,
+        tick: Option<&Tick<N>>,
+    ) -> Option<(State<N>, f64)> {
         let (f0, jac) = at;
-        let mut w = -jac;
+        let mut w = match tick {
+            Some(t) => -(jac * t.rate[0]),
+            None => -jac,
+        };
         for i in 0..N {
             w[(i, i)] += 1.0 / (GAM * h);
         }
         let lu = Lu::factor(w, S::DRIVING.min(N))?;
         let mut k = [State::<N>::zeros(); 6];
-        k[0] = lu.solve(f0)?;
+        k[0] = match tick {
+            Some(t) => lu.solve(&(f0 * t.rate[0] + t.slope_f * (h * D[0])))?,
+            None => lu.solve(f0)?,
+        };
         let inv_h = 1.0 / h;
         for stage in 1..6 {
             let mut yi = *y;
@@ -260,8 +363,11 @@ impl<const N: usize> Rosenbrock4<N> {
                 yi += A[stage - 1][j] * k[j];
                 coupling += (C[stage - 1][j] * inv_h) * k[j];
             }
-            let f = sys.rhs(&yi)?;
+            let mut f = sys.rhs(&yi)?;
             self.stats.rhs_evals += 1;
+            if let Some(t) = tick {
+                f = f * t.rate[stage] + t.slope_f * (h * D[stage]);
+            }
             k[stage] = lu.solve(&(f + coupling))?;
         }
         let mut y_new = *y + k[5];
@@ -293,6 +399,33 @@ impl<const N: usize> Rosenbrock4<N> {
         y: &State<N>,
         h_max: f64,
     ) -> Result<(State<N>, f64), SolverError> {
+        self.advance_in(sys, y, h_max, None)
+    }
+
+    /// [`advance`](Self::advance) in the changed time σ of `clock`, from
+    /// the instant `at`: the step control acts on the error per step of σ
+    /// (the step size kept between calls is in σ), `h_max` bounds the step
+    /// in t (as dt/dσ at `at` times the step in σ), and the instant after
+    /// the step is returned.
+    pub fn advance_clocked<S: StiffSystem<N>>(
+        &mut self,
+        sys: &S,
+        y: &State<N>,
+        h_max: f64,
+        clock: &LogClock,
+        at: ClockInstant,
+    ) -> Result<(State<N>, ClockInstant), SolverError> {
+        let (y_new, h) = self.advance_in(sys, y, h_max / clock.rate(at), Some((clock, at)))?;
+        Ok((y_new, clock.after(at, h)))
+    }
+
+    fn advance_in<S: StiffSystem<N>>(
+        &mut self,
+        sys: &S,
+        y: &State<N>,
+        h_max: f64,
+        clock: Option<(&LogClock, ClockInstant)>,
+    ) -> Result<(State<N>, f64), SolverError> {
         if self.stats.accepted >= self.max_steps {
             return Err(SolverError::TooManySteps(self.max_steps));
         }
@@ -305,7 +438,17 @@ impl<const N: usize> Rosenbrock4<N> {
             if h < self.h_min {
                 return Err(SolverError::StepSizeUnderflow { steps: self.stats.accepted, h });
             }
-            match at.as_ref().and_then(|at| self.try_step(sys, y, at, h)).filter(|(y_new, _)| sys.admissible(y, y_new))
+            let tick = match (clock, at.as_ref()) {
+                (Some((c, at)), Some((f0, _))) => {
+                    let (rate, slope) = c.stage_rates(at, h);
+                    Some(Tick { rate, slope_f: f0 * slope })
+                }
+                _ => None,
+            };
+            match at
+                .as_ref()
+                .and_then(|at| self.try_step_ticked(sys, y, at, h, tick.as_ref()))
+                .filter(|(y_new, _)| sys.admissible(y, y_new))
             {
                 Some((y_new, err)) if err <= 1.0 => {
                     self.stats.accepted += 1;
@@ -467,6 +610,85 @@ mod tests {
         let mut s = Rosenbrock4::<1>::new(1e-9, State::<1>::new(1.0), 10.0);
         let y = s.integrate(&Walled, State::<1>::new(0.0), 3.0).expect("integrates");
         assert!((y[0] - (1.0 - (-3.0f64).exp())).abs() < 1e-7);
+    }
+
+    #[test]
+    fn the_clock_is_logarithmic_then_linear_and_consistent() {
+        let c = LogClock::new(1e-9, 0.3);
+        let at = |sigma: f64| c.after(c.start(), sigma);
+        assert!(c.time(c.start()).abs() < 1e-24);
+        assert!((c.rate(c.start()) - 1e-9).abs() < 1e-24);
+        // Early on, t + t₀ = t₀e^σ; late, t grows by t₁ per unit of σ.
+        for sigma in [1e-3_f64, 0.1, 5.0] {
+            let t = 1e-9 * sigma.exp_m1();
+            assert!((c.time(at(sigma)) - t).abs() < 1e-6 * t, "σ = {sigma}");
+        }
+        assert!((c.rate(at(60.0)) - 0.3).abs() < 1e-15);
+        // dt/dσ is the derivative of t(σ), across the change of formula
+        // (b = 10⁻²⁰⁰ near σ = 481) and beyond b's underflow (σ ≈ 765).
+        let mut far = c.start();
+        for _ in 0..100 {
+            far = c.after(far, 10.0);
+        }
+        assert!((c.time(far) - c.time(at(1000.0))).abs() < 1e-9 * c.time(far));
+        for sigma in [0.5, 10.0, 20.0, 400.0, 480.0, 482.0, 900.0] {
+            let h = 1e-5;
+            let numeric = (c.time(at(sigma + h)) - c.time(at(sigma - h))) / (2.0 * h);
+            let rate = c.rate(at(sigma));
+            assert!((numeric - rate).abs() < 1e-6 * rate, "σ = {sigma}: {numeric} vs {rate}");
+            let (rates, slope) = c.stage_rates(at(sigma), 0.7);
+            assert_eq!(rates[0], rate);
+            for (r, ci) in rates.iter().zip([0.0, 0.386, 0.21, 0.63, 1.0, 1.0]) {
+                assert!((r - c.rate(at(sigma + ci * 0.7))).abs() <= 1e-14 * r, "σ = {sigma}, c = {ci}");
+            }
+            let numeric = (c.rate(at(sigma + h)) - c.rate(at(sigma - h))) / (2.0 * h);
+            assert!((numeric - slope).abs() < 1e-6 * rate, "σ = {sigma}: {numeric} vs {slope}");
+        }
+    }
+
+    #[test]
+    fn steps_in_changed_time_converge_at_fourth_order() {
+        // y' = −y in the changed time σ: the stepped system is
+        // non-autonomous, which exercises the stage times and the
+        // coefficients of ∂f/∂σ.
+        let sys = system(0.0);
+        let clock = LogClock::new(0.05, 0.3);
+        let sigma_end = 4.0;
+        let t_end = clock.time(clock.after(clock.start(), sigma_end));
+        let run = |n: usize| {
+            let h = sigma_end / n as f64;
+            let mut s = Rosenbrock4::<3>::new(1.0, State::<3>::from_element(1.0), h);
+            let mut y = State::<3>::new(1.0, 0.0, 0.0);
+            let mut at = clock.start();
+            for _ in 0..n {
+                let (rate, slope) = clock.stage_rates(at, h);
+                let f = sys.rhs_and_jacobian(&y).expect("in domain");
+                let tick = Tick { rate, slope_f: f.0 * slope };
+                y = s.try_step_ticked(&sys, &y, &f, h, Some(&tick)).expect("step").0;
+                at = clock.after(at, h);
+            }
+            (y[0] - exact_first(t_end)).abs()
+        };
+        let (e1, e2, e3) = (run(10), run(20), run(40));
+        let p1 = (e1 / e2).log2();
+        let p2 = (e2 / e3).log2();
+        assert!(p1 > 3.6 && p2 > 3.6, "observed orders {p1:.2}, {p2:.2} ({e1:.2e}, {e2:.2e}, {e3:.2e})");
+    }
+
+    #[test]
+    fn a_clocked_run_reaches_the_solution_in_time() {
+        // The adaptive path: y' = −y to t = 3 in changed time, from
+        // t₀ = 10⁻⁹, with the bound on the step in t.
+        let sys = system(0.0);
+        let clock = LogClock::new(1e-9, 0.3);
+        let mut s = Rosenbrock4::<3>::new(1e-9, State::<3>::from_element(1.0), 0.1);
+        let (mut y, mut at) = (State::<3>::new(1.0, 0.0, 0.0), clock.start());
+        while clock.time(at) < 3.0 {
+            (y, at) = s.advance_clocked(&sys, &y, 0.5, &clock, at).expect("steps");
+        }
+        let t = clock.time(at);
+        assert!((y[0] - exact_first(t)).abs() < 1e-8, "{} vs {}", y[0], exact_first(t));
+        assert!(s.stats.accepted < 1000 && s.stats.rejected < 10, "{:?}", s.stats);
     }
 
     /// A damped oscillator with its dissipated energy as a quadrature.

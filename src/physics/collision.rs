@@ -402,7 +402,7 @@ impl StiffSystem<5> for ContactOde {
 /// Where the integrator's clock turns from logarithmic time to time, in
 /// Hertz times (see [`LogClock`]). Over reference ice at 3–25 m/s and the
 /// hard cases T_vis = 10⁻¹⁴ and 10⁻¹⁵ s at 1.5–20 m/s, 0.3 t_H took the
-/// fewest steps for a given worst error among 0.03–3 t_H.
+/// fewest steps for a given worst error among 0.003–3 t_H.
 const CLOCK_TIME: f64 = 0.3;
 
 /// Simulates one head-on collision at impact speed `velocity` (m/s).

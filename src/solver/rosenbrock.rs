@@ -167,6 +167,12 @@ impl LogClock {
         self.t1 / (1.0 + at.b)
     }
 
+    /// What a step of `h` from `at` needs, where f(yₙ) is `f0`.
+    fn tick<const N: usize>(&self, at: ClockInstant, h: f64, f0: &State<N>) -> Tick<N> {
+        let (rate, slope) = self.stage_rates(at, h);
+        Tick { rate, slope_f: f0 * slope }
+    }
+
     /// dt/dσ at each stage of a step of `h` from `at`, and d²t/dσ² at `at`.
     fn stage_rates(&self, at: ClockInstant, h: f64) -> ([f64; 6], f64) {
         let r = |b: f64| self.t1 / (1.0 + b);
@@ -314,11 +320,7 @@ impl<const N: usize> Rosenbrock4<N> {
         Self { rtol, scale, h_min: h0 * 1e-12, max_steps: 200_000, h: h0, stats: SolverStats::default(), last: None }
     }
 
-    /// One attempted step of size `h` from `y`. Returns the new state and the
-    /// scaled error norm (≤ 1 means acceptable), or `None` if the system
-    /// refused a stage state.
-    /// One step of size `h` from `y`, where `f(y)` and the Jacobian are
-    /// `at` (shared by the retries of a rejected step).
+    /// [`try_step_ticked`](Self::try_step_ticked) in time itself.
     #[cfg(test)]
     fn try_step<S: StiffSystem<N>>(
         &mut self,
@@ -330,9 +332,12 @@ impl<const N: usize> Rosenbrock4<N> {
         self.try_step_ticked(sys, y, at, h, None)
     }
 
-    /// [`try_step`](Self::try_step) in changed time σ when `tick` is given:
-    /// the system is then dy/dσ = (dt/dσ)(σ) f(y), non-autonomous, and each
-    /// stage adds h dᵢ times its σ-derivative.
+    /// One attempted step of size `h` from `y`, where `f(y)` and the
+    /// Jacobian are `at` (shared by the retries of a rejected step). Returns
+    /// the new state and the scaled error norm (≤ 1 means acceptable), or
+    /// `None` if the system refused a stage state. With a `tick` the step is
+    /// in changed time σ: the system is then dy/dσ = (dt/dσ)(σ) f(y),
+    /// non-autonomous, and each stage adds h dᵢ times its σ-derivative.
     fn try_step_ticked<S: StiffSystem<N>>(
         &mut self,
         sys: &S,
@@ -439,10 +444,7 @@ impl<const N: usize> Rosenbrock4<N> {
                 return Err(SolverError::StepSizeUnderflow { steps: self.stats.accepted, h });
             }
             let tick = match (clock, at.as_ref()) {
-                (Some((c, at)), Some((f0, _))) => {
-                    let (rate, slope) = c.stage_rates(at, h);
-                    Some(Tick { rate, slope_f: f0 * slope })
-                }
+                (Some((c, at)), Some((f0, _))) => Some(c.tick(at, h, f0)),
                 _ => None,
             };
             match at
@@ -521,6 +523,11 @@ mod tests {
         (-t).exp()
     }
 
+    /// The orders observed between errors at steps h, h/2 and h/4.
+    fn orders([e1, e2, e3]: [f64; 3]) -> [f64; 2] {
+        [(e1 / e2).log2(), (e2 / e3).log2()]
+    }
+
     #[test]
     fn fixed_steps_converge_at_fourth_order() {
         // y' = -y, fixed steps: halving h must cut the error by ~2^4.
@@ -539,8 +546,7 @@ mod tests {
         let e1 = run(10);
         let e2 = run(20);
         let e3 = run(40);
-        let p1 = (e1 / e2).log2();
-        let p2 = (e2 / e3).log2();
+        let [p1, p2] = orders([e1, e2, e3]);
         assert!(p1 > 3.7 && p2 > 3.7, "observed orders {p1:.2}, {p2:.2}");
     }
 
@@ -570,8 +576,7 @@ mod tests {
         let reference = run(20_000);
         let err = |n: usize| (run(n) - reference).norm();
         let (e1, e2, e3) = (err(20), err(40), err(80));
-        let p1 = (e1 / e2).log2();
-        let p2 = (e2 / e3).log2();
+        let [p1, p2] = orders([e1, e2, e3]);
         assert!(p1 > 3.6 && p2 > 3.6, "observed orders {p1:.2}, {p2:.2}");
     }
 
@@ -661,17 +666,14 @@ mod tests {
             let mut y = State::<3>::new(1.0, 0.0, 0.0);
             let mut at = clock.start();
             for _ in 0..n {
-                let (rate, slope) = clock.stage_rates(at, h);
                 let f = sys.rhs_and_jacobian(&y).expect("in domain");
-                let tick = Tick { rate, slope_f: f.0 * slope };
-                y = s.try_step_ticked(&sys, &y, &f, h, Some(&tick)).expect("step").0;
+                y = s.try_step_ticked(&sys, &y, &f, h, Some(&clock.tick(at, h, &f.0))).expect("step").0;
                 at = clock.after(at, h);
             }
             (y[0] - exact_first(t_end)).abs()
         };
         let (e1, e2, e3) = (run(10), run(20), run(40));
-        let p1 = (e1 / e2).log2();
-        let p2 = (e2 / e3).log2();
+        let [p1, p2] = orders([e1, e2, e3]);
         assert!(p1 > 3.6 && p2 > 3.6, "observed orders {p1:.2}, {p2:.2} ({e1:.2e}, {e2:.2e}, {e3:.2e})");
     }
 

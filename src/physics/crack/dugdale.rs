@@ -223,7 +223,7 @@ const BIN_DEGREE: usize = 5;
 /// its leading `BIN_BITS` significand bits pick, each a 32nd of a factor of
 /// two wide (3 % of r, a 32nd of ln 2 in z): an evaluation takes neither
 /// the logarithm for z nor the exponential of ln|g|, only integer
-/// arithmetic on r's bits and two Horner schemes. On each bin |g| is the
+/// arithmetic on r's bits and two polynomials. On each bin |g| is the
 /// polynomial of degree 5 in u ∈ [−1, 1) (linear in r) through the
 /// branch's values at the six Chebyshev points; over the bins it differs
 /// from the branch by below 10⁻⁹ relative, and its slope by below 10⁻⁶ (a
@@ -302,8 +302,12 @@ impl Binned {
         // r's place in its bin, u ∈ [−1, 1), from the bits below the bin's.
         let t = (bits & ((1 << BIN_SHIFT) - 1)) as f64 * (1.0 / (1u64 << BIN_SHIFT) as f64);
         let u = 2.0 * t - 1.0;
-        let g = c[0] + u * (c[1] + u * (c[2] + u * (c[3] + u * (c[4] + u * c[5]))));
-        let dg_du = c[1] + u * (2.0 * c[2] + u * (3.0 * c[3] + u * (4.0 * c[4] + u * 5.0 * c[5])));
+        // Estrin's scheme: pairs of terms side by side, half the chain of
+        // dependent operations of Horner's (each evaluation waits on it).
+        let u2 = u * u;
+        let u4 = u2 * u2;
+        let g = (c[0] + c[1] * u) + u2 * (c[2] + c[3] * u) + u4 * (c[4] + c[5] * u);
+        let dg_du = (c[1] + 2.0 * c[2] * u) + u2 * (3.0 * c[3] + 4.0 * c[4] * u) + u4 * (5.0 * c[5]);
         // du/dr = 2/w for the bin's width w = 2^(E − 1023 − BIN_BITS), E
         // r's biased exponent (normal here): 2/w = 2^(1024 + BIN_BITS − E),
         // whose biased exponent is 2047 + BIN_BITS − E.

@@ -322,8 +322,9 @@ impl ContactOde {
             return None;
         }
         let s = a2.sqrt();
-        let beta = self.cb * u * u / s;
-        let (g, dg) = self.crack.speed(beta)?;
+        let p = self.cb * u * u;
+        let beta = p / s;
+        let (g, dg) = self.crack.speed_of_ratio(p, s, beta)?;
         Some((u, s, beta, g, dg))
     }
 

@@ -198,6 +198,19 @@ impl ResolvedLaw {
             None => self.law.greenwood(beta),
         }
     }
+
+    /// [`ResolvedLaw::speed`] at β = `p`/`s` (`s` > 0), with that quotient
+    /// `beta` given: the full relation reads its bins from p and s with one
+    /// division, which need not wait for β's.
+    pub fn speed_of_ratio(&self, p: f64, s: f64, beta: f64) -> Option<(f64, f64)> {
+        if !self.defined_at(beta) {
+            return None;
+        }
+        match &self.table {
+            Some(t) => Some(t.speed_of_ratio(p, s)),
+            None => self.law.greenwood(beta),
+        }
+    }
 }
 
 /// Half-width of the window around β = 1 where the general law is bridged.

@@ -190,13 +190,7 @@ impl ResolvedLaw {
 
     /// g(β) and dg/dβ as [`CrackLaw::speed`]; `None` outside k < β < 1/k.
     pub fn speed(&self, beta: f64) -> Option<(f64, f64)> {
-        if !self.defined_at(beta) {
-            return None;
-        }
-        match &self.table {
-            Some(t) => Some(t.speed(beta)),
-            None => self.law.greenwood(beta),
-        }
+        self.speed_of_ratio(beta, 1.0, beta)
     }
 
     /// [`ResolvedLaw::speed`] at β = `p`/`s` (`s` > 0), with that quotient

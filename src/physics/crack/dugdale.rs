@@ -416,25 +416,9 @@ impl FullLaw {
 
     /// g(β) = σ₀²T ȧ/(E*γ) and dg/dβ for k < β < 1/k.
     pub fn speed(&self, beta: f64) -> (f64, f64) {
-        let k = self.k;
-        if beta < 1.0 {
-            // r = (β − k)/(1 − β): dr/dβ = (1 − k)/(1 − β)².
-            let inv_ob = 1.0 / (1.0 - beta);
-            let (g, dg_dr) = self.healing.eval((beta - k) * inv_ob);
-            (g, dg_dr * ((1.0 - k) * inv_ob * inv_ob))
-        } else if beta > 1.0 {
-            // g = −|g| with r = (1/β − k)/(1 − 1/β): dr/dβ = −(1 − k)/(β(1 − 1/β))².
-            let b = 1.0 / beta;
-            let inv_ob = 1.0 / (1.0 - b);
-            let (g, dg_dr) = self.opening.eval((b - k) * inv_ob);
-            (-g, dg_dr * ((1.0 - k) * inv_ob * inv_ob) * (b * b))
-        } else {
-            (0.0, 0.0)
-        }
+        self.speed_of_ratio(beta, 1.0)
     }
-}
 
-impl FullLaw {
     /// [`FullLaw::speed`] at β = p/s (s > 0). r is (p − ks)/(s − p) on the
     /// healing branch and (s − kp)/(p − s) on the opening one (r of 1/β),
     /// and on both dg/dβ = d|g|/dr · (1 − k)(s/|s − p|)²: one division, where

@@ -159,6 +159,24 @@ fn energy_bookkeeping_closes() {
 }
 
 #[test]
+fn a_collapse_ends_where_the_crack_law_ends_and_keeps_the_energy() {
+    // The collapse is integrated in ln β up to β = (1 − 10⁻³)/k: the last
+    // sample sits there, time runs on through the recorded steps, and the
+    // energy at the end (kinetic, elastic, surface and both dissipated
+    // parts) is the energy at the start to the tolerance (3.3–3.7 × 10⁻⁸ for
+    // the first two cases, 5 × 10⁻⁷ for T_vis = 10⁻¹⁵ s).
+    for (v, tv) in [(8.0, 1e-11), (4.0, 1e-14), (4.0, 1e-15), (100.0, 1e-10)] {
+        let s = Setup { t_vis: tv, ..ice() };
+        let c = collide(&s, v, &Options { rtol: 1e-6, record: true, ..opts() }).expect("collides");
+        let beta_end = (1.0 - 1e-3) / s.crack.k;
+        assert!((c.last.beta / beta_end - 1.0).abs() < 1e-6, "v = {v}, T_vis = {tv}: β {}", c.last.beta);
+        assert!(c.samples.windows(2).all(|w| w[1].t > w[0].t), "v = {v}, T_vis = {tv}");
+        let end = (c.last.total_energy() - c.samples[0].total_energy()).abs() / c.initial_kinetic;
+        assert!(end < 1e-6, "v = {v}, T_vis = {tv}: {end}");
+    }
+}
+
+#[test]
 fn plastic_restitution_is_continuous_at_the_yield_velocity() {
     let mut s = ice();
     s.yield_strength = Some(3e7);

@@ -40,8 +40,12 @@ fn searches(points: usize) -> [Search; 3] {
     ]
 }
 
+/// The fits' collisions at rtol 3 × 10⁻⁶: at 10⁻⁵ e is off by up to
+/// 3.4 × 10⁻⁵ over this experiment's grid (γ 0.03–1 J/m², T_vis
+/// 10⁻¹²–10⁻⁹ s), enough to move χ²'s shallow minimum from one grid node to
+/// another; from 3 × 10⁻⁶ down the best fit is the same to every digit.
 fn opts() -> Options {
-    Options { rtol: 1e-5, ..Options::default() }
+    Options { rtol: 3e-6, ..Options::default() }
 }
 
 #[test]

@@ -63,7 +63,8 @@ pub enum SolverError {
     TooManySteps(usize),
 }
 
-/// Counters describing the work done by a [`Rosenbrock4`] integrator.
+/// Counters describing the work done by an integrator (a [`Rosenbrock4`],
+/// or [`dormand_prince`](super::dormand_prince)).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
 pub struct SolverStats {
     /// Accepted steps.
@@ -74,6 +75,15 @@ pub struct SolverStats {
     pub rhs_evals: usize,
     /// Jacobian evaluations (one per attempted step).
     pub jacobian_evals: usize,
+}
+
+impl std::ops::AddAssign for SolverStats {
+    fn add_assign(&mut self, other: Self) {
+        self.accepted += other.accepted;
+        self.rejected += other.rejected;
+        self.rhs_evals += other.rhs_evals;
+        self.jacobian_evals += other.jacobian_evals;
+    }
 }
 
 // RODAS4 of Hairer & Wanner (Solving ODEs II, Sect. IV.7), in the

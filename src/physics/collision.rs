@@ -349,7 +349,7 @@ impl ContactOde {
             if !(u > 0.0 && w < 0.0 && x < 0.0) {
                 return None;
             }
-            let (g, _) = self.crack.speed_of_ratio(beta, 1.0, beta)?;
+            let (g, _) = self.crack.speed(beta)?;
             let sdot = self.cg * g;
             let dt = s / sdot;
             let dlambda = 4.0 * s * s / u - 1.0 - 2.0 * self.rho / u * w * dt;
@@ -617,11 +617,12 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
         if stuck_at.is_none() && y_new[0] < 0.0 && y_new[1] < 0.0 && beta_new > 1.0 {
             // A collapse that ends before it reaches the branch where it
             // runs away (where the integration in β above takes over):
-            // |ȧ| only grows and |F_E| only falls from here, so the velocity can change by at most
-            // |F_E|/m* · a/|ȧ| before contact ends. Stop once that bound is
-            // a tenth of the tolerance instead of resolving the singularity:
-            // e then leaves out at most 0.1 rtol. The rest of the collapse
-            // is closed at once, with the energy it releases at the crack.
+            // |ȧ| only grows and |F_E| only falls from here, so the velocity
+            // can change by at most |F_E|/m* · a/|ȧ| before contact ends.
+            // Stop once that bound is a tenth of the tolerance instead of
+            // resolving the singularity: e then leaves out at most 0.1 rtol.
+            // The rest of the collapse is closed at once, with the energy it
+            // releases at the crack.
             if let (Some(f), Some(pt)) = (ode.rhs(&y_new), ode.point(&y_new)) {
                 let t_left = pt.s / pt.sdot.abs();
                 let dv = f[1].abs() * t_left;

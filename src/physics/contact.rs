@@ -2,6 +2,7 @@
 //! (thesis Sect. 1.3.3 and 2.2.1) and the closed-form collision estimates of
 //! Sect. 2.3.3.
 
+use crate::solver::{State, dormand_prince_step};
 use std::f64::consts::PI;
 
 /// The reduced quantities of a two-body contact. All SI.
@@ -163,9 +164,9 @@ impl Pair {
 /// between. The end is the zero of x, found by secant iteration on the length
 /// of the last step (x'' vanishes there, so the speed hardly depends on it).
 /// Within 5 × 10⁻⁹ of the same integration at tolerance 10⁻¹⁴ for
-/// 10⁻⁴ ≤ b ≤ 20, in about 20 µs. Hand-written: a two-component equation
-/// that ends on an event, which a general ODE crate would wrap in more code
-/// than the step itself.
+/// 10⁻⁴ ≤ b ≤ 20, in about 20 µs. The step is the solver's
+/// [`dormand_prince_step`]; the loop is written here because it ends on an
+/// event (x = 0) that [`crate::solver::dormand_prince`] does not look for.
 pub fn viscoelastic_restitution(b: f64) -> f64 {
     if b == 0.0 {
         return 1.0;
@@ -183,43 +184,15 @@ const VISCOELASTIC_TOLERANCE: f64 = 1e-10;
 /// (x, v) with step h: the fifth-order state and the difference to the
 /// embedded fourth-order one.
 fn dopri_step(b: f64, (x, v): (f64, f64), h: f64) -> ((f64, f64), (f64, f64)) {
-    let f = |x: f64, v: f64| {
-        let r = x.max(0.0).sqrt();
-        (v, -(x.max(0.0) * r + b * r * v))
+    let f = |_: f64, y: &State<2>| {
+        let r = y[0].max(0.0).sqrt();
+        Some(State::<2>::new(y[1], -(y[0].max(0.0) * r + b * r * y[1])))
     };
-    const A: [[f64; 6]; 6] = [
-        [1.0 / 5.0, 0.0, 0.0, 0.0, 0.0, 0.0],
-        [3.0 / 40.0, 9.0 / 40.0, 0.0, 0.0, 0.0, 0.0],
-        [44.0 / 45.0, -56.0 / 15.0, 32.0 / 9.0, 0.0, 0.0, 0.0],
-        [19372.0 / 6561.0, -25360.0 / 2187.0, 64448.0 / 6561.0, -212.0 / 729.0, 0.0, 0.0],
-        [9017.0 / 3168.0, -355.0 / 33.0, 46732.0 / 5247.0, 49.0 / 176.0, -5103.0 / 18656.0, 0.0],
-        [35.0 / 384.0, 0.0, 500.0 / 1113.0, 125.0 / 192.0, -2187.0 / 6784.0, 11.0 / 84.0],
-    ];
-    // Fifth-order weights minus the embedded fourth-order ones.
-    const E: [f64; 7] =
-        [71.0 / 57600.0, 0.0, -71.0 / 16695.0, 71.0 / 1920.0, -17253.0 / 339200.0, 22.0 / 525.0, -1.0 / 40.0];
-    let mut k = [(0.0, 0.0); 7];
-    k[0] = f(x, v);
-    for stage in 1..7 {
-        let (mut xs, mut vs) = (x, v);
-        for (j, a) in A[stage - 1].iter().enumerate().take(stage) {
-            xs += h * a * k[j].0;
-            vs += h * a * k[j].1;
-        }
-        k[stage] = f(xs, vs);
+    let y = State::<2>::new(x, v);
+    match f(0.0, &y).and_then(|k0| dormand_prince_step(&f, 0.0, &y, &k0, h)) {
+        Some((yn, _, e)) => ((yn[0], yn[1]), (e[0], e[1])),
+        None => ((f64::NAN, f64::NAN), (f64::NAN, f64::NAN)),
     }
-    // The last stage is taken at the new state (first same as last).
-    let (mut xn, mut vn) = (x, v);
-    for (j, a) in A[5].iter().enumerate() {
-        xn += h * a * k[j].0;
-        vn += h * a * k[j].1;
-    }
-    let (mut ex, mut ev) = (0.0, 0.0);
-    for (j, e) in E.iter().enumerate() {
-        ex += h * e * k[j].0;
-        ev += h * e * k[j].1;
-    }
-    ((xn, vn), (ex, ev))
 }
 
 /// [`viscoelastic_restitution`] at error tolerance `tol` (b > 0).

@@ -58,7 +58,9 @@ pub fn dormand_prince<const N: usize>(
             return Err(SolverError::StepSizeUnderflow { steps: stats.accepted, h });
         }
         let hs = direction * h;
-        match stage_all(&f, x, &y, &k0, hs, &mut stats) {
+        let stepped = dormand_prince_step(&f, x, &y, &k0, hs);
+        stats.rhs_evals += 6;
+        match stepped.filter(|(y_new, _, err)| y_new.iter().chain(err.iter()).all(|v| v.is_finite())) {
             Some((y_new, k_new, err)) => {
                 let mut sum = 0.0;
                 for i in 0..N {
@@ -91,16 +93,17 @@ pub fn dormand_prince<const N: usize>(
     Ok((y, stats))
 }
 
-/// One step of `h` from (x, y), where f(x, y) = `k0`: the fifth-order
-/// solution, f there (the next step's first stage) and the error estimate.
+/// One Dormand–Prince step of `h` from (x, y), where f(x, y) = `k0`: the
+/// fifth-order solution, f there (the next step's first stage) and its
+/// difference to the embedded fourth-order one; `None` if `f` refuses a
+/// stage.
 #[allow(clippy::type_complexity)]
-fn stage_all<const N: usize>(
+pub fn dormand_prince_step<const N: usize>(
     f: &impl Fn(f64, &State<N>) -> Option<State<N>>,
     x: f64,
     y: &State<N>,
     k0: &State<N>,
     h: f64,
-    stats: &mut SolverStats,
 ) -> Option<(State<N>, State<N>, State<N>)> {
     let mut k = [State::<N>::zeros(); 7];
     k[0] = *k0;
@@ -110,7 +113,6 @@ fn stage_all<const N: usize>(
             yi += (h * A[stage - 1][j]) * k[j];
         }
         k[stage] = f(x + C[stage] * h, &yi)?;
-        stats.rhs_evals += 1;
     }
     let mut y_new = *y;
     for j in 0..6 {
@@ -120,8 +122,7 @@ fn stage_all<const N: usize>(
     for j in 0..7 {
         err += (h * E[j]) * k[j];
     }
-    let finite = y_new.iter().chain(err.iter()).all(|v| v.is_finite());
-    finite.then_some((y_new, k[6], err))
+    Some((y_new, k[6], err))
 }
 
 #[cfg(test)]

@@ -46,21 +46,23 @@ staging=$(mktemp -d web/dist.XXXXXX)
 trap 'rm -rf "$staging"' EXIT
 "$bindgen" "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm" "$staging"
 # Binaryen's optimiser (npm package `binaryen`, pinned in web/package-lock.json;
-# Debian's binaryen is too old for this module), for speed (-O3): the module
+# Debian's binaryen is too old for this module), for speed (-O2): the module
 # is 13 % smaller than the compiler's, and Fig. 5.9's formation zone computes
 # 6 % faster than after -Oz (8.50 MB against 8.42 MB, 14.5 s against 15.3 s,
-# headless Chromium on two cores). It takes a few minutes, so its output is
-# kept per input.
+# headless Chromium on two cores). -O3 computed it no faster (four runs of
+# each in turn), in 246 s of one core against -O2's 112 s, which a cold run
+# of .ci/run spends beside the tests' compiles. It takes minutes, so its
+# output is kept per input.
 if [ ! -x web/node_modules/.bin/wasm-opt ] && command -v npm >/dev/null; then
     (cd web && npm ci --no-audit --no-fund --loglevel=error)
 fi
 if [ -x web/node_modules/.bin/wasm-opt ]; then
-    options=(-O3 --enable-simd --enable-bulk-memory --enable-sign-ext --enable-mutable-globals
+    options=(-O2 --enable-simd --enable-bulk-memory --enable-sign-ext --enable-mutable-globals
         --enable-nontrapping-float-to-int --enable-reference-types --enable-multivalue)
     # Kept by the module and the options together.
     kept="$target/web-opt/$( (cat "$staging/grainscope_bg.wasm"; echo "${options[*]}") | sha256sum | cut -c1-24).wasm"
     if [ ! -f "$kept" ]; then
-        echo "== wasm-opt ${options[0]} (a few minutes)"
+        echo "== wasm-opt ${options[0]} (about two minutes)"
         mkdir -p "$target/web-opt"
         web/node_modules/.bin/wasm-opt "${options[@]}" "$staging/grainscope_bg.wasm" -o "$kept.tmp"
         mv "$kept.tmp" "$kept"

@@ -47,11 +47,11 @@ trap 'rm -rf "$staging"' EXIT
 "$bindgen" "$target/wasm32-unknown-unknown/$profile/grainscope_web.wasm" "$staging"
 # Binaryen's optimiser (npm package `binaryen`, pinned in web/package-lock.json;
 # Debian's binaryen is too old for this module), for speed (-O2): the module
-# is 13 % smaller than the compiler's, and Fig. 5.9's formation zone computes
-# 6 % faster than after -Oz (8.50 MB against 8.42 MB, 14.5 s against 15.3 s,
-# headless Chromium on two cores). -O3 computed it no faster (four runs of
-# each in turn), in 246 s of one core against -O2's 112 s, which a cold run
-# of .ci/run spends beside the tests' compiles. It takes minutes, so its
+# is 11 % smaller than the compiler's (8.83 against 9.96 MB). For speed, -O3
+# computed Fig. 5.9's formation zone 6 % faster than -Oz did (14.5 s against
+# 15.3 s, headless Chromium on two cores), and -O2 as fast as -O3 (four runs
+# of each in turn), in 112 s of one core against -O3's 246 s, which a cold
+# run of .ci/run spends beside the tests' compiles. It takes minutes, so its
 # output is kept per input.
 if [ ! -x web/node_modules/.bin/wasm-opt ] && command -v npm >/dev/null; then
     (cd web && npm ci --no-audit --no-fund --loglevel=error)

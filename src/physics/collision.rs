@@ -594,29 +594,31 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
             bounce = Some((t + f * h, y_end));
             break;
         }
-        if stuck_at.is_none() && y_new[0] < 0.0 && y_new[1] < 0.0 && beta_new > 1.0 && ode.runaway(&y_new) {
-            // The neck collapses: the rest is integrated in β (see
-            // ContactOde::collapse), to a tenth of the tolerance.
-            let mut steps = Vec::new();
-            let rest = ode.collapse(&y_new, beta_end, COLLAPSE_TOLERANCE * opts.rtol, &scale, |tr, yr| {
-                let total = ode.mechanical_energy(yr) + yr[3] + yr[4];
-                energy_error = energy_error.max((total - total0).abs() / ke0);
-                if opts.record {
-                    steps.push((tr, *yr));
-                }
-            });
-            if let Some((dt, y_end, work)) = rest {
-                solver.stats += work;
-                // The last step's end is the contact's `last` sample.
-                steps.pop();
-                samples.extend(steps.iter().map(|(tr, yr)| to_sample(t_new + tr, yr)));
-                bounce = Some((t_new + dt, y_end));
-                break;
-            }
-        }
         if stuck_at.is_none() && y_new[0] < 0.0 && y_new[1] < 0.0 && beta_new > 1.0 {
+            // The parted spheres' neck collapses.
+            if ode.runaway(&y_new) {
+                // On the branch where it runs away, the rest is integrated
+                // in β (see ContactOde::collapse), to a tenth of the tolerance.
+                let mut steps = Vec::new();
+                let rest = ode.collapse(&y_new, beta_end, COLLAPSE_TOLERANCE * opts.rtol, &scale, |tr, yr| {
+                    let total = ode.mechanical_energy(yr) + yr[3] + yr[4];
+                    energy_error = energy_error.max((total - total0).abs() / ke0);
+                    if opts.record {
+                        steps.push((tr, *yr));
+                    }
+                });
+                if let Some((dt, y_end, work)) = rest {
+                    solver.stats += work;
+                    // The last step's end is the contact's `last` sample.
+                    steps.pop();
+                    samples.extend(steps.iter().map(|(tr, yr)| to_sample(t_new + tr, yr)));
+                    bounce = Some((t_new + dt, y_end));
+                    break;
+                }
+            }
             // A collapse that ends before it reaches the branch where it
-            // runs away (where the integration in β above takes over):
+            // runs away (where the integration in β above takes over), or
+            // whose integration in β left that branch:
             // |ȧ| only grows and |F_E| only falls from here, so the velocity
             // can change by at most |F_E|/m* · a/|ȧ| before contact ends.
             // Stop once that bound is a tenth of the tolerance instead of

@@ -1086,8 +1086,9 @@ impl<M: Model> Engine<M> {
         self.tidy();
     }
 
-    /// Adds `count` particles `body` made by an event at zoom `zoom`. Too few
-    /// to fill one group, they merge at once into the family `tidy` would
+    /// Adds `count` particles `body` made by an event at zoom `zoom` (for
+    /// fragments, their decade's zoom factor where that is larger: see
+    /// [`Engine::decade_zoom`]). Too few to fill one group, they merge at once into the family `tidy` would
     /// merge them into (4.27), without computing pair data for a family that
     /// would not live to use it. The products of erosion and shattering
     /// (remnants, fragments, monomers) that differ from an existing family by

@@ -1088,8 +1088,8 @@ impl<M: Model> Engine<M> {
 
     /// Adds `count` particles `body` made by an event at zoom `zoom` (for
     /// fragments, their decade's zoom factor where that is larger: see
-    /// [`Engine::decade_zoom`]). Too few to fill one group, they merge at once into the family `tidy` would
-    /// merge them into (4.27), without computing pair data for a family that
+    /// [`Engine::decade_zoom`]). Too few to fill one group, they merge at
+    /// once into the family `tidy` would merge them into (4.27), without computing pair data for a family that
     /// would not live to use it. The products of erosion and shattering
     /// (remnants, fragments, monomers) that differ from an existing family by
     /// no more than `MERGE_REFRESH` in mass and φ join it whatever their
@@ -1126,11 +1126,7 @@ impl<M: Model> Engine<M> {
     /// event). At this zoom factor they merge as they are made.
     fn decade_zoom(&self, mass: f64, count: f64) -> i32 {
         let n10 = self.decades.get(&decade_of(mass)).copied().unwrap_or(0.0) + count;
-        zoom_for(n10, self.settings.groups_per_decade).min(capped_zoom(
-            mass,
-            self.initial_mass,
-            self.settings.group_mass_cap,
-        ))
+        z_star(n10, mass, self.initial_mass, &self.settings)
     }
 
     /// The products of `units` lo-particles each meeting `per` hi-particles;
@@ -1424,7 +1420,6 @@ impl<M: Model> Engine<M> {
     /// Sets every family's zoom factor to z*(m) (4.26) and merges families
     /// that cannot fill one group at their zoom factor (4.27).
     pub fn rezoom(&mut self) {
-        let w_star = self.settings.groups_per_decade;
         let decades = &mut self.decades;
         decades.clear();
         for f in &self.families {
@@ -1432,7 +1427,7 @@ impl<M: Model> Engine<M> {
         }
         for ((f, key), dirty) in self.families.iter_mut().zip(&mut self.keys).zip(self.dirty.iter_mut()) {
             let n10 = decades.get(&decade_of(f.mass)).copied().unwrap_or(0.0);
-            let z = zoom_for(n10, w_star).min(capped_zoom(f.mass, self.initial_mass, self.settings.group_mass_cap));
+            let z = z_star(n10, f.mass, self.initial_mass, &self.settings);
             *dirty = z != f.zoom;
             if *dirty {
                 f.groups = f.particles() / exp2i(z);
@@ -1690,7 +1685,7 @@ enum Made {
     /// By erosion: the remnant of the target.
     Broken,
     /// By erosion or shattering: fragments. They take the zoom factor of
-    /// their mass decade (see [`Engine::decade_zoom`]).
+    /// their mass decade where that is larger (see [`Engine::decade_zoom`]).
     Fragments,
 }
 
@@ -1747,6 +1742,12 @@ fn capped_zoom(m: f64, total: f64, cap: f64) -> i32 {
 /// The mass decade of particles of mass m, ⌊log₁₀ m⌋.
 fn decade_of(mass: f64) -> i64 {
     mass.log10().floor() as i64
+}
+
+/// z*(m) (4.26) of particles of mass m whose decade holds `n10` particles,
+/// capped by the group mass cap ε_M (of a column of `total` mass).
+fn z_star(n10: f64, mass: f64, total: f64, settings: &Settings) -> i32 {
+    zoom_for(n10, settings.groups_per_decade).min(capped_zoom(mass, total, settings.group_mass_cap))
 }
 
 fn zoom_for(n10: f64, w_star: f64) -> i32 {

@@ -1089,13 +1089,14 @@ impl<M: Model> Engine<M> {
     /// Adds `count` particles `body` made by an event at zoom `zoom` (for
     /// fragments, their decade's zoom factor where that is larger: see
     /// [`Engine::decade_zoom`]). Too few to fill one group, they merge at
-    /// once into the family `tidy` would merge them into (4.27), without computing pair data for a family that
-    /// would not live to use it. The products of erosion and shattering
-    /// (remnants, fragments, monomers) that differ from an existing family by
-    /// no more than `MERGE_REFRESH` in mass and φ join it whatever their
-    /// number: the family's properties and pair data do not change, and the
-    /// next re-zoom would give them its zoom factor anyway. Products of
-    /// sticking always start a family of their own when they fill a group.
+    /// once into the family `tidy` would merge them into (4.27), without
+    /// computing pair data for a family that would not live to use it. The
+    /// products of erosion and shattering (remnants, fragments, monomers)
+    /// that differ from an existing family by no more than `MERGE_REFRESH` in
+    /// mass and φ join it whatever their number: the family's properties and
+    /// pair data do not change, and the next re-zoom would give them its zoom
+    /// factor anyway. Products of sticking always start a family of their own
+    /// when they fill a group.
     fn add_product(&mut self, body: Body, count: f64, zoom: i32, kind: Made) {
         let zoom = if kind == Made::Fragments { zoom.max(self.decade_zoom(body.mass, count)) } else { zoom };
         let groups = count / exp2i(zoom);

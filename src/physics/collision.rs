@@ -417,7 +417,7 @@ impl ContactOde {
         State::<5>::new(
             w,
             -(self.c1 * s * x - self.c2 * s.powi(3) + self.c3 * s * w),
-            (2.0 * s * sdot - self.rho * w) / u,
+            (2.0 * s * sdot - self.rho * w) * (1.0 / u),
             self.cs * s * (1.0 - beta) * sdot,
             self.c3 * s * w * w,
         )
@@ -587,9 +587,12 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
         // they part, and β creeps along below 1/k.
         let parted = y_new[0] <= 0.0;
         if beta_new >= beta_end && stuck_at.is_none() && parted {
-            // End of contact inside this step: interpolate linearly in β.
+            // End of contact inside this step, where β has reached its end
+            // and the spheres have parted: interpolate linearly in β and δ.
             let beta_old = ode.beta(&y);
-            let f = ((beta_end - beta_old) / (beta_new - beta_old)).clamp(0.0, 1.0);
+            let f_beta = (beta_end - beta_old) / (beta_new - beta_old);
+            let f_delta = if y[0] > 0.0 { y[0] / (y[0] - y_new[0]) } else { 0.0 };
+            let f = f_beta.max(f_delta).clamp(0.0, 1.0);
             let y_end = y + f * (y_new - y);
             bounce = Some((t + f * h, y_end));
             break;

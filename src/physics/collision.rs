@@ -587,8 +587,9 @@ pub fn collide(setup: &Setup, velocity: f64, opts: &Options) -> Result<Collision
         // they part, and β creeps along below 1/k.
         let parted = y_new[0] <= 0.0;
         if beta_new >= beta_end && stuck_at.is_none() && parted {
-            // End of contact inside this step, where β has reached its end
-            // and the spheres have parted: interpolate linearly in β and δ.
+            // End of contact inside this step, at the later of β reaching
+            // its end and the spheres parting (δ = 0), each interpolated
+            // linearly (β may have passed its end while they overlapped).
             let beta_old = ode.beta(&y);
             let f_beta = (beta_end - beta_old) / (beta_new - beta_old);
             let f_delta = if y[0] > 0.0 { y[0] / (y[0] - y_new[0]) } else { 0.0 };

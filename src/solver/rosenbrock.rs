@@ -263,30 +263,20 @@ impl<const N: usize> Lu<N> {
         Some(Lu { lu: m, perm, inv_diag, k })
     }
 
-    /// A leading block of three, inverted by its cofactors: the
-    /// factorisation is one division without a branch, where partial
-    /// pivoting took compares, swaps and divisions one after the other, and
-    /// a stage's solve is three independent dot products (each stage of a
-    /// step waits on the solve before it). Solving with the inverse of the
-    /// pivoted factors was as slow as the substitutions: the time was in the
+    /// A leading block of three, inverted by its cofactors (nalgebra's
+    /// closed-form 3 × 3 inverse): no pivoting, where partial pivoting took
+    /// compares, swaps and divisions one after the other, and a stage's
+    /// solve is three independent dot products (each stage of a step waits
+    /// on the solve before it). Solving with the inverse of the pivoted
+    /// factors was as slow as the substitutions: the time was in the
     /// pivoting. The block's inverse replaces it in `lu`; the trailing rows
     /// keep their entries in the block's columns, and `inv_diag` their
     /// diagonal's reciprocals.
     fn invert3(mut m: Matrix<N>, perm: [usize; N]) -> Option<Self> {
-        let a = |i: usize, j: usize| m[(i, j)];
-        let c00 = a(1, 1) * a(2, 2) - a(1, 2) * a(2, 1);
-        let c01 = a(1, 2) * a(2, 0) - a(1, 0) * a(2, 2);
-        let c02 = a(1, 0) * a(2, 1) - a(1, 1) * a(2, 0);
-        let det = a(0, 0) * c00 + a(0, 1) * c01 + a(0, 2) * c02;
-        if det == 0.0 || !det.is_finite() {
+        let block = m.fixed_view::<3, 3>(0, 0).into_owned().try_inverse()?;
+        if !block.iter().all(|v| v.is_finite()) {
             return None;
         }
-        let inv = 1.0 / det;
-        let block = [
-            [c00, a(0, 2) * a(2, 1) - a(0, 1) * a(2, 2), a(0, 1) * a(1, 2) - a(0, 2) * a(1, 1)],
-            [c01, a(0, 0) * a(2, 2) - a(0, 2) * a(2, 0), a(0, 2) * a(1, 0) - a(0, 0) * a(1, 2)],
-            [c02, a(0, 1) * a(2, 0) - a(0, 0) * a(2, 1), a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0)],
-        ];
         let mut inv_diag = [0.0; N];
         for (i, d) in inv_diag.iter_mut().enumerate().skip(3) {
             let diagonal = m[(i, i)];
@@ -295,11 +285,7 @@ impl<const N: usize> Lu<N> {
             }
             *d = 1.0 / diagonal;
         }
-        for (i, row) in block.iter().enumerate() {
-            for (j, &c) in row.iter().enumerate() {
-                m[(i, j)] = c * inv;
-            }
-        }
+        m.fixed_view_mut::<3, 3>(0, 0).copy_from(&block);
         Some(Lu { lu: m, perm, inv_diag, k: 3 })
     }
 

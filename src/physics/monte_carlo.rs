@@ -395,6 +395,7 @@ impl<T: Copy + Default> Symmetric<T> {
     /// left as they were.
     fn relocate(&mut self, from: usize, to: usize, n: usize) {
         for j in 0..n {
+            self.prefetch_column(to, j, n);
             let value = if j == to { self.get(from, from) } else { self.get(from, j) };
             self.set(to, j, value);
         }
@@ -403,10 +404,31 @@ impl<T: Copy + Default> Symmetric<T> {
     /// Copies the first `n` entries of row i into column i.
     fn mirror_row(&mut self, i: usize, n: usize) {
         for j in 0..n {
+            self.prefetch_column(i, j, n);
             self.data[j * self.stride + i] = self.data[i * self.stride + j];
         }
     }
+
+    /// Asks for the cache line of entry (j + [`COLUMN_AHEAD`], i) of column
+    /// i, to be written a few entries on: a column's entries lie a row apart,
+    /// each in a cache line of its own, and written one after the other each
+    /// waits for its line, where asked for ahead they arrive side by side.
+    #[inline(always)]
+    fn prefetch_column(&self, i: usize, j: usize, n: usize) {
+        #[cfg(target_arch = "x86_64")]
+        if j + COLUMN_AHEAD < n {
+            let ahead = self.data[(j + COLUMN_AHEAD) * self.stride + i..].as_ptr();
+            // SAFETY: a prefetch only hints to the cache: it reads and writes nothing.
+            unsafe { std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(ahead.cast()) };
+        }
+        #[cfg(not(target_arch = "x86_64"))]
+        let _ = (i, j, n);
+    }
 }
+
+/// How many entries ahead [`Symmetric::mirror_row`] and
+/// [`Symmetric::relocate`] ask for a column's cache lines.
+const COLUMN_AHEAD: usize = 16;
 
 /// Cached data of a pair of families (the same for (i, j) and (j, i)).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]

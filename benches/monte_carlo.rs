@@ -40,7 +40,7 @@ fn timed(cfg: &RunConfig) -> (f64, Run) {
 /// Nanoseconds a pair for a row of 600 families of the erosion column, as
 /// the engine computes it (`Model::pair_data_row`) and one pair at a time.
 fn row_of_pairs() {
-    use grainscope::physics::monte_carlo::{Body, Family, Model, Pair, PairRule};
+    use grainscope::physics::monte_carlo::{Body, Family, Model, OwnedRow, PairRule};
     use rand::{Rng, SeedableRng};
     let column = column(40.0, 20.0, "full", 1e21, 1e4).column;
     let m0 = column.monomer.mass();
@@ -58,11 +58,11 @@ fn row_of_pairs() {
     }
     let which: Vec<usize> = (0..families.len()).collect();
     let rule = PairRule { volume: 1e15, f_m: 0.1, f_phi: 0.1 };
-    let mut out = vec![Pair::default(); families.len()];
+    let mut out = OwnedRow::new(families.len());
     let rows = 2000;
     let start = Instant::now();
     for r in 0..rows {
-        column.pair_data_row(&lanes, &families[r % families.len()], &families, &which, &rule, &mut out);
+        column.pair_data_row(&lanes, &families[r % families.len()], &families, &which, &rule, out.row());
     }
     let at_once = start.elapsed().as_secs_f64() / (rows * families.len()) as f64 * 1e9;
     // A row without its first family is computed one pair at a time (with
@@ -70,7 +70,7 @@ fn row_of_pairs() {
     let part = &which[1..];
     let start = Instant::now();
     for r in 0..rows {
-        column.pair_data_row(&lanes, &families[r % families.len()], &families, part, &rule, &mut out);
+        column.pair_data_row(&lanes, &families[r % families.len()], &families, part, &rule, out.row());
     }
     let one = start.elapsed().as_secs_f64() / (rows * part.len()) as f64 * 1e9;
     println!(

@@ -7,7 +7,9 @@ use grainscope::physics::coagulation::{Column, Compaction, RunConfig};
 use grainscope::physics::constants::{AU, YEAR};
 use grainscope::physics::disk::GasDisk;
 use grainscope::physics::growth::{GrowthModel, Porosity};
-use grainscope::physics::monte_carlo::{Analytic, Body, Effect, Engine, Family, Model, Pair, PairRule, Settings};
+use grainscope::physics::monte_carlo::{
+    Analytic, Body, Effect, Engine, Family, Model, OwnedRow, Pair, PairRule, Settings,
+};
 
 const PARTICLES: f64 = 1e20;
 
@@ -275,16 +277,16 @@ fn pair_data_follow_the_families_as_they_are_now() {
     let others: Vec<_> =
         [(1.0, 1.0), (30.0, 0.2), (1e4, 0.02), (1e6, 1e-3)].iter().map(|&(n, phi)| family(n, phi)).collect();
     let rule = PairRule { volume: 1e15, f_m: 0.1, f_phi: 0.1 };
-    let mut row = vec![Pair::default(); others.len()];
+    let mut row = OwnedRow::new(others.len());
     let which: Vec<usize> = (0..others.len()).collect();
     let mut lanes = Default::default();
     for (i, f) in others.iter().enumerate() {
         col.set_lane(&mut lanes, i, f);
     }
-    col.pair_data_row(&lanes, &target, &others, &which, &rule, &mut row);
-    for (p, from_row) in others.iter().zip(&row) {
+    col.pair_data_row(&lanes, &target, &others, &which, &rule, row.row());
+    for (j, p) in others.iter().enumerate() {
         let (rate, effect) = col.pair(&target, p);
-        assert_eq!(rule.data(&target, p, rate, effect), *from_row);
+        assert_eq!(rule.data(&target, p, rate, effect), row.get(j));
         let v = col.velocity(&target, p);
         let filling = col.filling_after(target.body(), p.body(), v);
         let change = col.filling_change(target.body(), p.body(), v);
@@ -436,8 +438,9 @@ fn a_row_of_pair_data_equals_its_pairs_one_at_a_time_to_the_bit() {
         }
         for lead in [0, 1, 2, 3, 5, 100, 400, 700, 702, 703] {
             for which in [&by_mass, &some] {
-                let mut row = vec![Pair::default(); families.len()];
-                column.pair_data_row(&lanes, &families[lead], &families, which, &rule, &mut row);
+                let mut row = OwnedRow::new(families.len());
+                column.pair_data_row(&lanes, &families[lead], &families, which, &rule, row.row());
+                let row: Vec<Pair> = (0..row.len()).map(|j| row.get(j)).collect();
                 for &j in which.iter() {
                     let (a, b) = (&families[lead], &families[j]);
                     let (rate, effect) = column.pair(a, b);

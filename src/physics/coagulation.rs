@@ -36,7 +36,7 @@ use super::column_row::{self, Lanes, Lead, RowConstants};
 use super::constants::K_B;
 use super::disk::Local;
 use super::fdlibm;
-use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, Pair, PairRule, Settings};
+use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, PairRow, PairRule, Settings};
 use crate::parallel::prelude::*;
 use std::f64::consts::PI;
 
@@ -347,7 +347,7 @@ impl Model for Column {
         others: &[Family<Props>],
         which: &[usize],
         rule: &PairRule,
-        out: &mut [Pair],
+        mut out: PairRow<'_>,
     ) {
         let k = Constants::of(self);
         let one = |j: usize| {
@@ -358,7 +358,7 @@ impl Model for Column {
         let whole = which.len() == others.len() && lanes.len() == others.len();
         if self.turbulence != TurbulenceModel::Thesis || !whole {
             for &j in which {
-                out[j] = one(j);
+                out.set(j, one(j));
             }
             return;
         }
@@ -858,6 +858,7 @@ mod tests {
     use crate::physics::aggregate::Thresholds;
     use crate::physics::constants::AU;
     use crate::physics::disk::GasDisk;
+    use crate::physics::monte_carlo::OwnedRow;
 
     #[test]
     fn the_loop_over_a_row_equals_its_pairs_one_at_a_time_to_the_bit() {
@@ -916,10 +917,10 @@ mod tests {
                     rule.data(a, &families[j], rate, effect)
                 };
                 for (units, compact) in units.iter().flat_map(|&u| [(u, false), (u, true)]) {
-                    let mut out = vec![Pair::default(); families.len()];
-                    column_row::loop_row(units, compact, &row, &Lead::of(a, k.rho0), &lanes, &mut out, one);
-                    for (j, pair) in out.iter().enumerate() {
-                        let exact = one(j);
+                    let mut out = OwnedRow::new(families.len());
+                    column_row::loop_row(units, compact, &row, &Lead::of(a, k.rho0), &lanes, out.row(), one);
+                    for j in 0..out.len() {
+                        let (pair, exact) = (out.get(j), one(j));
                         assert_eq!(
                             (pair.c.to_bits(), pair.headroom.to_bits()),
                             (exact.c.to_bits(), exact.headroom.to_bits()),

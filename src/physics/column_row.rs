@@ -28,7 +28,7 @@
 use super::aggregate::DriftTerms;
 use super::coagulation::Props;
 use super::fdlibm::{EXP_RANGE, exp_moderate, ln_normal, small_integer};
-use super::monte_carlo::{Family, Pair, PairRule, SIGNIFICAND};
+use super::monte_carlo::{Family, Pair, PairRow, PairRule, SIGNIFICAND};
 use super::wide::{Bits, Wide};
 use std::cell::RefCell;
 
@@ -140,15 +140,11 @@ impl Lanes {
     }
 }
 
-/// A row's results: K/V, headroom, whether the pair must be computed one at a
-/// time, and how many pairs stick beyond the onset of collisional compaction.
+/// What a row keeps beside its pair data (which the loop writes straight
+/// into the row): whether each pair must be computed one at a time.
 #[derive(Debug, Default)]
 struct Out {
-    c: Vec<f64>,
-    headroom: Vec<f32>,
     scalar: Vec<bool>,
-    /// Pairs of the row that stick beyond the onset of collisional compaction.
-    compacting: usize,
     /// Whether rows take the compaction law in vectors: where few pairs
     /// reach it (no compaction, or full compaction's compact products),
     /// its two logarithms and exponential for every pair would cost more
@@ -200,6 +196,14 @@ thread_local! {
     static OUT: RefCell<Out> = RefCell::new(Out::default());
 }
 
+/// Where the loop writes a row: K/V and headroom into the row of pair data,
+/// and whether each pair must be computed one at a time.
+struct Sink<'a> {
+    c: &'a mut [f64],
+    headroom: &'a mut [f32],
+    scalar: &'a mut [bool],
+}
+
 /// Computes the pair data of `lead` with every family of `lanes` into
 /// `out[j]`; the pairs that `exact` must compute one at a time are passed to
 /// it (it gets the index j). The loop runs eight pairs to an instruction
@@ -211,14 +215,14 @@ pub(crate) fn pair_data_row(
     k: &RowConstants,
     lead: &Lead,
     lanes: &Lanes,
-    out: &mut [Pair],
+    mut out: PairRow<'_>,
     mut exact: impl FnMut(usize) -> Pair,
 ) {
     if let Some(run) = Vectors::found().runner() {
         return in_rows(k, lead, lanes, out, exact, run);
     }
-    for (j, pair) in out.iter_mut().enumerate().take(lanes.len()) {
-        *pair = exact(j);
+    for j in 0..lanes.len().min(out.c.len()) {
+        out.set(j, exact(j));
     }
 }
 
@@ -237,8 +241,9 @@ pub(crate) enum Vectors {
     Simd128,
 }
 
-/// A row's loop, given whether to take the compaction law in it.
-type Runner = fn(bool, &RowConstants, &Lead, &Lanes, &mut Out);
+/// A row's loop, given whether to take the compaction law in it; returns
+/// how many pairs stick beyond the onset of collisional compaction.
+type Runner = fn(bool, &RowConstants, &Lead, &Lanes, Sink) -> usize;
 
 impl Vectors {
     /// The best this processor has.
@@ -316,15 +321,11 @@ pub(crate) fn loop_row(
     k: &RowConstants,
     lead: &Lead,
     lanes: &Lanes,
-    out: &mut [Pair],
+    out: PairRow<'_>,
     exact: impl FnMut(usize) -> Pair,
 ) {
     let scalar: Runner = |compact, k, lead, lanes, row| {
-        if compact {
-            kernel::<f64, true>(k, lead, lanes, row);
-        } else {
-            kernel::<f64, false>(k, lead, lanes, row);
-        }
+        if compact { kernel::<f64, true>(k, lead, lanes, row) } else { kernel::<f64, false>(k, lead, lanes, row) }
     };
     let run = units.runner().unwrap_or(scalar);
     in_rows(k, lead, lanes, out, exact, move |_, k, lead, lanes, row| run(compact, k, lead, lanes, row));
@@ -336,23 +337,22 @@ fn in_rows(
     k: &RowConstants,
     lead: &Lead,
     lanes: &Lanes,
-    out: &mut [Pair],
+    mut out: PairRow<'_>,
     mut exact: impl FnMut(usize) -> Pair,
-    run: impl FnOnce(bool, &RowConstants, &Lead, &Lanes, &mut Out),
+    run: impl FnOnce(bool, &RowConstants, &Lead, &Lanes, Sink) -> usize,
 ) {
     OUT.with(|cell| {
         let mut row = cell.borrow_mut();
         let row = &mut *row;
-        let n = lanes.len();
-        row.c.resize(n, 0.0);
-        row.headroom.resize(n, 0.0);
+        let n = lanes.len().min(out.c.len()).min(out.headroom.len());
         row.scalar.resize(n, false);
-        run(row.compact, k, lead, lanes, row);
-        row.compact = 32 * row.compacting > n;
-        for (j, ((pair, &c), (&headroom, &scalar))) in
-            out.iter_mut().zip(&row.c).zip(row.headroom.iter().zip(&row.scalar)).enumerate()
-        {
-            *pair = if scalar { exact(j) } else { Pair { c, headroom } };
+        let sink = Sink { c: &mut out.c[..n], headroom: &mut out.headroom[..n], scalar: &mut row.scalar[..n] };
+        let compacting = run(row.compact, k, lead, lanes, sink);
+        row.compact = 32 * compacting > n;
+        if row.scalar[..n].contains(&true) {
+            for (j, _) in row.scalar[..n].iter().enumerate().filter(|(_, s)| **s) {
+                out.set(j, exact(j));
+            }
         }
     });
 }
@@ -360,15 +360,15 @@ fn in_rows(
 /// The loop, compiled for AVX-512 (the compiler makes it eight pairs a step).
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx512f")]
-fn run_avx512<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel::<f64, COMPACT>(k, lead, lanes, out);
+fn run_avx512<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: Sink) -> usize {
+    kernel::<f64, COMPACT>(k, lead, lanes, out)
 }
 
 /// The loop, four pairs a step in AVX2's registers.
 #[cfg(target_arch = "x86_64")]
 #[target_feature(enable = "avx2")]
-fn run_avx2<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: &mut Out) {
-    kernel::<super::wide::F4, COMPACT>(k, lead, lanes, out);
+fn run_avx2<const COMPACT: bool>(k: &RowConstants, lead: &Lead, lanes: &Lanes, out: Sink) -> usize {
+    kernel::<super::wide::F4, COMPACT>(k, lead, lanes, out)
 }
 
 /// ⌊log₂ x⌋ from the binary exponent, and whether x is a positive normal
@@ -394,8 +394,8 @@ fn room<V: Wide>(fx: V, dx: V) -> (V, V::Mask) {
 /// functions, with both sides of every choice computed and one kept; `V::LANES`
 /// pairs at a time, and the last few one at a time.
 #[inline(always)]
-fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lanes, out: &mut Out) {
-    let n = lanes.len();
+fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lanes, out: Sink) -> usize {
+    let n = lanes.len().min(out.c.len());
     let columns = Columns {
         mass: &lanes.mass[..n],
         inv_mass: &lanes.inv_mass[..n],
@@ -421,7 +421,7 @@ fn kernel<V: Wide, const COMPACT: bool>(k: &RowConstants, a: &Lead, lanes: &Lane
     for i in whole..n {
         compacting += pairs::<f64, COMPACT>(k, a, &columns, (&mut *c, &mut *headroom, &mut *scalar), i);
     }
-    out.compacting = compacting;
+    compacting
 }
 
 /// [`Lanes`] cut to the families of one row.

@@ -164,9 +164,9 @@ pub trait Model: Sync {
     }
 
     /// The cached pair data ([`PairRule::data`] of [`Model::pair`]) of
-    /// family `a` with each of `others[j]` for j in `which` into `out[j]`
-    /// (`out` holds `others.len()` entries, and those not in `which` are left
-    /// as they are); `lanes` are those of `others`. `which` lists the
+    /// family `a` with each of `others[j]` for j in `which` into entry j of
+    /// `out` (which holds `others.len()` entries; those not in `which` are
+    /// left as they are); `lanes` are those of `others`. `which` lists the
     /// families by mass, so that pairs in the same regime of the model follow
     /// each other. Models override it to share work across a row; an
     /// override gives the same numbers to the last bit.
@@ -177,12 +177,12 @@ pub trait Model: Sync {
         others: &[Family<Self::Props>],
         which: &[usize],
         rule: &PairRule,
-        out: &mut [Pair],
+        mut out: PairRow<'_>,
     ) {
         for &j in which {
             let b = &others[j];
             let (rate, effect) = self.pair(a, b);
-            out[j] = rule.data(a, b, rate, effect);
+            out.set(j, rule.data(a, b, rate, effect));
         }
     }
 
@@ -401,6 +401,23 @@ impl<T: Copy + Default> Symmetric<T> {
         }
     }
 
+    /// Row `to` takes the first `n` entries of index `from`: entry j from row
+    /// `from` where `in_row(j)`, from column `from` otherwise (where the newer
+    /// of two families' data lie), and (to, to) from (from, from). Column
+    /// `to` is left as it is.
+    fn take_over(&mut self, from: usize, to: usize, n: usize, in_row: impl Fn(usize) -> bool) {
+        for j in 0..n {
+            let value = if j == to {
+                self.get(from, from)
+            } else if in_row(j) {
+                self.get(from, j)
+            } else {
+                self.get(j, from)
+            };
+            *self.at(to, j) = value;
+        }
+    }
+
     /// Copies the first `n` entries of row i into column i.
     fn mirror_row(&mut self, i: usize, n: usize) {
         for j in 0..n {
@@ -409,15 +426,15 @@ impl<T: Copy + Default> Symmetric<T> {
         }
     }
 
-    /// Asks for the cache line of entry (j + [`COLUMN_AHEAD`], i) of column
-    /// i, to be written a few entries on: a column's entries lie a row apart,
-    /// each in a cache line of its own, and written one after the other each
+    /// Asks for the cache line of entry (j + 16, i) of column i, to be
+    /// written sixteen entries on: a column's entries lie a row apart, each
+    /// in a cache line of its own, and written one after the other each
     /// waits for its line, where asked for ahead they arrive side by side.
     #[inline(always)]
     fn prefetch_column(&self, i: usize, j: usize, n: usize) {
         #[cfg(target_arch = "x86_64")]
-        if j + COLUMN_AHEAD < n {
-            let ahead = self.data[(j + COLUMN_AHEAD) * self.stride + i..].as_ptr();
+        if j + 16 < n {
+            let ahead = self.data[(j + 16) * self.stride + i..].as_ptr();
             // SAFETY: a prefetch only hints to the cache: it reads and writes nothing.
             unsafe { std::arch::x86_64::_mm_prefetch::<{ std::arch::x86_64::_MM_HINT_T0 }>(ahead.cast()) };
         }
@@ -425,10 +442,6 @@ impl<T: Copy + Default> Symmetric<T> {
         let _ = (i, j, n);
     }
 }
-
-/// How many entries ahead [`Symmetric::mirror_row`] and
-/// [`Symmetric::relocate`] ask for a column's cache lines.
-const COLUMN_AHEAD: usize = 16;
 
 /// Cached data of a pair of families (the same for (i, j) and (j, i)).
 #[derive(Debug, Clone, Copy, PartialEq, Default)]
@@ -440,6 +453,104 @@ pub struct Pair {
     /// (4.22)–(4.24), and ⌈z − h⌉ = z − ⌊h⌋ for integer z. Integers and ±∞,
     /// exact in f32.
     pub headroom: f32,
+}
+
+/// A row of pair data, one array per field: the engine keeps K/V and the
+/// headroom in matrices of their own, so that a row's loop writes each in
+/// vectors straight into its row.
+#[derive(Debug)]
+pub struct PairRow<'a> {
+    /// K/V of each pair.
+    pub c: &'a mut [f64],
+    /// The headroom of each pair.
+    pub headroom: &'a mut [f32],
+}
+
+impl PairRow<'_> {
+    /// Writes pair j.
+    #[inline]
+    pub fn set(&mut self, j: usize, pair: Pair) {
+        self.c[j] = pair.c;
+        self.headroom[j] = pair.headroom;
+    }
+}
+
+/// A row of pair data of its own (K/V and headroom, one vector each), where
+/// a row is computed outside an engine.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct OwnedRow {
+    /// K/V of each pair.
+    pub c: Vec<f64>,
+    /// The headroom of each pair.
+    pub headroom: Vec<f32>,
+}
+
+impl OwnedRow {
+    /// `n` pairs with K/V 0 and headroom 0.
+    pub fn new(n: usize) -> Self {
+        OwnedRow { c: vec![0.0; n], headroom: vec![0.0; n] }
+    }
+
+    /// The row to write.
+    pub fn row(&mut self) -> PairRow<'_> {
+        PairRow { c: &mut self.c, headroom: &mut self.headroom }
+    }
+
+    /// Pair j.
+    pub fn get(&self, j: usize) -> Pair {
+        Pair { c: self.c[j], headroom: self.headroom[j] }
+    }
+
+    /// The number of pairs.
+    pub fn len(&self) -> usize {
+        self.c.len()
+    }
+
+    /// Whether the row has no pairs.
+    pub fn is_empty(&self) -> bool {
+        self.c.is_empty()
+    }
+}
+
+/// The data of every pair of a run's families: K/V and the headroom in a
+/// [`Symmetric`] matrix each.
+#[derive(Debug, Clone)]
+struct PairMatrix {
+    c: Symmetric<f64>,
+    headroom: Symmetric<f32>,
+}
+
+impl PairMatrix {
+    fn new() -> Self {
+        PairMatrix { c: Symmetric::new(), headroom: Symmetric::new() }
+    }
+
+    /// Room for `n` families, keeping the first `used` rows and columns.
+    fn reserve(&mut self, n: usize, used: usize) {
+        self.c.reserve(n, used);
+        self.headroom.reserve(n, used);
+    }
+
+    fn get(&self, i: usize, j: usize) -> Pair {
+        Pair { c: self.c.get(i, j), headroom: self.headroom.get(i, j) }
+    }
+
+    /// Row `to` takes family `from`'s pair data with the first `n` families;
+    /// see [`Symmetric::take_over`].
+    fn take_over(&mut self, from: usize, to: usize, n: usize, in_row: impl Fn(usize) -> bool) {
+        self.c.take_over(from, to, n, &in_row);
+        self.headroom.take_over(from, to, n, &in_row);
+    }
+
+    /// The first `n` entries of row i.
+    fn row(&self, i: usize, n: usize) -> (&[f64], &[f32]) {
+        (self.c.row(i, n), self.headroom.row(i, n))
+    }
+
+    /// The first `n` entries of row i, to write.
+    fn row_mut(&mut self, i: usize, n: usize) -> PairRow<'_> {
+        PairRow { c: self.c.row_mut(i, n), headroom: self.headroom.row_mut(i, n) }
+    }
 }
 
 /// What turns a model's rate coefficient and effect into a pair's cached
@@ -531,7 +642,7 @@ pub struct Engine<M: Model> {
     /// The data of every pair: pair (i, j) is in row i if family i's data
     /// were computed after family j's (`computed`), in row j otherwise, so
     /// that computing a family's data writes one row.
-    pairs: Symmetric<Pair>,
+    pairs: PairMatrix,
     /// When each family's pair data were computed (a count of rows computed).
     computed: Vec<u64>,
     /// Rows computed so far.
@@ -586,7 +697,7 @@ pub struct Engine<M: Model> {
     /// unit rates of a row read).
     keys: Vec<Key>,
     /// A row of pair data gathered from rows and columns, kept to reuse its allocation.
-    row_pairs: Vec<Pair>,
+    row_pairs: OwnedRow,
     tally: Tally,
     rng: rand::rngs::StdRng,
 }
@@ -631,7 +742,7 @@ impl<M: Model> Engine<M> {
             time: 0.0,
             events: 0,
             initial_mass: first.mass * particles,
-            pairs: Symmetric::new(),
+            pairs: PairMatrix::new(),
             computed: vec![0],
             rows: 0,
             units: Symmetric::new(),
@@ -651,7 +762,7 @@ impl<M: Model> Engine<M> {
             decades: std::collections::BTreeMap::new(),
             lanes: M::Lanes::default(),
             keys: vec![Key { mass: family.mass, zoom: family.zoom }],
-            row_pairs: Vec::new(),
+            row_pairs: OwnedRow::default(),
             weight_scale: 0.0,
             tally: Tally::default(),
             rng: rand::rngs::StdRng::seed_from_u64(settings.seed),
@@ -791,7 +902,7 @@ impl<M: Model> Engine<M> {
 
     /// The cached data of pair (i, j), from the row of the family whose data
     /// were computed last.
-    #[inline]
+    #[inline(always)]
     fn data(&self, i: usize, j: usize) -> Pair {
         if self.computed[i] >= self.computed[j] { self.pairs.get(i, j) } else { self.pairs.get(j, i) }
     }
@@ -837,15 +948,16 @@ impl<M: Model> Engine<M> {
         let pairs = if at == self.rows || self.computed.iter().all(|&c| c <= at) {
             self.pairs.row(k, n)
         } else {
-            let (own, pairs) = (self.pairs.row(k, n), &self.pairs);
-            self.row_pairs.clear();
-            self.row_pairs.extend(
-                own.iter()
-                    .zip(&self.computed)
-                    .enumerate()
-                    .map(|(j, (p, &c))| if at >= c { *p } else { pairs.get(j, k) }),
-            );
-            &self.row_pairs
+            let ((own_c, own_h), pairs) = (self.pairs.row(k, n), &self.pairs);
+            let gathered = &mut self.row_pairs;
+            gathered.c.clear();
+            gathered.headroom.clear();
+            for (j, ((&c, &h), &when)) in own_c.iter().zip(own_h).zip(&self.computed).enumerate() {
+                let p = if at >= when { Pair { c, headroom: h } } else { pairs.get(j, k) };
+                gathered.c.push(p.c);
+                gathered.headroom.push(p.headroom);
+            }
+            (&gathered.c[..], &gathered.headroom[..])
         };
         // Each pair's unit rate and the partner's sum, pair by pair in the
         // order of the families, in vectors where the processor has them.
@@ -906,7 +1018,9 @@ impl<M: Model> Engine<M> {
         // Its pair data are empty, and newer than any until they are
         // computed (when the event's merges are done; nothing reads them
         // before).
-        self.pairs.row_mut(k, k + 1).fill(Pair::default());
+        let row = self.pairs.row_mut(k, k + 1);
+        row.c.fill(0.0);
+        row.headroom.fill(0.0);
         self.units.row_mut(k, k + 1).fill(0.0);
         self.rows += 1;
         self.model.set_lane(&mut self.lanes, k, &family);
@@ -963,10 +1077,8 @@ impl<M: Model> Engine<M> {
             if self.rated[last] {
                 // The pair data go to row k, from wherever they are; row k
                 // then counts as the newest, so that they are read from there.
-                for j in 0..last {
-                    let pair = if j == k { self.pairs.get(last, last) } else { self.data(last, j) };
-                    *self.pairs.at(k, j) = pair;
-                }
+                let (computed, newest) = (&self.computed, self.computed[last]);
+                self.pairs.take_over(last, k, last, |j| newest >= computed[j]);
                 self.units.relocate(last, k, last);
             }
         }
@@ -1610,7 +1722,7 @@ fn unit_row(
     lead: (i32, f64, usize),
     counts: (f64, f64),
     keys: &[Key],
-    pairs: &[Pair],
+    pairs: (&[f64], &[f32]),
     units: &mut [f64],
     sums: &mut [f64],
 ) {
@@ -1634,7 +1746,7 @@ fn unit_row_avx512(
     lead: (i32, f64, usize),
     counts: (f64, f64),
     keys: &[Key],
-    pairs: &[Pair],
+    pairs: (&[f64], &[f32]),
     units: &mut [f64],
     sums: &mut [f64],
 ) {
@@ -1647,7 +1759,7 @@ fn unit_row_avx2(
     lead: (i32, f64, usize),
     counts: (f64, f64),
     keys: &[Key],
-    pairs: &[Pair],
+    pairs: (&[f64], &[f32]),
     units: &mut [f64],
     sums: &mut [f64],
 ) {
@@ -1664,15 +1776,15 @@ fn unit_row_lanes(
     (zk, mk, k): (i32, f64, usize),
     (now, before): (f64, f64),
     keys: &[Key],
-    pairs: &[Pair],
+    pairs: (&[f64], &[f32]),
     units: &mut [f64],
     sums: &mut [f64],
 ) {
     let n = units.len();
-    let (keys, pairs, sums) = (&keys[..n], &pairs[..n], &mut sums[..n]);
+    let (keys, rates, headrooms, sums) = (&keys[..n], &pairs.0[..n], &pairs.1[..n], &mut sums[..n]);
     for j in 0..n {
         let Key { mass: mj, zoom: zj } = keys[j];
-        let Pair { c, headroom } = pairs[j];
+        let (c, headroom) = (rates[j], headrooms[j]);
         let span = (zk - zj).abs();
         let zl = zk.min(zj);
         let lighter_lo = if zk < zj { mk < mj } else { mj < mk };
@@ -1977,6 +2089,8 @@ mod tests {
                 headroom: headrooms[j % headrooms.len()],
             })
             .collect();
+        let rates: Vec<f64> = pairs.iter().map(|p| p.c).collect();
+        let heads: Vec<f32> = pairs.iter().map(|p| p.headroom).collect();
         for k in [0, 1, 17, 150, n - 1] {
             let fk = &families[k];
             let mut units: Vec<f64> = (0..n).map(|j| if j == k { 0.0 } else { rng.random_range(0.0..1.0) }).collect();
@@ -1984,7 +2098,7 @@ mod tests {
             let mut sums: Vec<f64> = (0..n).map(|_| rng.random_range(0.0..100.0)).collect();
             let before = sums.clone();
             let (now, then) = (3.0, 2.5);
-            unit_row((fk.zoom, fk.mass, k), (now, then), &keys, &pairs, &mut units, &mut sums);
+            unit_row((fk.zoom, fk.mass, k), (now, then), &keys, (&rates, &heads), &mut units, &mut sums);
             for j in 0..n {
                 let unit = if j == k { 0.0 } else { unit_of(fk, k, &families[j], j, &pairs[j]) };
                 assert_eq!(units[j].to_bits(), unit.to_bits(), "pair {k}, {j}");

@@ -204,8 +204,8 @@ struct Sink<'a> {
     scalar: &'a mut [bool],
 }
 
-/// Computes the pair data of `lead` with every family of `lanes` into
-/// `out[j]`; the pairs that `exact` must compute one at a time are passed to
+/// Computes the pair data of `lead` with every family j of `lanes` into
+/// entry j of `out`; the pairs that `exact` must compute one at a time are passed to
 /// it (it gets the index j). The loop runs eight pairs to an instruction
 /// where the processor has AVX-512 (the compiler makes the vectors), four
 /// where it has AVX2 and two in WebAssembly with its 128-bit vectors (both
@@ -349,10 +349,8 @@ fn in_rows(
         let sink = Sink { c: &mut out.c[..n], headroom: &mut out.headroom[..n], scalar: &mut row.scalar[..n] };
         let compacting = run(row.compact, k, lead, lanes, sink);
         row.compact = 32 * compacting > n;
-        if row.scalar[..n].contains(&true) {
-            for (j, _) in row.scalar[..n].iter().enumerate().filter(|(_, s)| **s) {
-                out.set(j, exact(j));
-            }
+        for (j, _) in row.scalar[..n].iter().enumerate().filter(|(_, s)| **s) {
+            out.set(j, exact(j));
         }
     });
 }

@@ -4,7 +4,7 @@
 
 use super::constants::{G, K_B};
 use super::disk::Local;
-use super::tabled;
+use super::tabled::{self, Bounds};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -46,10 +46,10 @@ impl Aggregate {
             // A solid grain (φ = 1): its geometric cross-section.
             return sphere;
         }
-        let n = self.monomers(mono).max(1.0);
+        let n = self.monomers(mono).at_least(1.0);
         let inverse = bcca_inverse(n, mono.radius) + 1.0 / sphere;
         let monomers = n * PI * mono.radius * mono.radius;
-        if inverse > 0.0 { (1.0 / inverse).min(sphere).min(monomers) } else { sphere.min(monomers) }
+        if inverse > 0.0 { (1.0 / inverse).at_most(sphere).at_most(monomers) } else { sphere.at_most(monomers) }
     }
 
     /// Number of monomers N = m/m₀.
@@ -207,7 +207,7 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
         (base - 24f64.ln() + ln_k, base - 24f64.ln() + 0.6 * ln_k, base - 0.44f64.ln());
     let g = |x: f64| {
         let st = omega * tabled::exp(x);
-        let v = gas_relative_velocity(eta_vk, st).max(1e-300);
+        let v = gas_relative_velocity(eta_vk, st).at_least(1e-300);
         let re = re_per_v * v;
         let (ln_implied, slope_cd) = if re < 1.0 {
             (stokes_c, -1.0)
@@ -241,7 +241,7 @@ fn stopping_time_of(env: &Local, mass: f64, a: f64, area: f64, newton: bool) -> 
         let mut next = x - gx / slope;
         let newton_step = next > lo && next < hi;
         if !newton_step {
-            next = if lo > floor { 0.5 * (lo + hi) } else { next.max(floor).min(hi) };
+            next = if lo > floor { 0.5 * (lo + hi) } else { next.at_least(floor).at_most(hi) };
         }
         let step = (next - x).abs();
         x = next;
@@ -385,7 +385,7 @@ pub fn relative_velocity(
 /// effective smaller Stokes number St₁ minus it (at least 0).
 pub fn effective_difference(s1: f64, s2: f64, epsilon: f64) -> (f64, f64) {
     let diff = ((s1 - s2).powi(2) + (epsilon * s1).powi(2)).sqrt();
-    (diff, (s1 - diff).max(0.0))
+    (diff, (s1 - diff).at_least(0.0))
 }
 
 /// Square of the Brownian relative velocity 8k_BT(m₁ + m₂)/(πm₁m₂) at
@@ -476,14 +476,14 @@ fn ormel_cuzzi(vg: f64, re: f64, s1: f64, s2: f64) -> f64 {
     let st_eta = 1.0 / re.sqrt();
     let v2 = if s1 < st_eta / ya {
         let q = st_eta;
-        vg * vg * (s1 - s2) / (s1 + s2).max(1e-300) * (s1 * s1 / (s1 + q) - s2 * s2 / (s2 + q))
+        vg * vg * (s1 - s2) / (s1 + s2).at_least(1e-300) * (s1 * s1 / (s1 + q) - s2 * s2 / (s2 + q))
     } else if s1 < 1.0 {
         let eps = s2 / s1;
         vg * vg * s1 * (2.0 * ya - (1.0 + eps) + 2.0 / (1.0 + eps) * (1.0 / (1.0 + ya) + eps.powi(3) / (ya + eps)))
     } else {
         vg * vg * (1.0 / (1.0 + s1) + 1.0 / (1.0 + s2))
     };
-    v2.max(0.0).sqrt()
+    v2.at_least(0.0).sqrt()
 }
 
 /// What a collision does (Sect. 4.2.3).
@@ -529,7 +529,7 @@ pub struct Thresholds {
 /// The outcome of a collision of masses m₁, m₂ at velocity v.
 pub fn outcome(m1: f64, m2: f64, v: f64, th: &Thresholds) -> Outcome {
     // The mass ratio below r_crit, compared as a product.
-    if m1.min(m2) < th.r_crit * m1.max(m2) {
+    if m1.at_most(m2) < th.r_crit * m1.at_least(m2) {
         if v > th.v_eros {
             Outcome::Erode { efficiency: erosion_efficiency(1.0, v, th.v_eros) }
         } else {
@@ -566,7 +566,7 @@ fn hit_and_stick_void(a: f64, b: f64) -> f64 {
     if a > 650.0 * b {
         return 6.94 * b;
     }
-    (0.99 - 1.03 * super::fdlibm::ln(2.0 * b / (a + b))).min(6.94) * b
+    (0.99 - 1.03 * super::fdlibm::ln(2.0 * b / (a + b))).at_most(6.94) * b
 }
 
 /// The geometry of aggregates of one mass at any filling factor: what
@@ -583,7 +583,7 @@ struct FixedMass {
 
 impl FixedMass {
     fn new(mono: &Monomer, mass: f64) -> FixedMass {
-        let n = (mass / mono.mass()).max(1.0);
+        let n = (mass / mono.mass()).at_least(1.0);
         FixedMass {
             compact_radius: mono.radius * tabled::cbrt(mass / mono.mass()),
             bcca_inverse: bcca_inverse(n, mono.radius),
@@ -600,8 +600,8 @@ impl FixedMass {
             return (a, sphere);
         }
         let inverse = self.bcca_inverse + 1.0 / sphere;
-        let area = if inverse > 0.0 { (1.0 / inverse).min(sphere) } else { sphere };
-        (a, area.min(self.monomers_area))
+        let area = if inverse > 0.0 { (1.0 / inverse).at_most(sphere) } else { sphere };
+        (a, area.at_most(self.monomers_area))
     }
 }
 
@@ -709,7 +709,7 @@ pub fn gravity_compaction_filling(mono: &Monomer, mass: f64) -> f64 {
 
 /// [`gravity_compaction_filling`] with the monomers' constants given.
 pub(crate) fn gravity_filling(mono: &Monomer, constants: &CompactionConstants, mass: f64) -> f64 {
-    tabled::exp(constants.gravity + 0.4 * (mass / mono.mass()).ln()).min(1.0)
+    tabled::exp(constants.gravity + 0.4 * (mass / mono.mass()).ln()).at_most(1.0)
 }
 
 #[cfg(test)]

@@ -28,6 +28,7 @@ use super::aggregate::dust_scale_height;
 use super::constants::{AU, YEAR};
 use super::disk::GasDisk;
 use super::growth::{GrowthModel, GrowthState, Stop};
+use super::tabled::Bounds;
 use crate::parallel::prelude::*;
 use std::f64::consts::PI;
 
@@ -248,8 +249,8 @@ fn kernel_density(r: f64, points: impl Iterator<Item = (f64, f64)>, h: f64, (a, 
         .sum::<f64>()
         * inv_h;
     let covered = kernel_cdf((b - x) / h) - kernel_cdf((a - x) / h);
-    let least = 0.5 * ((b - a) / h).min(1.0);
-    sum / (2.0 * PI * r * r * covered.max(least))
+    let least = 0.5 * ((b - a) / h).at_most(1.0);
+    sum / (2.0 * PI * r * r * covered.at_least(least))
 }
 
 /// The extent of the dust in ln R from its sorted ln-radii `x`: half a
@@ -259,7 +260,7 @@ fn extent(x: &[f64], h: f64) -> (f64, f64) {
     if n < 2 {
         return (x[0] - 0.5 * h, x[0] + 0.5 * h);
     }
-    (x[0] - (0.5 * (x[1] - x[0])).min(h), x[n - 1] + (0.5 * (x[n - 1] - x[n - 2])).min(h))
+    (x[0] - (0.5 * (x[1] - x[0])).at_most(h), x[n - 1] + (0.5 * (x[n - 1] - x[n - 2])).at_most(h))
 }
 
 /// The weight of a batch's own mass in its kernel estimate, from the gaps in
@@ -591,7 +592,7 @@ impl Ranks {
     /// on at the speed of that step beyond its end.
     fn at(&self, j: usize, t: f64) -> f64 {
         let [t0, r0, t1, r1] = self.step[j];
-        if t1 > t0 { (r0 + (r1 - r0) * ((t - t0) / (t1 - t0)).max(0.0)).max(0.5 * r1) } else { r1 }
+        if t1 > t0 { (r0 + (r1 - r0) * ((t - t0) / (t1 - t0)).at_least(0.0)).at_least(0.5 * r1) } else { r1 }
     }
 
     /// Surface density at batch `i` at time `t` if it is at radius `r_i`,
@@ -629,7 +630,7 @@ impl Ranks {
     /// within its last step (see [`Ranks::at`]).
     fn ln_at(&self, q: usize, t: f64) -> f64 {
         let [t0, x0, rate, x1] = self.ln_step[q];
-        (x0 + rate * (t - t0).max(0.0)).max(x1 - std::f64::consts::LN_2)
+        (x0 + rate * (t - t0).at_least(0.0)).at_least(x1 - std::f64::consts::LN_2)
     }
 
     /// The annuli estimate of earlier versions at batch `i`.

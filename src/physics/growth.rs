@@ -19,7 +19,7 @@ use super::aggregate::{
     stopping_time_and_radius,
 };
 use super::disk::{GasDisk, Local};
-use super::tabled;
+use super::tabled::{self, Bounds};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -381,12 +381,12 @@ impl GrowthModel {
             return (point, Some(Stop::Planetesimal));
         }
         // Time step: a fixed growth in ln m, or a small part of the drift time.
-        let mut dt = (t_until - s.t).max(0.0);
+        let mut dt = (t_until - s.t).at_least(0.0);
         if !halted {
-            dt = dt.min(self.dlnm * t_grow);
+            dt = dt.at_most(self.dlnm * t_grow);
         }
         if self.drift {
-            dt = dt.min(self.drift_step * t_drift);
+            dt = dt.at_most(self.drift_step * t_drift);
         }
         // Rates over the step: at its start, or at its middle (with the mass,
         // radius and filling factor there).
@@ -431,7 +431,7 @@ impl GrowthModel {
         let m_new = if lands && !leaves {
             self.planetesimal_mass
         } else if self.midpoint {
-            (m * tabled::exp(dt / growth_time)).min(self.planetesimal_mass)
+            (m * tabled::exp(dt / growth_time)).at_most(self.planetesimal_mass)
         } else {
             m * tabled::exp(dt / growth_time)
         };
@@ -473,7 +473,7 @@ impl GrowthModel {
         let m0 = mono.mass();
         let e_roll = constants.e_roll;
         let n = m_new / m0;
-        let phi_hs = (1.0 / n.sqrt()).min(1.0);
+        let phi_hs = (1.0 / n.sqrt()).at_most(1.0);
         let mut out = Filling { phi: 1.0, onset, gas: false, gravity: false };
         if self.porosity == Porosity::Compact {
             return out;
@@ -485,9 +485,9 @@ impl GrowthModel {
                 phi
             }
             None => phi_hs,
-            Some((mc, phic, ec)) => {
-                (phic * tabled::exp(0.3 * (e_per_n / ec).ln() - 0.2 * (n / (mc / m0)).ln())).max(phi_hs).min(1.0)
-            }
+            Some((mc, phic, ec)) => (phic * tabled::exp(0.3 * (e_per_n / ec).ln() - 0.2 * (n / (mc / m0)).ln()))
+                .at_least(phi_hs)
+                .at_most(1.0),
         };
         if self.porosity != Porosity::Full {
             out.phi = collisional;
@@ -510,7 +510,7 @@ impl GrowthModel {
         let grav = gravity_filling(&mono, constants, m_new);
         out.gas = gas > collisional && gas >= grav;
         out.gravity = grav > collisional && grav > gas;
-        out.phi = collisional.max(gas).max(grav).min(1.0);
+        out.phi = collisional.at_least(gas).at_least(grav).at_most(1.0);
         out
     }
 

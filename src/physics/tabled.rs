@@ -51,6 +51,58 @@ pub fn cbrt(x: f64) -> f64 {
     }
 }
 
+/// The larger and the smaller of two numbers in the model's inner loops, as
+/// `f64::max` and `f64::min` (a NaN gives the other number): `std`'s
+/// natively, bit for bit; in WebAssembly, whose `f64.max` and `f64.min`
+/// return a NaN where Rust's must not, `std`'s become a call to `libm`'s
+/// `fmax` and `fmin`, about a twentieth of the browser's formation zone, and
+/// these are two comparisons kept in line. (They may differ from `std`'s in
+/// the sign of a zero, which Rust leaves open too.)
+pub trait Bounds {
+    /// The larger of `self` and `other`, as `f64::max`.
+    fn at_least(self, other: Self) -> Self;
+    /// The smaller of `self` and `other`, as `f64::min`.
+    fn at_most(self, other: Self) -> Self;
+}
+
+impl Bounds for f64 {
+    #[inline(always)]
+    fn at_least(self, other: f64) -> f64 {
+        #[cfg(target_arch = "wasm32")]
+        {
+            larger(self, other)
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.max(other)
+        }
+    }
+
+    #[inline(always)]
+    fn at_most(self, other: f64) -> f64 {
+        #[cfg(target_arch = "wasm32")]
+        {
+            smaller(self, other)
+        }
+        #[cfg(not(target_arch = "wasm32"))]
+        {
+            self.min(other)
+        }
+    }
+}
+
+/// [`Bounds::at_least`] in WebAssembly: `b` if `a` is a NaN or `b > a`, else `a`.
+#[inline(always)]
+pub fn larger(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b > a { b } else { a }
+}
+
+/// [`Bounds::at_most`] in WebAssembly: `b` if `a` is a NaN or `b < a`, else `a`.
+#[inline(always)]
+pub fn smaller(a: f64, b: f64) -> f64 {
+    if a.is_nan() || b < a { b } else { a }
+}
+
 /// Entries of the table: 2^{i/N}.
 const N: usize = 128;
 
@@ -195,6 +247,29 @@ mod tests {
     /// one sign.
     fn ulps(a: f64, b: f64) -> u64 {
         (a.to_bits() as i64 - b.to_bits() as i64).unsigned_abs()
+    }
+
+    /// The comparisons WebAssembly takes for `max` and `min` give `std`'s
+    /// answer for NaNs, infinities, equal numbers and random ones (zeros
+    /// aside, whose sign either may choose).
+    #[test]
+    fn bounds_follow_std() {
+        let mut rng = rand::rngs::StdRng::seed_from_u64(7);
+        let mut values =
+            vec![f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1.0, -1.0, 1e-300, f64::MAX, f64::MIN_POSITIVE];
+        values.extend((0..200).map(|_| rng.random_range(-1e3..1e3)));
+        for &a in &values {
+            for &b in &values {
+                for (got, want) in [(larger(a, b), a.max(b)), (smaller(a, b), a.min(b))] {
+                    assert!(
+                        got.to_bits() == want.to_bits() || (got.is_nan() && want.is_nan()),
+                        "{a} {b}: {got} against {want}"
+                    );
+                }
+            }
+        }
+        assert_eq!(f64::NAN.at_least(2.0), 2.0);
+        assert_eq!(2f64.at_most(f64::NAN), 2.0);
     }
 
     #[test]

@@ -75,3 +75,33 @@ pub mod prelude {
         }
     }
 }
+
+#[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+mod turns;
+#[cfg(not(all(target_family = "wasm", target_os = "unknown")))]
+pub use turns::{Policy, Remaining, Turn, longest_first, longest_first_on, takes_over};
+
+/// A job's turn (no threads: every job runs alone, and [`Turn::tick`] never waits).
+#[cfg(all(target_family = "wasm", target_os = "unknown"))]
+#[derive(Debug, Default)]
+pub struct Turn<'a> {
+    _jobs: std::marker::PhantomData<&'a ()>,
+}
+
+#[cfg(all(target_family = "wasm", target_os = "unknown"))]
+impl Turn<'_> {
+    /// A turn that never waits.
+    pub fn alone() -> Turn<'static> {
+        Turn::default()
+    }
+
+    /// Does nothing: no other job waits for the core.
+    pub fn tick(&self, _done: f64) {}
+}
+
+/// `f` of every item, in order (no threads).
+#[cfg(all(target_family = "wasm", target_os = "unknown"))]
+pub fn longest_first<T, R>(items: &[T], f: impl Fn(&T, &Turn) -> R) -> Vec<R> {
+    let turn = Turn::alone();
+    items.iter().map(|x| f(x, &turn)).collect()
+}

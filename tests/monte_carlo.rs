@@ -390,6 +390,51 @@ fn the_erosion_balance_shared_among_processes_equals_the_undivided_one() {
     assert_eq!(bits(&shared), bits(&whole));
 }
 
+/// With two runs a threshold the erosion balance computes six runs, each a
+/// unit of its own (taking turns on the cores, or shared among processes):
+/// every threshold's lowest ζ is the mean over its own two runs, computed
+/// apart, to the bit, and shared among 4 processes the scene is the same.
+#[test]
+fn the_erosion_balance_gives_each_threshold_its_own_runs() {
+    use grainscope::scene::disk::common::DiskParams;
+    use grainscope::scene::monte_carlo::common::ColumnParams;
+    use grainscope::scene::monte_carlo::erosion_balance::Params;
+    use grainscope::scene::parts::in_turns;
+    use grainscope::scene::{Progress, SceneParams, compute};
+    // A dusty column at 0.5 AU grows fast: within a year the three
+    // thresholds' columns part (ζ near −0.3, 0.7 and 1).
+    let base = ColumnParams::default();
+    let run = ColumnParams {
+        disk: DiskParams { metallicity: 0.1, ..base.disk.clone() },
+        radius_au: 0.5,
+        groups_per_decade: 10.0,
+        stop_mass_g: 1e3,
+        runs: 2,
+        t_first_yr: 0.1,
+        t_end_yr: 1.0,
+        snapshots: 2,
+        ..base
+    };
+    let (v1, v2, v3) = (1.0, 3.0, 1e4);
+    let params = SceneParams::ErosionBalance(Params { run: run.clone(), v_eros_1: v1, v_eros_2: v2, v_eros_3: v3 });
+    let whole = compute(&params, &Progress::default()).expect("runs");
+    let mut lowest = Vec::new();
+    for (k, v) in [v1, v2, v3].into_iter().enumerate() {
+        let runs = ColumnParams { v_eros: v, ..run.clone() }.run(&Progress::default()).expect("runs");
+        assert_eq!(runs.len(), 2);
+        let zmin: Vec<f64> = runs.iter().map(|r| r.history.iter().map(|s| s.zeta).fold(1.0, f64::min)).collect();
+        let expected = zmin.iter().sum::<f64>() / 2.0;
+        let got = whole.scalars.iter().find(|s| s.key == format!("zeta_min_{}", k + 1)).expect("scalar").value;
+        assert_eq!(got.to_bits(), expected.to_bits(), "threshold {v} m/s: {got} against {expected}");
+        lowest.push(expected);
+    }
+    assert!(lowest[0] < lowest[1] && lowest[1] < lowest[2], "the thresholds' runs differ: {lowest:?}");
+    let (shared, _) = in_turns(4, |progress| compute(&params, progress)).expect("runs");
+    let bits =
+        |o: &grainscope::scene::SceneOutput| -> Vec<u64> { o.scalars.iter().map(|s| s.value.to_bits()).collect() };
+    assert_eq!(bits(&shared), bits(&whole));
+}
+
 #[test]
 fn a_row_of_pair_data_equals_its_pairs_one_at_a_time_to_the_bit() {
     use rand::{Rng, SeedableRng};

@@ -37,7 +37,7 @@ use super::constants::K_B;
 use super::disk::Local;
 use super::fdlibm;
 use super::monte_carlo::{Body, Collision, Effect, Engine, Family, Model, PairRow, PairRule, Settings};
-use crate::parallel::prelude::*;
+use crate::parallel::Turn;
 use std::f64::consts::PI;
 
 /// Compaction mechanisms (Sect. 4.4.1).
@@ -784,18 +784,22 @@ impl RunConfig {
         tick: &(dyn Fn(f64) -> bool + Sync),
         observe: &(dyn Fn(&Run) + Sync),
     ) -> Result<Vec<Run>, PhysicsError> {
-        self.run_seeds_mapped(runs, tick, observe, |ks, run| ks.par_iter().map(run).collect())
+        self.run_seeds_mapped(runs, tick, observe, |ks, run| {
+            crate::parallel::longest_first(ks, run).into_iter().collect()
+        })
     }
 
     /// As [`RunConfig::run_seeds_observed`], with the runs mapped over their
     /// numbers `0..runs` by `map` (which may share them among processes:
-    /// [`crate::scene::Progress::units`]).
+    /// [`crate::scene::Progress::units`], or let them take turns on the
+    /// cores: [`crate::parallel::longest_first`]; each run reports its fraction
+    /// done to its [`Turn`]).
     pub fn run_seeds_mapped<E>(
         &self,
         runs: usize,
         tick: &(dyn Fn(f64) -> bool + Sync),
         observe: &(dyn Fn(&Run) + Sync),
-        map: impl FnOnce(&[usize], &(dyn Fn(&usize) -> Result<Run, PhysicsError> + Sync)) -> Result<Vec<Run>, E>,
+        map: impl FnOnce(&[usize], &(dyn Fn(&usize, &Turn) -> Result<Run, PhysicsError> + Sync)) -> Result<Vec<Run>, E>,
     ) -> Result<Vec<Run>, E> {
         let progress: Vec<std::sync::atomic::AtomicU32> =
             (0..runs).map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
@@ -805,14 +809,23 @@ impl RunConfig {
                 progress.iter().map(|p| p.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum::<f64>();
             tick(total / runs as f64)
         };
-        map(&(0..runs).collect::<Vec<_>>(), &|&k: &usize| self.run_number(k, &report, observe))
+        map(&(0..runs).collect::<Vec<_>>(), &|&k: &usize, turn: &Turn| {
+            self.run_number(
+                k,
+                &|k, f| {
+                    turn.tick(f);
+                    report(k, f)
+                },
+                observe,
+            )
+        })
     }
 
     /// Run `k` (seed `seed + k`; the first one observed), reporting its
     /// fraction done as `report(k, f)`. Not inlined: every mapping of
     /// [`RunConfig::run_seeds_mapped`] calls this one copy of the engine.
     #[inline(never)]
-    fn run_number(
+    pub fn run_number(
         &self,
         k: usize,
         report: &(dyn Fn(usize, f64) -> bool + Sync),

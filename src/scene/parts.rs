@@ -12,6 +12,7 @@
 //! share it.
 
 use super::core::{Progress, SceneError};
+use crate::parallel::Turn;
 use crate::parallel::prelude::*;
 use serde::Serialize;
 use serde::de::DeserializeOwned;
@@ -110,8 +111,36 @@ impl Progress {
         R: Send + Serialize + DeserializeOwned,
         F: Fn(&T) -> Result<R, SceneError> + Sync + Send,
     {
+        self.units_mapped(items, &|x, _| f(x), |xs, g| xs.par_iter().map(|x| g(x, &Turn::alone())).collect())
+    }
+
+    /// As [`Progress::units`], for long sequential units (Monte Carlo runs):
+    /// without [`Parts`], each on a thread of its own, taking turns on this
+    /// process's cores ([`crate::parallel::longest_first`]: each unit reports its
+    /// fraction done to its [`Turn`]).
+    pub fn units_longest_first<T, R, F>(&self, items: &[T], f: F) -> Result<Vec<R>, SceneError>
+    where
+        T: Sync,
+        R: Send + Serialize + DeserializeOwned,
+        F: Fn(&T, &Turn) -> Result<R, SceneError> + Sync + Send,
+    {
+        self.units_mapped(items, &f, |xs, g| crate::parallel::longest_first(xs, g).into_iter().collect())
+    }
+
+    /// The units of `items` through `f`: where no process shares them, all
+    /// of them through `plain`.
+    fn units_mapped<T, R>(
+        &self,
+        items: &[T],
+        f: &(dyn Fn(&T, &Turn) -> Result<R, SceneError> + Sync),
+        plain: impl FnOnce(&[T], &(dyn Fn(&T, &Turn) -> Result<R, SceneError> + Sync)) -> Result<Vec<R>, SceneError>,
+    ) -> Result<Vec<R>, SceneError>
+    where
+        T: Sync,
+        R: Send + Serialize + DeserializeOwned,
+    {
         let Some(ledger) = self.parts.as_ref().filter(|l| !l.inside.load(Ordering::Relaxed)) else {
-            return items.par_iter().map(f).collect();
+            return plain(items, f);
         };
         let first = ledger.next.fetch_add(items.len(), Ordering::Relaxed);
         let mut values: Vec<Option<R>> = (0..items.len()).map(|i| ledger.known(first + i)).collect();
@@ -126,7 +155,7 @@ impl Progress {
         }
         for (_, &i) in unknown.iter().enumerate().filter(|(j, _)| j % of == part) {
             ledger.inside.store(true, Ordering::Relaxed);
-            let value = f(&items[i]);
+            let value = f(&items[i], &Turn::alone());
             ledger.inside.store(false, Ordering::Relaxed);
             let value = value?;
             let text = ron::to_string(&value).map_err(|e| {

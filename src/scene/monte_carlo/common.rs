@@ -179,7 +179,8 @@ impl ColumnParams {
     /// As [`ColumnParams::run`], handing the first run so far to `observe`.
     pub fn run_observed(&self, progress: &Progress, observe: &(dyn Fn(&Run) + Sync)) -> Result<Vec<Run>, SceneError> {
         let cfg = self.config()?;
-        // Each run is a unit of its own: a browser shares them among its workers.
+        // Each run is a unit of its own: a browser shares them among its
+        // workers; natively they take turns on the cores.
         let runs = cfg.run_seeds_mapped(
             self.runs.max(1),
             &|f| {
@@ -188,7 +189,7 @@ impl ColumnParams {
                 !progress.cancelled()
             },
             observe,
-            |seeds, run| progress.units(seeds, |k| run(k).map_err(SceneError::from)),
+            |seeds, run| progress.units_longest_first(seeds, |k, turn| run(k, turn).map_err(SceneError::from)),
         )?;
         progress.check()?;
         Ok(runs)

@@ -102,8 +102,12 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         let params: Vec<ColumnParams> =
             p.thresholds().iter().map(|&v| ColumnParams { v_eros: v, ..p.run.clone() }).collect();
         let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
+        // Every run of every threshold is a unit of its own: a browser shares
+        // them among its workers, and natively they take turns on the cores.
+        let numbered: Vec<(usize, &ColumnParams, usize)> =
+            missing.iter().enumerate().flat_map(|(k, q)| (0..q.runs.max(1)).map(move |s| (k, *q, s))).collect();
         let fractions: Vec<std::sync::atomic::AtomicU32> =
-            missing.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
+            numbered.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
         // Live view: every threshold's first run so far (cached ones complete).
         let so_far: std::sync::Mutex<Vec<(f64, Arc<Vec<Run>>)>> = std::sync::Mutex::new(
             p.thresholds()
@@ -115,15 +119,15 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                 })
                 .collect(),
         );
-        // Each threshold is a unit of its own: a browser shares them among its workers.
-        let numbered: Vec<(usize, &ColumnParams)> = missing.iter().copied().enumerate().collect();
-        let fresh: Vec<Vec<Run>> = progress.units(&numbered, |&(k, q)| {
+        let units: Vec<(usize, usize)> = (0..numbered.len()).map(|u| (u, numbered[u].2)).collect();
+        let fresh: Vec<Run> = progress.units_longest_first(&units, |&(u, s), turn| {
+            let q = numbered[u].1;
             let cfg = q.config()?;
             let slot = params.iter().position(|x| x == q).unwrap_or(0);
             let observe = |run: &Run| {
                 if let Ok(mut sets) = so_far.lock() {
-                    if let Some(s) = sets.get_mut(slot) {
-                        s.1 = Arc::new(vec![run.clone()]);
+                    if let Some(set) = sets.get_mut(slot) {
+                        set.1 = Arc::new(vec![run.clone()]);
                     }
                     let mut out = output(p, &sets);
                     let t = run.history.last().map_or(0.0, |s| s.t) / YEAR;
@@ -138,10 +142,11 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                     progress.publish(out);
                 }
             };
-            let runs = cfg.run_seeds_observed(
-                q.runs.max(1),
-                &|f| {
-                    fractions[k].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
+            let run = cfg.run_number(
+                s,
+                &|_, f| {
+                    turn.tick(f);
+                    fractions[u].store((f * 1e6) as u32, std::sync::atomic::Ordering::Relaxed);
                     let sum: f64 =
                         fractions.iter().map(|a| a.load(std::sync::atomic::Ordering::Relaxed) as f64 / 1e6).sum();
                     progress.set(sum / fractions.len() as f64);
@@ -151,9 +156,11 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                 &observe,
             )?;
             progress.check()?;
-            Ok(runs)
+            Ok(run)
         })?;
-        for (q, runs) in missing.into_iter().zip(fresh) {
+        let mut fresh = fresh.into_iter();
+        for (k, q) in missing.into_iter().enumerate() {
+            let runs: Vec<Run> = numbered.iter().filter(|n| n.0 == k).filter_map(|_| fresh.next()).collect();
             cache.insert(q.clone(), runs);
         }
         let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();

@@ -104,8 +104,8 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
         let missing: Vec<&ColumnParams> = params.iter().filter(|q| !cache.contains(q)).collect();
         // Every run of every threshold is a unit of its own: a browser shares
         // them among its workers, and natively they take turns on the cores.
-        let numbered: Vec<(usize, &ColumnParams, usize)> =
-            missing.iter().enumerate().flat_map(|(k, q)| (0..q.runs.max(1)).map(move |s| (k, *q, s))).collect();
+        let numbered: Vec<(&ColumnParams, usize)> =
+            missing.iter().flat_map(|q| (0..q.runs.max(1)).map(move |s| (*q, s))).collect();
         let fractions: Vec<std::sync::atomic::AtomicU32> =
             numbered.iter().map(|_| std::sync::atomic::AtomicU32::new(0)).collect();
         // Live view: every threshold's first run so far (cached ones complete).
@@ -119,9 +119,9 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
                 })
                 .collect(),
         );
-        let units: Vec<(usize, usize)> = (0..numbered.len()).map(|u| (u, numbered[u].2)).collect();
-        let fresh: Vec<Run> = progress.units_longest_first(&units, |&(u, s), turn| {
-            let q = numbered[u].1;
+        let units: Vec<usize> = (0..numbered.len()).collect();
+        let fresh: Vec<Run> = progress.units_longest_first(&units, |&u, turn| {
+            let (q, s) = numbered[u];
             let cfg = q.config()?;
             let slot = params.iter().position(|x| x == q).unwrap_or(0);
             let observe = |run: &Run| {
@@ -159,8 +159,8 @@ masses first; at 60 m/s erosion is never strong enough to stop growth.",
             Ok(run)
         })?;
         let mut fresh = fresh.into_iter();
-        for (k, q) in missing.into_iter().enumerate() {
-            let runs: Vec<Run> = numbered.iter().filter(|n| n.0 == k).filter_map(|_| fresh.next()).collect();
+        for q in missing {
+            let runs: Vec<Run> = fresh.by_ref().take(q.runs.max(1)).collect();
             cache.insert(q.clone(), runs);
         }
         let mut sets: Vec<(f64, Arc<Vec<Run>>)> = Vec::new();
